@@ -1,0 +1,99 @@
+// Plain scene data: what the renderer draws, with no GL in sight.
+// Everything here is a value type; animation is a pure function of time (see course_scene.h),
+// so any frame can be rebuilt exactly from its t.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace penumbra::scene {
+
+// Indexed triangle mesh. normals has one entry per position; uvs is empty or one per position.
+struct Mesh {
+    std::string name;
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> uvs;
+    std::vector<std::uint32_t> indices;  // three per triangle
+};
+
+// 8-bit RGBA image, rows stored top row first.
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;
+};
+
+struct Material {
+    std::string name;
+    glm::vec4 base_color{1.0f};
+    int base_color_texture = -1;  // index into Scene::images, -1 when none
+    float specular = 0.25f;       // Phong specular strength
+    float shininess = 32.0f;
+};
+
+// One drawable instance: a mesh with a material placed in the world.
+struct Object {
+    std::string name;
+    int mesh = -1;
+    int material = -1;
+    glm::mat4 world{1.0f};
+    bool casts_shadow = true;
+    bool receives_shadow = true;
+};
+
+enum class LightType { Directional, Point, Spot };
+
+struct Light {
+    LightType type = LightType::Point;
+    glm::vec3 position{0.0f, 5.0f, 0.0f};    // point and spot
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};  // directional and spot: where the light travels (unit)
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+    float spot_inner_cone = 0.0f;             // radians
+    float spot_outer_cone = 0.7853982f;       // radians
+};
+
+struct Camera {
+    glm::mat4 view{1.0f};    // world -> eye
+    float yfov = 0.7853982f; // radians
+    float znear = 0.1f;
+    float zfar = 100.0f;
+    float aspect = 0.0f;     // 0: take the viewport's
+};
+
+struct Bounds {
+    glm::vec3 min{1e30f};
+    glm::vec3 max{-1e30f};
+    bool empty() const { return min.x > max.x; }
+    void add(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
+    void add(const Bounds& b) { if (!b.empty()) { add(b.min); add(b.max); } }
+    glm::vec3 center() const { return 0.5f * (min + max); }
+};
+
+struct Scene {
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<Image> images;
+    std::vector<Object> objects;
+    Light light;
+    Camera camera;
+    // The plane that planar projected shadows fall on (n.x, n.y, n.z, d with n.p + d = 0),
+    // and the object that lies in it; absent when the scene has no such ground.
+    std::optional<glm::vec4> ground_plane;
+    int ground_object = -1;
+};
+
+// Local-space bounds of a mesh, and world-space bounds of an object (its mesh's corners transformed).
+Bounds mesh_bounds(const Mesh& mesh);
+Bounds object_bounds(const Scene& scene, const Object& object);
+// World-space bounds of every object (casters_only: only those that cast shadows).
+Bounds scene_bounds(const Scene& scene, bool casters_only = false);
+// The eight corners of a box.
+std::vector<glm::vec3> corners(const Bounds& b);
+
+}  // namespace penumbra::scene
