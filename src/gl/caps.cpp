@@ -1,0 +1,82 @@
+#include "gl/caps.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "gl/check.h"
+#include "gl/gl_headers.h"
+
+namespace penumbra::gl {
+
+namespace {
+
+std::string get_string(GLenum name) {
+    const GLubyte* s = glGetString(name);
+    return s ? reinterpret_cast<const char*>(s) : "";
+}
+
+int get_int(GLenum name) {
+    GLint v = 0;
+    glGetIntegerv(name, &v);
+    return v;
+}
+
+PrecisionFormat precision(GLenum shader, GLenum type) {
+    GLint range[2] = {0, 0};
+    GLint bits = 0;
+    glGetShaderPrecisionFormat(shader, type, range, &bits);
+    return {range[0], range[1], bits};
+}
+
+}  // namespace
+
+Caps probe_caps() {
+    Caps c;
+    c.vendor = get_string(GL_VENDOR);
+    c.renderer = get_string(GL_RENDERER);
+    c.version = get_string(GL_VERSION);
+    c.glsl_version = get_string(GL_SHADING_LANGUAGE_VERSION);
+    std::istringstream ext(get_string(GL_EXTENSIONS));
+    for (std::string e; ext >> e;) c.extensions.insert(e);
+
+    c.depth_texture = c.has("GL_OES_depth_texture") || c.has("GL_WEBGL_depth_texture") ||
+                      c.has("WEBGL_depth_texture");
+    c.packed_depth_stencil = c.has("GL_OES_packed_depth_stencil");
+    c.depth24 = c.has("GL_OES_depth24");
+    c.element_index_uint = c.has("GL_OES_element_index_uint") || c.has("OES_element_index_uint");
+
+    c.max_texture_size = get_int(GL_MAX_TEXTURE_SIZE);
+    c.max_renderbuffer_size = get_int(GL_MAX_RENDERBUFFER_SIZE);
+    GLint dims[2] = {0, 0};
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, dims);
+    c.max_viewport_width = dims[0];
+    c.max_viewport_height = dims[1];
+
+    c.vertex_highp_float = precision(GL_VERTEX_SHADER, GL_HIGH_FLOAT);
+    c.fragment_highp_float = precision(GL_FRAGMENT_SHADER, GL_HIGH_FLOAT);
+    c.fragment_mediump_float = precision(GL_FRAGMENT_SHADER, GL_MEDIUM_FLOAT);
+    c.fragment_lowp_float = precision(GL_FRAGMENT_SHADER, GL_LOW_FLOAT);
+    c.fragment_highp = c.fragment_highp_float.precision > 0;
+    check_errors("probe_caps", __FILE__, __LINE__);
+    return c;
+}
+
+int Caps::max_target_size() const {
+    return std::min({max_texture_size, max_renderbuffer_size, max_viewport_width, max_viewport_height});
+}
+
+std::string Caps::summary() const {
+    std::ostringstream s;
+    s << "GL: " << version << " (" << renderer << ", " << vendor << ")\n"
+      << "GLSL: " << glsl_version << "\n"
+      << "max texture " << max_texture_size << ", renderbuffer " << max_renderbuffer_size << ", viewport "
+      << max_viewport_width << "x" << max_viewport_height << "\n"
+      << "fragment float precision bits: highp " << fragment_highp_float.precision << ", mediump "
+      << fragment_mediump_float.precision << ", lowp " << fragment_lowp_float.precision << "\n"
+      << "depth texture " << (depth_texture ? "yes" : "no") << ", packed depth-stencil "
+      << (packed_depth_stencil ? "yes" : "no") << ", depth24 " << (depth24 ? "yes" : "no")
+      << ", uint indices " << (element_index_uint ? "yes" : "no");
+    return s.str();
+}
+
+}  // namespace penumbra::gl

@@ -1,0 +1,89 @@
+// Pipeline state, draw calls and readback over the current context. A pass is data: the render
+// layer describes the state it wants (PipelineState) and the Device applies only what changed,
+// so GL state is never set twice in a row and no layer above this one calls gl* itself.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/objects.h"
+
+namespace penumbra::gl {
+
+enum class Compare { Never, Less, LEqual, Equal, GEqual, Greater, NotEqual, Always };
+enum class StencilOp { Keep, Zero, Replace, Incr, Decr };
+enum class Cull { None, Back, Front };
+
+struct StencilState {
+    bool enabled = false;
+    Compare func = Compare::Always;
+    int ref = 0;
+    std::uint32_t read_mask = 0xFF;
+    std::uint32_t write_mask = 0xFF;
+    StencilOp fail = StencilOp::Keep, depth_fail = StencilOp::Keep, pass = StencilOp::Keep;
+    bool operator==(const StencilState& o) const;
+};
+
+struct PipelineState {
+    bool depth_test = true;
+    Compare depth_func = Compare::Less;
+    bool depth_write = true;
+    bool color_write = true;
+    Cull cull = Cull::Back;
+    StencilState stencil;
+    bool operator==(const PipelineState& o) const;
+};
+
+// GPU copy of a scene mesh: interleaved position/normal/uv and 16- or 32-bit indices.
+struct MeshBuffers {
+    Buffer vertices;
+    Buffer indices;
+    std::int32_t index_count = 0;
+    bool index_u32 = false;
+    bool has_uv = false;
+};
+
+// Where a pass draws: an FBO, or the context's default framebuffer when fb is null.
+struct Target {
+    const Framebuffer* fb = nullptr;
+    int width = 0;
+    int height = 0;
+};
+
+class Device {
+public:
+    Device();  // assumes a fresh context: the GL defaults are what it tracks
+
+    // Mesh upload: positions and normals are required, uvs optional (empty), indices 3 per
+    // triangle. Needs OES_element_index_uint when there are more than 65536 vertices.
+    MeshBuffers upload_mesh(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
+                            const std::vector<glm::vec2>& uvs, const std::vector<std::uint32_t>& indices,
+                            bool allow_u32, const char* label);
+
+    void bind_target(const Target& target);
+    void clear(const glm::vec4* color, bool depth, bool stencil);
+    void apply(const PipelineState& state);
+    void use(const Program& program);
+    void bind_texture(int unit, const Texture& texture);
+    // Draws all triangles; the vertex shader reads a_position, a_normal and (when the mesh has
+    // them) a_uv. uv is set to 0 for meshes without uvs.
+    void draw(const MeshBuffers& mesh);
+    // A single triangle that covers the viewport (positions in clip space in a_position.xy).
+    void draw_fullscreen();
+
+    // Reads the bound target's pixels, RGBA8, rows bottom first (GL order).
+    std::vector<std::uint8_t> read_rgba(int width, int height);
+    void finish();
+    // Forget every cached state (after something outside the Device touched GL, e.g. a context restore).
+    void invalidate();
+
+private:
+    PipelineState state_;
+    std::uint32_t program_ = 0;
+    Buffer fullscreen_;
+};
+
+}  // namespace penumbra::gl

@@ -1,0 +1,214 @@
+#include "gl/objects.h"
+
+#include <vector>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gl/check.h"
+#include "gl/gl_headers.h"
+
+namespace penumbra::gl {
+
+void BufferDeleter::operator()(std::uint32_t id) const { glDeleteBuffers(1, &id); }
+void TextureDeleter::operator()(std::uint32_t id) const { glDeleteTextures(1, &id); }
+void RenderbufferDeleter::operator()(std::uint32_t id) const { glDeleteRenderbuffers(1, &id); }
+void FramebufferDeleter::operator()(std::uint32_t id) const { glDeleteFramebuffers(1, &id); }
+void ProgramDeleter::operator()(std::uint32_t id) const { glDeleteProgram(id); }
+
+namespace {
+template <typename T>
+GLsizei isize(T v) { return static_cast<GLsizei>(v); }
+}  // namespace
+
+// ---- Buffer ---------------------------------------------------------------------------------
+
+Buffer::Buffer(BufferKind kind, const void* data, std::size_t bytes, const char* label) : kind_(kind), bytes_(bytes) {
+    GLuint id = 0;
+    glGenBuffers(1, &id);
+    h_ = Handle<BufferDeleter>(id);
+    const GLenum target = kind == BufferKind::Vertex ? GL_ARRAY_BUFFER : GL_ELEMENT_ARRAY_BUFFER;
+    PENUMBRA_GL(glBindBuffer(target, id));
+    PENUMBRA_GL(glBufferData(target, static_cast<GLsizeiptr>(bytes), data, GL_STATIC_DRAW));
+    check_errors(label, __FILE__, __LINE__);
+}
+
+// ---- Texture --------------------------------------------------------------------------------
+
+Texture::Texture(const TextureDesc& d) : width_(d.width), height_(d.height), format_(d.format) {
+    if (d.width <= 0 || d.height <= 0) throw Error(std::string(d.label) + ": texture size must be positive");
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    h_ = Handle<TextureDeleter>(id);
+    PENUMBRA_GL(glBindTexture(GL_TEXTURE_2D, id));
+    if (d.format == TextureFormat::Depth) {
+        PENUMBRA_GL(glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, d.width, d.height, 0, GL_DEPTH_COMPONENT,
+                                 GL_UNSIGNED_INT, nullptr));
+    } else {
+        // Rows of 4 bytes are always aligned; the default unpack alignment of 4 is right.
+        PENUMBRA_GL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, d.width, d.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, d.rgba));
+    }
+    const GLint wrap = d.wrap == Wrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+    GLint min_filter = GL_NEAREST, mag_filter = GL_NEAREST;
+    if (d.sampling == Sampling::Linear) min_filter = mag_filter = GL_LINEAR;
+    if (d.sampling == Sampling::LinearMipmap) {
+        min_filter = GL_LINEAR_MIPMAP_LINEAR;
+        mag_filter = GL_LINEAR;
+        PENUMBRA_GL(glGenerateMipmap(GL_TEXTURE_2D));
+    }
+    PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min_filter));
+    PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, mag_filter));
+    PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap));
+    PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap));
+    check_errors(d.label, __FILE__, __LINE__);
+}
+
+std::size_t Texture::bytes() const { return static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * 4u; }
+
+// ---- Renderbuffer ---------------------------------------------------------------------------
+
+Renderbuffer::Renderbuffer(RenderbufferFormat format, int width, int height, const char* label)
+    : format_(format), width_(width), height_(height) {
+    GLenum internal = GL_DEPTH_COMPONENT16;
+    switch (format) {
+        case RenderbufferFormat::Depth16: internal = GL_DEPTH_COMPONENT16; break;
+        case RenderbufferFormat::Depth24: internal = GL_DEPTH_COMPONENT24_OES; break;
+        case RenderbufferFormat::Depth24Stencil8: internal = GL_DEPTH24_STENCIL8_OES; break;
+        case RenderbufferFormat::Stencil8: internal = GL_STENCIL_INDEX8; break;
+    }
+    GLuint id = 0;
+    glGenRenderbuffers(1, &id);
+    h_ = Handle<RenderbufferDeleter>(id);
+    PENUMBRA_GL(glBindRenderbuffer(GL_RENDERBUFFER, id));
+    PENUMBRA_GL(glRenderbufferStorage(GL_RENDERBUFFER, internal, width, height));
+    check_errors(label, __FILE__, __LINE__);
+}
+
+std::size_t Renderbuffer::bytes() const {
+    const std::size_t px = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+    switch (format_) {
+        case RenderbufferFormat::Depth16: return px * 2u;
+        case RenderbufferFormat::Stencil8: return px;
+        default: return px * 4u;
+    }
+}
+
+// ---- Framebuffer ----------------------------------------------------------------------------
+
+Framebuffer::Framebuffer(const FramebufferDesc& d) {
+    GLuint id = 0;
+    glGenFramebuffers(1, &id);
+    h_ = Handle<FramebufferDeleter>(id);
+    PENUMBRA_GL(glBindFramebuffer(GL_FRAMEBUFFER, id));
+    if (d.color)
+        PENUMBRA_GL(glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, d.color->id(), 0));
+    if (d.depth_texture)
+        PENUMBRA_GL(
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, d.depth_texture->id(), 0));
+    if (d.depth) {
+        PENUMBRA_GL(glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, d.depth->id()));
+        if (d.depth->format() == RenderbufferFormat::Depth24Stencil8)
+            PENUMBRA_GL(
+                glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, d.depth->id()));
+    }
+    if (d.stencil)
+        PENUMBRA_GL(glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, d.stencil->id()));
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    PENUMBRA_GL(glBindFramebuffer(GL_FRAMEBUFFER, 0));
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw Error(std::string(d.label) + ": framebuffer incomplete: " + enum_name(status));
+    check_errors(d.label, __FILE__, __LINE__);
+}
+
+// ---- Program --------------------------------------------------------------------------------
+
+namespace {
+
+std::string shader_log(GLuint shader) {
+    GLint len = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &len);
+    std::vector<char> log(static_cast<size_t>(len > 1 ? len : 1), '\0');
+    glGetShaderInfoLog(shader, isize(log.size()), nullptr, log.data());
+    return log.data();
+}
+
+GLuint compile(GLenum stage, const std::string& source, const std::string& label) {
+    const GLuint s = glCreateShader(stage);
+    const char* text = source.c_str();
+    glShaderSource(s, 1, &text, nullptr);
+    glCompileShader(s);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        const std::string log = shader_log(s);
+        glDeleteShader(s);
+        throw Error(label + (stage == GL_VERTEX_SHADER ? ": vertex" : ": fragment") +
+                    " shader failed to compile: " + log);
+    }
+    return s;
+}
+
+}  // namespace
+
+Program::Program(const std::string& vs, const std::string& fs, const std::string& label) : label_(label) {
+    const GLuint v = compile(GL_VERTEX_SHADER, vs, label);
+    GLuint f = 0;
+    try {
+        f = compile(GL_FRAGMENT_SHADER, fs, label);
+    } catch (...) {
+        glDeleteShader(v);
+        throw;
+    }
+    const GLuint p = glCreateProgram();
+    h_ = Handle<ProgramDeleter>(p);
+    glAttachShader(p, v);
+    glAttachShader(p, f);
+    glBindAttribLocation(p, kPosition, "a_position");
+    glBindAttribLocation(p, kNormal, "a_normal");
+    glBindAttribLocation(p, kUV, "a_uv");
+    glLinkProgram(p);
+    // The program keeps its compiled code; the shader objects can go now.
+    glDeleteShader(v);
+    glDeleteShader(f);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        GLint len = 0;
+        glGetProgramiv(p, GL_INFO_LOG_LENGTH, &len);
+        std::vector<char> log(static_cast<size_t>(len > 1 ? len : 1), '\0');
+        glGetProgramInfoLog(p, isize(log.size()), nullptr, log.data());
+        throw Error(label + ": program failed to link: " + log.data());
+    }
+    check_errors(label.c_str(), __FILE__, __LINE__);
+}
+
+int Program::location(const char* name) const {
+    auto it = locations_.find(name);
+    if (it != locations_.end()) return it->second;
+    const int loc = glGetUniformLocation(h_.id(), name);
+    locations_.emplace(name, loc);
+    return loc;
+}
+
+void Program::set(const char* name, int v) const {
+    if (const int l = location(name); l >= 0) glUniform1i(l, v);
+}
+void Program::set(const char* name, float v) const {
+    if (const int l = location(name); l >= 0) glUniform1f(l, v);
+}
+void Program::set(const char* name, const glm::vec2& v) const {
+    if (const int l = location(name); l >= 0) glUniform2fv(l, 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::vec3& v) const {
+    if (const int l = location(name); l >= 0) glUniform3fv(l, 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::vec4& v) const {
+    if (const int l = location(name); l >= 0) glUniform4fv(l, 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::mat3& v) const {
+    if (const int l = location(name); l >= 0) glUniformMatrix3fv(l, 1, GL_FALSE, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::mat4& v) const {
+    if (const int l = location(name); l >= 0) glUniformMatrix4fv(l, 1, GL_FALSE, glm::value_ptr(v));
+}
+
+}  // namespace penumbra::gl

@@ -1,0 +1,169 @@
+// Move-only owners of GL objects. Each is made from a small descriptor, deletes its object when it
+// goes out of scope, and never copies. Creation failures throw gl::Error naming what failed.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <utility>
+
+#include <glm/glm.hpp>
+
+namespace penumbra::gl {
+
+// Shared move-only handle logic: `id` is 0 when empty; Deleter frees a non-zero id.
+template <typename Deleter>
+class Handle {
+public:
+    Handle() = default;
+    explicit Handle(std::uint32_t id) : id_(id) {}
+    ~Handle() { reset(); }
+    Handle(const Handle&) = delete;
+    Handle& operator=(const Handle&) = delete;
+    Handle(Handle&& other) noexcept : id_(std::exchange(other.id_, 0u)) {}
+    Handle& operator=(Handle&& other) noexcept {
+        if (this != &other) {
+            reset();
+            id_ = std::exchange(other.id_, 0u);
+        }
+        return *this;
+    }
+    std::uint32_t id() const { return id_; }
+    explicit operator bool() const { return id_ != 0; }
+    std::uint32_t release() { return std::exchange(id_, 0u); }
+    void reset() {
+        if (id_) Deleter{}(id_);
+        id_ = 0;
+    }
+
+private:
+    std::uint32_t id_ = 0;
+};
+
+struct BufferDeleter { void operator()(std::uint32_t id) const; };
+struct TextureDeleter { void operator()(std::uint32_t id) const; };
+struct RenderbufferDeleter { void operator()(std::uint32_t id) const; };
+struct FramebufferDeleter { void operator()(std::uint32_t id) const; };
+struct ProgramDeleter { void operator()(std::uint32_t id) const; };
+
+enum class BufferKind { Vertex, Index };
+
+class Buffer {
+public:
+    Buffer() = default;
+    Buffer(BufferKind kind, const void* data, std::size_t bytes, const char* label);
+    std::uint32_t id() const { return h_.id(); }
+    BufferKind kind() const { return kind_; }
+    std::size_t bytes() const { return bytes_; }
+
+private:
+    Handle<BufferDeleter> h_;
+    BufferKind kind_ = BufferKind::Vertex;
+    std::size_t bytes_ = 0;
+};
+
+enum class TextureFormat {
+    RGBA8,  // GL_RGBA / GL_UNSIGNED_BYTE
+    Depth   // GL_DEPTH_COMPONENT / GL_UNSIGNED_INT (OES_depth_texture)
+};
+enum class Sampling { Nearest, Linear, LinearMipmap };
+enum class Wrap { Clamp, Repeat };
+
+struct TextureDesc {
+    int width = 0;
+    int height = 0;
+    TextureFormat format = TextureFormat::RGBA8;
+    Sampling sampling = Sampling::Nearest;
+    Wrap wrap = Wrap::Clamp;
+    const std::uint8_t* rgba = nullptr;  // initial RGBA8 pixels (rows bottom first), or none
+    const char* label = "texture";
+};
+
+class Texture {
+public:
+    Texture() = default;
+    explicit Texture(const TextureDesc& desc);
+    std::uint32_t id() const { return h_.id(); }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    TextureFormat format() const { return format_; }
+    std::size_t bytes() const;  // estimated GPU memory of level 0
+
+private:
+    Handle<TextureDeleter> h_;
+    int width_ = 0, height_ = 0;
+    TextureFormat format_ = TextureFormat::RGBA8;
+};
+
+enum class RenderbufferFormat {
+    Depth16,
+    Depth24,          // OES_depth24
+    Depth24Stencil8,  // OES_packed_depth_stencil
+    Stencil8
+};
+
+class Renderbuffer {
+public:
+    Renderbuffer() = default;
+    Renderbuffer(RenderbufferFormat format, int width, int height, const char* label);
+    std::uint32_t id() const { return h_.id(); }
+    RenderbufferFormat format() const { return format_; }
+    std::size_t bytes() const;
+
+private:
+    Handle<RenderbufferDeleter> h_;
+    RenderbufferFormat format_ = RenderbufferFormat::Depth16;
+    int width_ = 0, height_ = 0;
+};
+
+// A framebuffer object with its attachments; completeness is checked where it is made and a
+// failure names the status (GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT, ...).
+struct FramebufferDesc {
+    const Texture* color = nullptr;
+    const Texture* depth_texture = nullptr;
+    const Renderbuffer* depth = nullptr;  // depth or packed depth-stencil
+    const Renderbuffer* stencil = nullptr;
+    const char* label = "framebuffer";
+};
+
+class Framebuffer {
+public:
+    Framebuffer() = default;
+    explicit Framebuffer(const FramebufferDesc& desc);
+    std::uint32_t id() const { return h_.id(); }
+
+private:
+    Handle<FramebufferDeleter> h_;
+};
+
+// Fixed attribute locations, bound before linking, shared by every program and mesh layout.
+enum Attribute : std::uint32_t { kPosition = 0, kNormal = 1, kUV = 2 };
+
+// A linked program. Compile and link logs go into the thrown error with the label.
+class Program {
+public:
+    Program() = default;
+    Program(const std::string& vertex_source, const std::string& fragment_source, const std::string& label);
+    std::uint32_t id() const { return h_.id(); }
+    const std::string& label() const { return label_; }
+
+    // Uniform setters for the bound program; unknown names (optimised out, or absent from this
+    // variant) are ignored.
+    void set(const char* name, int v) const;
+    void set(const char* name, float v) const;
+    void set(const char* name, const glm::vec2& v) const;
+    void set(const char* name, const glm::vec3& v) const;
+    void set(const char* name, const glm::vec4& v) const;
+    void set(const char* name, const glm::mat3& v) const;
+    void set(const char* name, const glm::mat4& v) const;
+    bool has_uniform(const char* name) const { return location(name) >= 0; }
+
+private:
+    int location(const char* name) const;
+    Handle<ProgramDeleter> h_;
+    std::string label_;
+    mutable std::unordered_map<std::string, int> locations_;
+};
+
+}  // namespace penumbra::gl
