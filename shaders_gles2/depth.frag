@@ -1,0 +1,17 @@
+#version 100
+// The light's view: the depth of the nearest surface, written the way the encoding stores it.
+#include "precision.glsl"
+#include "pack.glsl"
+
+void main() {
+#if defined(ENC_R8)
+    // 8 bits in red: the sheet's first shadow map.
+    gl_FragColor = vec4(gl_FragCoord.z, 0.0, 0.0, 1.0);
+#elif defined(ENC_RGBA)
+    gl_FragColor = packDepth(gl_FragCoord.z);
+#else
+    // Depth texture (or a stencil-only pass): the depth attachment keeps gl_FragCoord.z and the
+    // colour written here goes nowhere.
+    gl_FragColor = vec4(1.0);
+#endif
+}

@@ -1,0 +1,61 @@
+#version 100
+// Camera pass: Phong lighting from one light, scaled by the light's visibility. Variants:
+// SHADOW_MAP (with ENC_* and FILTER_*), IN_SHADOW (planar shadow region: visibility 0),
+// TEXTURED (base colour texture), LIGHT_SPOT (cone falloff), AOV_VISIBILITY (write visibility
+// as grey instead of colour).
+#include "precision.glsl"
+
+uniform vec4 u_base_color;
+uniform vec4 u_light;  // xyz = position when w = 1; direction towards the light when w = 0
+uniform vec3 u_light_color;
+uniform vec3 u_camera_pos;
+uniform float u_ambient;
+uniform float u_specular;
+uniform float u_shininess;
+
+#ifdef TEXTURED
+uniform sampler2D u_base_texture;
+#endif
+#ifdef LIGHT_SPOT
+uniform vec3 u_spot_direction;  // where the light travels
+uniform vec2 u_spot_cos;        // cos(outer cone), cos(inner cone)
+#endif
+
+varying vec3 v_world;
+varying vec3 v_normal;
+varying vec2 v_uv;
+
+#ifdef SHADOW_MAP
+#include "shadow.glsl"
+varying vec4 v_shadow_coord;
+#endif
+
+void main() {
+    float visibility = 1.0;
+#if defined(SHADOW_MAP)
+    visibility = shadowVisibility(v_shadow_coord);
+#elif defined(IN_SHADOW)
+    visibility = 0.0;
+#endif
+
+#ifdef AOV_VISIBILITY
+    gl_FragColor = vec4(vec3(visibility), 1.0);
+#else
+    vec4 base = u_base_color;
+#ifdef TEXTURED
+    base *= texture2D(u_base_texture, v_uv);
+#endif
+    vec3 n = normalize(v_normal);
+    vec3 l = normalize(u_light.xyz - v_world * u_light.w);
+    vec3 v = normalize(u_camera_pos - v_world);
+    float diffuse = max(dot(n, l), 0.0);
+    float specular = 0.0;
+    if (diffuse > 0.0) specular = u_specular * pow(max(dot(reflect(-l, n), v), 0.0), u_shininess);
+    float cone = 1.0;
+#ifdef LIGHT_SPOT
+    cone = smoothstep(u_spot_cos.x, u_spot_cos.y, dot(-l, u_spot_direction));
+#endif
+    vec3 direct = (base.rgb * diffuse + vec3(specular)) * u_light_color * (visibility * cone);
+    gl_FragColor = vec4(base.rgb * u_ambient + direct, 1.0);
+#endif
+}

@@ -1,0 +1,30 @@
+#version 100
+// Camera pass: world-space position and normal for lighting, and with SHADOW_MAP the position
+// in the shadow map's texture space, (u_l, v_l, z_l, w) = B P_l V_l p_world.
+attribute vec3 a_position;
+attribute vec3 a_normal;
+attribute vec2 a_uv;
+
+uniform mat4 u_model;
+uniform mat3 u_normal_matrix;  // inverse transpose of the model matrix's upper 3x3
+uniform mat4 u_view_proj;
+
+varying vec3 v_world;
+varying vec3 v_normal;
+varying vec2 v_uv;
+
+#ifdef SHADOW_MAP
+uniform mat4 u_light_matrix;
+varying vec4 v_shadow_coord;
+#endif
+
+void main() {
+    vec4 world = u_model * vec4(a_position, 1.0);
+    v_world = world.xyz;
+    v_normal = u_normal_matrix * a_normal;
+    v_uv = a_uv;
+#ifdef SHADOW_MAP
+    v_shadow_coord = u_light_matrix * world;
+#endif
+    gl_Position = u_view_proj * world;
+}

@@ -1,0 +1,26 @@
+// The course's scene (exercise sheet W09): the Newell teapot jumping on a marble table top,
+// lit by a point light circling above the table. Everything animated is a pure function of time,
+// with separate clocks for the light and the jump so the pages' on/off buttons can freeze either.
+#pragma once
+
+#include "scene/scene.h"
+
+namespace penumbra::scene {
+
+struct CourseScene {
+    Scene scene;
+    int teapot = -1;  // object indices
+    int table = -1;
+};
+
+// Geometry, materials and the marble texture; the animated parts at t = 0.
+CourseScene make_course_scene(int teapot_level = 10);
+
+// Places the light at light_time and the teapot at jump_time (seconds).
+void animate_course(CourseScene& course, double light_time, double jump_time);
+
+// The light's position on its circle, and the teapot's lift above the table, at time t.
+glm::vec3 course_light_position(double t);
+float course_teapot_lift(double t);
+
+}  // namespace penumbra::scene
