@@ -1,0 +1,78 @@
+#include "gl_fixture.h"
+
+#include <cstdlib>
+#include <filesystem>
+
+namespace penumbra::test {
+
+platform::Platform& context() {
+    static std::unique_ptr<platform::Platform> ctx = [] {
+        std::string error;
+        auto p = platform::create_headless(error);
+        if (!p) {
+            std::fprintf(stderr, "%s\n", error.c_str());
+            std::abort();
+        }
+        return p;
+    }();
+    return *ctx;
+}
+
+ImageDiff compare(const tools::Pixels& a, const tools::Pixels& b) {
+    ImageDiff d;
+    double sum = 0.0;
+    for (size_t i = 0; i < a.data.size(); ++i) {
+        const int v = std::abs(int(a.data[i]) - int(b.data[i]));
+        d.max = std::max(d.max, v);
+        sum += v;
+    }
+    d.mean = a.data.empty() ? 0.0 : sum / static_cast<double>(a.data.size());
+    return d;
+}
+
+void expect_matches_golden(const std::string& name, const tools::Pixels& actual, int max_threshold,
+                           double mean_threshold) {
+    namespace fs = std::filesystem;
+    const std::string golden_path = std::string(PENUMBRA_GOLDEN_DIR) + "/" + name + ".png";
+    const fs::path out_dir = fs::path(PENUMBRA_TEST_OUT) / "golden";
+    fs::create_directories(out_dir);
+    const std::string actual_path = (out_dir / (name + ".actual.png")).string();
+    const std::string diff_path = (out_dir / (name + ".diff.png")).string();
+    fs::remove(actual_path);
+    fs::remove(diff_path);
+
+    tools::Pixels golden;
+    if (!fs::exists(golden_path)) {
+        ASSERT_EQ(tools::write_png(actual_path, actual), "");
+        FAIL() << "no golden " << golden_path << ": look at " << actual_path
+               << ", then approve it with tools/approve_goldens.sh";
+    }
+    ASSERT_EQ(tools::read_png(golden_path, golden, actual.channels), "");
+    ASSERT_EQ(golden.width, actual.width) << golden_path;
+    ASSERT_EQ(golden.height, actual.height) << golden_path;
+    const ImageDiff d = compare(actual, golden);
+    if (d.max <= max_threshold && d.mean <= mean_threshold) return;
+
+    // The diff image: per pixel the largest channel difference, amplified x4, as grey.
+    tools::Pixels diff;
+    diff.width = actual.width;
+    diff.height = actual.height;
+    diff.channels = 1;
+    const size_t n = static_cast<size_t>(actual.width) * static_cast<size_t>(actual.height);
+    diff.data.resize(n);
+    for (size_t p = 0; p < n; ++p) {
+        int m = 0;
+        for (int c = 0; c < actual.channels; ++c) {
+            const size_t i = p * static_cast<size_t>(actual.channels) + static_cast<size_t>(c);
+            m = std::max(m, std::abs(int(actual.data[i]) - int(golden.data[i])));
+        }
+        diff.data[p] = static_cast<std::uint8_t>(std::min(255, m * 4));
+    }
+    EXPECT_EQ(tools::write_png(actual_path, actual), "");
+    EXPECT_EQ(tools::write_png(diff_path, diff), "");
+    ADD_FAILURE() << name << ": max difference " << d.max << " (threshold " << max_threshold << "), mean " << d.mean
+                  << " (threshold " << mean_threshold << ")\n  actual: " << actual_path << "\n  diff:   " << diff_path
+                  << "\n  look at both; if the change is right, run tools/approve_goldens.sh";
+}
+
+}  // namespace penumbra::test

@@ -1,0 +1,45 @@
+// Shared by the GL tests: one headless EGL context per test process, a renderer on it, and
+// image comparison that writes actual and diff PNGs when a golden does not match.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "gl/caps.h"
+#include "gl/check.h"
+#include "platform/platform.h"
+#include "png_io.h"
+#include "render/renderer.h"
+
+namespace penumbra::test {
+
+// Makes the context current once per process (tests in one process share it).
+platform::Platform& context();
+
+struct GlTest : ::testing::Test {
+    void SetUp() override {
+        context();
+        renderer = std::make_unique<render::Renderer>(gl::probe_caps());
+    }
+    void TearDown() override {
+        renderer.reset();
+        gl::check_errors("test teardown");
+    }
+    std::unique_ptr<render::Renderer> renderer;
+};
+
+struct ImageDiff {
+    int max = 0;        // largest per-channel difference
+    double mean = 0.0;  // mean per-channel difference over all pixels
+};
+
+ImageDiff compare(const tools::Pixels& a, const tools::Pixels& b);
+
+// Compares `actual` with tests/golden/NAME.png. On a mismatch (or a missing golden) writes
+// NAME.actual.png and NAME.diff.png under build/test-output/golden and fails with their paths.
+void expect_matches_golden(const std::string& name, const tools::Pixels& actual, int max_threshold,
+                           double mean_threshold);
+
+}  // namespace penumbra::test

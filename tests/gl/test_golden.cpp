@@ -1,0 +1,76 @@
+// Golden images of the course scene at a fixed t for each encoding x filter (and the planar and
+// no-shadow techniques). The goldens were approved by looking at them (tools/approve_goldens.sh).
+#include "gl_fixture.h"
+
+#include "scene/scene_source.h"
+
+using namespace penumbra;
+
+namespace {
+
+struct Case {
+    const char* name;
+    render::Technique technique;
+    shadow::Encoding encoding;
+    shadow::Filter filter;
+    render::Aov aov;
+};
+
+std::string case_name(const ::testing::TestParamInfo<Case>& info) { return info.param.name; }
+
+// Names the case in test listings instead of its bytes.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+// llvmpipe is deterministic for one build and machine; the thresholds leave room for a
+// different CPU's rounding on a few edge pixels, not for a shadow that moved.
+constexpr int kMaxThreshold = 96;
+constexpr double kMeanThreshold = 0.5;
+
+class Golden : public test::GlTest, public ::testing::WithParamInterface<Case> {};
+
+TEST_P(Golden, CourseSceneMatches) {
+    const Case c = GetParam();
+    render::Settings s;
+    s.time = 0.6;
+    s.width = 256;
+    s.height = 256;
+    s.map_size = 512;
+    s.technique = c.technique;
+    s.encoding = c.encoding;
+    s.filter = c.filter;
+    s.aov = c.aov;
+    scene::SceneSource src;
+    std::string error;
+    std::vector<std::string> warnings;
+    ASSERT_TRUE(src.open("teapot", error, warnings)) << error;
+    ASSERT_EQ(renderer->check(src.at(s.time), s), "");
+    renderer->render(src.at(s.time), s);
+    const int channels = c.aov == render::Aov::Color ? 3 : 1;
+    test::expect_matches_golden(c.name, tools::from_rgba(renderer->read_image(), s.width, s.height, channels),
+                                kMaxThreshold, kMeanThreshold);
+}
+
+using E = shadow::Encoding;
+using F = shadow::Filter;
+using T = render::Technique;
+using A = render::Aov;
+
+INSTANTIATE_TEST_SUITE_P(
+    Course, Golden,
+    ::testing::Values(Case{"r8_hard", T::ShadowMap, E::R8, F::Hard, A::Color},
+                      Case{"r8_pcf2x2", T::ShadowMap, E::R8, F::PCF2x2, A::Color},
+                      Case{"r8_pcf4x4", T::ShadowMap, E::R8, F::PCF4x4, A::Color},
+                      Case{"rgba_hard", T::ShadowMap, E::RGBA, F::Hard, A::Color},
+                      Case{"rgba_pcf2x2", T::ShadowMap, E::RGBA, F::PCF2x2, A::Color},
+                      Case{"rgba_pcf4x4", T::ShadowMap, E::RGBA, F::PCF4x4, A::Color},
+                      Case{"depthtex_hard", T::ShadowMap, E::DepthTex, F::Hard, A::Color},
+                      Case{"depthtex_pcf2x2", T::ShadowMap, E::DepthTex, F::PCF2x2, A::Color},
+                      Case{"depthtex_pcf4x4", T::ShadowMap, E::DepthTex, F::PCF4x4, A::Color},
+                      Case{"planar", T::Planar, E::RGBA, F::Hard, A::Color},
+                      Case{"none", T::None, E::RGBA, F::Hard, A::Color},
+                      Case{"rgba_hard_visibility", T::ShadowMap, E::RGBA, F::Hard, A::Visibility},
+                      Case{"planar_visibility", T::Planar, E::RGBA, F::Hard, A::Visibility},
+                      Case{"rgba_light_depth", T::ShadowMap, E::RGBA, F::Hard, A::LightDepth}),
+    case_name);
+
+}  // namespace

@@ -1,0 +1,27 @@
+// PNG files for the command-line tool and the tests: written whole or not at all.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace penumbra::tools {
+
+struct Pixels {
+    int width = 0;
+    int height = 0;
+    int channels = 0;  // 1 grey, 3 RGB, 4 RGBA
+    std::vector<std::uint8_t> data;  // top row first
+};
+
+// Encodes in memory, writes a temporary file beside `path` and renames it into place, so a
+// failure never leaves a partial file. Returns "" or one line naming the problem.
+std::string write_png(const std::string& path, const Pixels& px);
+
+// Reads a PNG as `channels` channels (0: as stored). Returns "" or the problem.
+std::string read_png(const std::string& path, Pixels& out, int channels = 0);
+
+// Picks channels from RGBA8 pixels: 1 takes red (grey AOVs), 3 drops alpha.
+Pixels from_rgba(const std::vector<std::uint8_t>& rgba, int width, int height, int channels);
+
+}  // namespace penumbra::tools
