@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# The test command: builds with warnings as errors and runs every test ring (unit, GL on headless
+# EGL, shader validation, command line), then the unit and GL tests again under ASan + UBSan.
+# Set PENUMBRA_SKIP_ASAN=1 to skip the sanitizer pass.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+start=$(date +%s)
+cmake --preset ci >/dev/null
+cmake --build --preset ci
+ctest --preset ci
+if [ "${PENUMBRA_SKIP_ASAN:-0}" != 1 ]; then
+  echo "== again under AddressSanitizer + UndefinedBehaviorSanitizer (Debug, per-call GL checks) =="
+  cmake --preset asan >/dev/null
+  cmake --build --preset asan
+  # Mesa's own allocations outlive the process on purpose; leaks are checked in our code by
+  # the RAII types, not by LeakSanitizer.
+  ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan
+fi
+echo "tests finished in $(( $(date +%s) - start )) s"
