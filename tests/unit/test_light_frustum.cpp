@@ -293,3 +293,32 @@ TEST(Pcf, KernelsAreSymmetricHalfTexelGrids) {
             for (size_t j = i + 1; j < offs.size(); ++j) EXPECT_NE(offs[i], offs[j]);
     }
 }
+
+// The course scene itself: at several times, every vertex of every caster and receiver lies
+// inside the frustum fitted around the objects' bounds.
+#include "scene/course_scene.h"
+
+TEST(LightFrustumCourse, ContainsEveryCasterAndReceiverVertex) {
+    using namespace penumbra;
+    auto course = scene::make_course_scene(6);
+    for (double t : {0.0, 0.37, 1.5, 2.9, 6.0, 11.3}) {
+        scene::animate_course(course, t, t);
+        const scene::Scene& s = course.scene;
+        scene::Bounds b;
+        for (const auto& o : s.objects) b.add(scene::object_bounds(s, o));
+        const auto f = shadow::fit_light_frustum(s.light, scene::corners(b), b.center());
+        const glm::mat4 vp = f.view_proj();
+        size_t checked = 0;
+        for (const auto& o : s.objects)
+            for (const auto& p : s.meshes[static_cast<size_t>(o.mesh)].positions) {
+                const glm::vec4 c = vp * o.world * glm::vec4(p, 1.0f);
+                ASSERT_GT(c.w, 0.0f);
+                for (int i = 0; i < 3; ++i) {
+                    ASSERT_LE(c[i], c.w * (1.0f + 1e-5f)) << "t=" << t << " axis " << i;
+                    ASSERT_GE(c[i], -c.w * (1.0f + 1e-5f)) << "t=" << t << " axis " << i;
+                }
+                ++checked;
+            }
+        EXPECT_GT(checked, 1000u);
+    }
+}

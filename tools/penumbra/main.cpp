@@ -142,7 +142,7 @@ int run_gallery(const std::string& dir, render::Settings base) {
     std::ofstream html;
     const std::string index = (fs::path(dir) / "index.html").string();
     std::string body;
-    size_t done = 0;
+    size_t done = 0, written = 0;
     const size_t total = rows.size() * 3;
     for (const auto& row : rows) {
         body += "<tr><th>" + row.label + "</th>";
@@ -159,6 +159,7 @@ int run_gallery(const std::string& dir, render::Settings base) {
             std::fprintf(stderr, "[%2zu/%zu] %s\n", done, total, name.c_str());
             r.render(src.at(s.time), s);
             write_image(r, s, (fs::path(dir) / name).string());
+            ++written;
             body += "<td><img src=\"" + name + "\" width=\"256\" title=\"" + render::to_args(s) + "\"></td>";
         }
         body += "</tr>\n";
@@ -172,7 +173,7 @@ int run_gallery(const std::string& dir, render::Settings base) {
     std::ofstream f(index);
     f << page;
     if (!f) throw Failure{index + ": cannot write"};
-    std::printf("wrote %zu images and %s\n", total, index.c_str());
+    std::printf("wrote %zu images and %s\n", written, index.c_str());
     return 0;
 }
 
