@@ -305,7 +305,8 @@ const FramePlan& Renderer::render(const scene::Scene& scene, const Settings& s, 
     }
     device_.bind_target(target);
     const scene::Camera& cam = scene.camera;
-    const float aspect = cam.aspect > 0.0f ? cam.aspect : static_cast<float>(target.width) / static_cast<float>(target.height);
+    const float aspect =
+        cam.aspect > 0.0f ? cam.aspect : static_cast<float>(target.width) / static_cast<float>(target.height);
     camera_view_proj_ = glm::perspective(cam.yfov, aspect, cam.znear, cam.zfar) * cam.view;
     camera_pos_ = glm::vec3(glm::inverse(cam.view)[3]);
     const std::string target_name = (window ? "window " : "offscreen ") + size_str(target.width, target.height);
@@ -357,8 +358,11 @@ const FramePlan& Renderer::render(const scene::Scene& scene, const Settings& s, 
     // overlapping triangles darken once), and the ground is drawn again, unlit, where it is 2.
     // The shadow is never depth-tested against the ground, so there is nothing to fight.
     const int ground = scene.ground_object;
-    for (int i : drawable)
-        if (i != ground) draw_lit(scene, scene.objects[static_cast<size_t>(i)], features_for(scene.objects[static_cast<size_t>(i)]), s);
+    for (int i : drawable) {
+        if (i == ground) continue;
+        const auto& o = scene.objects[static_cast<size_t>(i)];
+        draw_lit(scene, o, features_for(o), s);
+    }
     gl::PipelineState mark;
     mark.stencil.enabled = true;
     mark.stencil.func = gl::Compare::Always;

@@ -50,7 +50,7 @@ public:
     // matrices and the light, are read from the scene at every render()).
     void load(const scene::Scene& scene);
 
-    // Renders one frame. Headless (window == nullptr) it draws into an offscreen target of the
+    // Renders one frame (loading the scene first if load() was not called for it). Headless (window == nullptr) it draws into an offscreen target of the
     // settings' size; read_image() reads it back. Throws gl::Error on any GL failure, naming the pass.
     const FramePlan& render(const scene::Scene& scene, const Settings& s, const gl::Target* window = nullptr);
 

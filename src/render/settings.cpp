@@ -79,8 +79,6 @@ std::string format_double(double v) {
     return o.str();
 }
 
-constexpr shadow::Encoding kEncodings[] = {shadow::Encoding::R8, shadow::Encoding::RGBA, shadow::Encoding::DepthTex};
-constexpr shadow::Filter kFilters[] = {shadow::Filter::Hard, shadow::Filter::PCF2x2, shadow::Filter::PCF4x4};
 constexpr Aov kAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth};
 constexpr Technique kTechniques[] = {Technique::ShadowMap, Technique::Planar, Technique::None};
 
@@ -105,10 +103,10 @@ std::string parse_option(Settings& s, std::string_view name, std::string_view va
         t.width = w;
         t.height = h;
     } else if (name == "encoding") {
-        if (!parse_enum(value, kEncodings, t.encoding))
-            return bad("unknown value " + quoted + " (" + choices(kEncodings) + ")");
+        if (!parse_enum(value, shadow::kAllEncodings, t.encoding))
+            return bad("unknown value " + quoted + " (" + choices(shadow::kAllEncodings) + ")");
     } else if (name == "filter") {
-        if (!parse_enum(value, kFilters, t.filter)) return bad("unknown value " + quoted + " (" + choices(kFilters) + ")");
+        if (!parse_enum(value, shadow::kAllFilters, t.filter)) return bad("unknown value " + quoted + " (" + choices(shadow::kAllFilters) + ")");
     } else if (name == "map-size") {
         if (!parse_int(value, t.map_size)) return bad("not a whole number: " + quoted);
         if (t.map_size <= 0) return bad("must be at least 1, got " + quoted);

@@ -25,8 +25,6 @@ const char* filter_define(shadow::Filter f) {
     return "FILTER_HARD";
 }
 
-constexpr shadow::Encoding kEncodings[] = {shadow::Encoding::R8, shadow::Encoding::RGBA, shadow::Encoding::DepthTex};
-constexpr shadow::Filter kFilters[] = {shadow::Filter::Hard, shadow::Filter::PCF2x2, shadow::Filter::PCF4x4};
 
 }  // namespace
 
@@ -78,8 +76,8 @@ std::vector<Variant> all_variants() {
     LitFeatures planar;
     planar.in_shadow = true;
     shadowing.push_back(planar);
-    for (auto e : kEncodings)
-        for (auto f : kFilters) {
+    for (auto e : shadow::kAllEncodings)
+        for (auto f : shadow::kAllFilters) {
             LitFeatures sm;
             sm.shadow_map = true;
             sm.encoding = e;
@@ -93,7 +91,7 @@ std::vector<Variant> all_variants() {
             base.visibility_aov = bits & 4;
             out.push_back(lit_variant(base));
         }
-    for (auto e : kEncodings) {
+    for (auto e : shadow::kAllEncodings) {
         out.push_back(depth_variant(e));
         out.push_back(light_depth_variant(e, false));
         out.push_back(light_depth_variant(e, true));

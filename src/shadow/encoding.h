@@ -21,6 +21,10 @@ enum class Filter {
     PCF4x4   // 16 taps at +-0.5, +-1.5 texel (Bunnell & Pellacini, GPU Gems ch. 11)
 };
 
+// Every value, in the order they are listed to users and swept.
+inline constexpr Encoding kAllEncodings[] = {Encoding::R8, Encoding::RGBA, Encoding::DepthTex};
+inline constexpr Filter kAllFilters[] = {Filter::Hard, Filter::PCF2x2, Filter::PCF4x4};
+
 std::string_view to_string(Encoding e);
 std::string_view to_string(Filter f);
 

@@ -137,8 +137,8 @@ TEST_F(RendererGl, EveryCombinationRendersWithoutGlErrors) {
     s.width = s.height = 48;
     s.map_size = 128;
     for (auto t : {render::Technique::ShadowMap, render::Technique::Planar, render::Technique::None})
-        for (auto e : {shadow::Encoding::R8, shadow::Encoding::RGBA, shadow::Encoding::DepthTex})
-            for (auto f : {shadow::Filter::Hard, shadow::Filter::PCF2x2, shadow::Filter::PCF4x4})
+        for (auto e : shadow::kAllEncodings)
+            for (auto f : shadow::kAllFilters)
                 for (auto a : {render::Aov::Color, render::Aov::Visibility, render::Aov::LightDepth}) {
                     s.technique = t;
                     s.encoding = e;

@@ -122,10 +122,8 @@ int run_gallery(const std::string& dir, render::Settings base) {
     };
     std::vector<Row> rows;
     const render::Aov aovs[] = {render::Aov::Color, render::Aov::Visibility, render::Aov::LightDepth};
-    const shadow::Encoding encodings[] = {shadow::Encoding::R8, shadow::Encoding::RGBA, shadow::Encoding::DepthTex};
-    const shadow::Filter filters[] = {shadow::Filter::Hard, shadow::Filter::PCF2x2, shadow::Filter::PCF4x4};
-    for (auto e : encodings)
-        for (auto f : filters) {
+    for (auto e : shadow::kAllEncodings)
+        for (auto f : shadow::kAllFilters) {
             if (e == shadow::Encoding::DepthTex && !r.caps().depth_texture) continue;
             render::Settings s = base;
             s.technique = render::Technique::ShadowMap;
