@@ -307,7 +307,7 @@ const FramePlan& Renderer::render(const scene::Scene& scene, const Settings& s, 
     const scene::Camera& cam = scene.camera;
     const float aspect =
         cam.aspect > 0.0f ? cam.aspect : static_cast<float>(target.width) / static_cast<float>(target.height);
-    camera_view_proj_ = glm::perspective(cam.yfov, aspect, cam.znear, cam.zfar) * cam.view;
+    camera_view_proj_ = (cam.projection ? *cam.projection : glm::perspective(cam.yfov, aspect, cam.znear, cam.zfar)) * cam.view;
     camera_pos_ = glm::vec3(glm::inverse(cam.view)[3]);
     const std::string target_name = (window ? "window " : "offscreen ") + size_str(target.width, target.height);
 
