@@ -6,7 +6,7 @@
 void main() {
 #if defined(ENC_R8)
     // 8 bits in red: the sheet's first shadow map.
-    gl_FragColor = vec4(gl_FragCoord.z, 0.0, 0.0, 1.0);
+    gl_FragColor = packDepthR8(gl_FragCoord.z);
 #elif defined(ENC_RGBA)
     gl_FragColor = packDepth(gl_FragCoord.z);
 #else

@@ -1,6 +1,6 @@
 #version 100
 // Camera pass: Phong lighting from one light, scaled by the light's visibility. Variants:
-// SHADOW_MAP (with ENC_* and FILTER_*), IN_SHADOW (planar shadow region: visibility 0),
+// SHADOW_MAP (with ENC_*, FILTER_*, and BIAS_AUTO with LIGHT_PERSPECTIVE or not; EMULATE_MEDIUMP), IN_SHADOW (planar shadow region: visibility 0),
 // TEXTURED (base colour texture), LIGHT_SPOT (cone falloff), AOV_VISIBILITY (write visibility
 // as grey instead of colour).
 #include "precision.glsl"
@@ -31,9 +31,11 @@ varying vec4 v_shadow_coord;
 #endif
 
 void main() {
+    vec3 n = normalize(v_normal);
+    vec3 l = normalize(u_light.xyz - v_world * u_light.w);
     float visibility = 1.0;
 #if defined(SHADOW_MAP)
-    visibility = shadowVisibility(v_shadow_coord);
+    visibility = shadowVisibility(v_shadow_coord, n);
 #elif defined(IN_SHADOW)
     visibility = 0.0;
 #endif
@@ -45,8 +47,6 @@ void main() {
 #ifdef TEXTURED
     base *= texture2D(u_base_texture, v_uv);
 #endif
-    vec3 n = normalize(v_normal);
-    vec3 l = normalize(u_light.xyz - v_world * u_light.w);
     vec3 v = normalize(u_camera_pos - v_world);
     float diffuse = max(dot(n, l), 0.0);
     float specular = 0.0;

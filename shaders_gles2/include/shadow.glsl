@@ -1,48 +1,83 @@
-// Shadow-map lookup for the camera pass. The encoding (ENC_R8, ENC_RGBA, else a depth texture)
-// and the filter (FILTER_PCF4X4, FILTER_PCF2X2, else hard) are chosen by #define when the variant
-// is compiled, so no shader branches on settings at run time.
+// Shadow-map lookup for the camera pass. The encoding (ENC_R8, ENC_RGBA, else a depth texture),
+// the filter (FILTER_PCF4X4, FILTER_PCF2X2, else hard) and the bias rule (BIAS_AUTO or a
+// constant) are chosen by #define when the variant is compiled, so no shader branches on
+// settings at run time.
 #include "pack.glsl"
 
 uniform sampler2D u_shadow_map;
 uniform vec2 u_texmapscale;  // 1/width, 1/height of the shadow map: one texel in texture space
-uniform float u_bias;        // the fragment is in shadow if z_l > depth + bias
+uniform float u_bias;        // the fragment is in shadow if z_l > depth + bias (auto: the constant part)
+
+#ifdef BIAS_AUTO
+// Receiver-plane slope bias, computed from the receiver's normal in the light's eye space: across
+// the kernel's reach, how far does the surface move along the light's axis? For a plane with
+// normal n hit along the ray r = (x tan_x, y tan_y, -1) (perspective) the eye depth changes per
+// unit of NDC x by z n_x tan_x / |n.r| (y likewise); orthographic: half_w n_x / |n_z|. Converted to
+// window depth by d(z_window)/d(z_eye). |n.r| is floored at 0.05 |r| (a surface within 3 degrees
+// of edge-on to the light, barely lit anyway), which caps the slope at 20.
+uniform mat3 u_light_rotation;  // world -> light eye space
+uniform vec4 u_bias_slope;      // x, y: tan of the half-angles (perspective) or half-extents
+                                // (orthographic); z, w: the light's near and far
+uniform vec2 u_bias_kernel;     // x: one texel in NDC (2 / map size); y: the kernel's reach in texels per axis
+
+float shadowBias(vec3 normal, vec3 c) {
+    vec3 nl = u_light_rotation * normal;
+    float n = u_bias_slope.z;
+    float f = u_bias_slope.w;
+    float across = (abs(nl.x) * u_bias_slope.x + abs(nl.y) * u_bias_slope.y) * u_bias_kernel.x * u_bias_kernel.y;
+#ifdef LIGHT_PERSPECTIVE
+    vec3 ray = vec3((2.0 * c.x - 1.0) * u_bias_slope.x, (2.0 * c.y - 1.0) * u_bias_slope.y, -1.0);
+    float facing = max(abs(dot(nl, ray)), 0.05 * length(ray));
+    float zEye = 2.0 * n * f / (f + n - (2.0 * c.z - 1.0) * (f - n));
+    float dz = zEye * across / facing;
+    return u_bias + dz * n * f / ((f - n) * zEye * zEye);
+#else
+    float facing = max(abs(nl.z), 0.05);
+    return u_bias + across / facing / (f - n);
+#endif
+}
+#else
+float shadowBias(vec3 normal, vec3 c) { return u_bias; }
+#endif
 
 float shadowDepth(vec2 uv) {
 #ifdef ENC_RGBA
     return unpackDepth(texture2D(u_shadow_map, uv));
 #else
     // ENC_R8 writes depth to red; a depth texture also returns it in red.
-    return texture2D(u_shadow_map, uv).r;
+    return MP(texture2D(u_shadow_map, uv).r);
 #endif
 }
 
-float litAt(vec2 uv, float z) {
-    return z > shadowDepth(uv) + u_bias ? 0.0 : 1.0;
+float litAt(vec2 uv, float z, float bias) {
+    return z > MP(shadowDepth(uv) + bias) ? 0.0 : 1.0;
 }
 
 // 1.0 where the light reaches, 0.0 in shadow, PCF fractions in between. Points outside the
-// light's frustum are lit: the map says nothing about them.
-float shadowVisibility(vec4 shadowCoord) {
+// light's frustum are lit: the map says nothing about them. normal: the receiver's unit normal in
+// world space (for BIAS_AUTO).
+float shadowVisibility(vec4 shadowCoord, vec3 normal) {
     if (shadowCoord.w <= 0.0) return 1.0;
-    vec3 c = shadowCoord.xyz / shadowCoord.w;
+    vec3 c = MP(shadowCoord.xyz / shadowCoord.w);
     if (c.x < 0.0 || c.x > 1.0 || c.y < 0.0 || c.y > 1.0 || c.z < 0.0 || c.z > 1.0) return 1.0;
+    float bias = shadowBias(normal, c);
 #if defined(FILTER_PCF4X4)
     // 16 taps at -1.5, -0.5, 0.5, 1.5 texels: a 4x4 block of the map (Bunnell & Pellacini).
     float sum = 0.0;
     for (int i = 0; i < 4; ++i) {
         for (int j = 0; j < 4; ++j) {
             vec2 offset = vec2(float(i) - 1.5, float(j) - 1.5);
-            sum += litAt(c.xy + offset * u_texmapscale, c.z);
+            sum += litAt(c.xy + offset * u_texmapscale, c.z, bias);
         }
     }
     return sum / 16.0;
 #elif defined(FILTER_PCF2X2)
-    float sum = litAt(c.xy + vec2(-0.5, -0.5) * u_texmapscale, c.z);
-    sum += litAt(c.xy + vec2(0.5, -0.5) * u_texmapscale, c.z);
-    sum += litAt(c.xy + vec2(-0.5, 0.5) * u_texmapscale, c.z);
-    sum += litAt(c.xy + vec2(0.5, 0.5) * u_texmapscale, c.z);
+    float sum = litAt(c.xy + vec2(-0.5, -0.5) * u_texmapscale, c.z, bias);
+    sum += litAt(c.xy + vec2(0.5, -0.5) * u_texmapscale, c.z, bias);
+    sum += litAt(c.xy + vec2(-0.5, 0.5) * u_texmapscale, c.z, bias);
+    sum += litAt(c.xy + vec2(0.5, 0.5) * u_texmapscale, c.z, bias);
     return sum * 0.25;
 #else
-    return litAt(c.xy, c.z);
+    return litAt(c.xy, c.z, bias);
 #endif
 }

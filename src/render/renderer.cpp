@@ -57,7 +57,7 @@ std::string size_str(int w, int h) { return std::to_string(w) + "x" + std::to_st
 
 bool Renderer::ShadowKey::operator==(const ShadowKey& o) const {
     return light_view_proj == o.light_view_proj && casters == o.casters && meshes == o.meshes &&
-           encoding == o.encoding && size == o.size;
+           encoding == o.encoding && size == o.size && mediump == o.mediump;
 }
 
 std::string FramePlan::describe() const {
@@ -67,7 +67,42 @@ std::string FramePlan::describe() const {
     return out;
 }
 
-Renderer::Renderer(gl::Caps caps) : caps_(std::move(caps)) {}
+Renderer::Renderer(gl::Caps caps) : caps_(std::move(caps)) { rounding_ = probe_unorm_rounding(); }
+
+shadow::UnormRounding Renderer::probe_unorm_rounding() {
+    // 0.6/255 is 1 when the context rounds and 0 when it truncates; 128.6/255 and 254.6/255 check
+    // the same in the middle and at the top of the range.
+    gl::TextureDesc d;
+    d.width = d.height = 1;
+    d.label = "unorm8 probe";
+    gl::Texture tex(d);
+    gl::FramebufferDesc fd;
+    fd.color = &tex;
+    fd.label = "unorm8 probe framebuffer";
+    gl::Framebuffer fb(fd);
+    device_.bind_target({&fb, 1, 1});
+    gl::PipelineState st;
+    st.depth_test = false;
+    st.cull = gl::Cull::None;
+    device_.apply(st);
+    const gl::Program& p = shaders_.get(probe_variant());
+    device_.use(p);
+    p.set("u_value", glm::vec4(0.6f, 128.6f, 254.6f, 255.0f) / 255.0f);
+    device_.draw_fullscreen();
+    const auto px = device_.read_rgba(1, 1);
+    device_.apply(gl::PipelineState{});
+    gl::check_errors("the unorm8 probe");
+    const bool rounds = px[0] == 1 && px[1] == 129 && px[2] == 255;
+    const bool floors = px[0] == 0 && px[1] == 128 && px[2] == 254;
+    if (!rounds && !floors)
+        throw gl::Error("unorm8 probe: the context stored 0.6/255, 128.6/255, 254.6/255 as " + std::to_string(px[0]) +
+                        ", " + std::to_string(px[1]) + ", " + std::to_string(px[2]) + ": neither rounding nor truncation");
+    return rounds ? shadow::UnormRounding::Round : shadow::UnormRounding::Floor;
+}
+
+DepthPath Renderer::depth_path(const Settings& s) const {
+    return {s.precision == shadow::Precision::Mediump, rounding_ == shadow::UnormRounding::Floor};
+}
 Renderer::~Renderer() = default;
 
 std::string Renderer::check(const scene::Scene& scene, const Settings& s) const {
@@ -93,7 +128,22 @@ std::string Renderer::check(const scene::Scene& scene, const Settings& s) const 
     return {};
 }
 
+std::vector<float> Renderer::fingerprint(const scene::Scene& scene) {
+    // Counts and a few sample positions per mesh and image: cheap enough for every frame, and a
+    // different scene (even one allocated where the last one was) is all but sure to differ.
+    std::vector<float> f;
+    for (const auto& m : scene.meshes) {
+        f.push_back(static_cast<float>(m.positions.size()));
+        f.push_back(static_cast<float>(m.indices.size()));
+        for (size_t i : {size_t{0}, m.positions.size() / 2, m.positions.size() - 1})
+            if (i < m.positions.size()) f.insert(f.end(), {m.positions[i].x, m.positions[i].y, m.positions[i].z});
+    }
+    for (const auto& img : scene.images) f.insert(f.end(), {static_cast<float>(img.width), static_cast<float>(img.height)});
+    return f;
+}
+
 void Renderer::load(const scene::Scene& scene) {
+    loaded_ = fingerprint(scene);
     meshes_.clear();
     images_.clear();
     drawn_key_.reset();
@@ -174,7 +224,7 @@ std::size_t Renderer::shadow_map_bytes() const {
 }
 
 void Renderer::draw_shadow_map(const scene::Scene& scene, const std::vector<int>& casters, shadow::Encoding e,
-                               int size) {
+                               int size, const DepthPath& path) {
     device_.bind_target({&shadow_->fb, size, size});
     gl::PipelineState st;
     st.cull = gl::Cull::None;  // open meshes (the teapot's rim, glTF sheets) must cast from both sides
@@ -182,7 +232,7 @@ void Renderer::draw_shadow_map(const scene::Scene& scene, const std::vector<int>
     device_.apply(st);
     // White is the farthest depth in every encoding: nothing drawn there, nothing shadows.
     device_.clear(e == shadow::Encoding::DepthTex ? nullptr : &kWhite, true, false);
-    const gl::Program& p = shaders_.get(depth_variant(e));
+    const gl::Program& p = shaders_.get(depth_variant(e, path));
     device_.use(p);
     const glm::mat4 vp = frustum_.view_proj();
     for (int i : casters) {
@@ -214,7 +264,9 @@ void Renderer::draw_lit(const scene::Scene& scene, const scene::Object& o, const
         p.set("u_spot_cos", glm::vec2(std::cos(light.spot_outer_cone), std::cos(light.spot_inner_cone)));
     }
     if (f.textured) {
-        device_.bind_texture(kBaseTextureUnit, images_[static_cast<size_t>(m.base_color_texture)]);
+        const auto image = static_cast<size_t>(m.base_color_texture);
+        const bool overridden = image < image_overrides_.size() && image_overrides_[image];
+        device_.bind_texture(kBaseTextureUnit, overridden ? *image_overrides_[image] : images_[image]);
         p.set("u_base_texture", kBaseTextureUnit);
     }
     if (f.shadow_map) {
@@ -224,17 +276,25 @@ void Renderer::draw_lit(const scene::Scene& scene, const scene::Object& o, const
         const float texel = 1.0f / static_cast<float>(shadow_->size);
         p.set("u_texmapscale", glm::vec2(texel, texel));
         p.set("u_bias", s.effective_bias());
+        if (f.bias_auto) {
+            // 1/P[0][0] and 1/P[1][1]: tan of the half-angles (perspective) or the half-extents
+            // (orthographic) of the light's frustum.
+            const glm::mat4& proj = frustum_.proj;
+            p.set("u_light_rotation", glm::mat3(frustum_.view));
+            p.set("u_bias_slope", glm::vec4(1.0f / proj[0][0], 1.0f / proj[1][1], frustum_.znear, frustum_.zfar));
+            p.set("u_bias_kernel", glm::vec2(2.0f / static_cast<float>(shadow_->size), shadow::kernel_reach_texels(s.filter)));
+        }
     }
     device_.draw(meshes_[static_cast<size_t>(o.mesh)].buffers);
 }
 
-void Renderer::draw_light_depth(shadow::Encoding e) {
+void Renderer::draw_light_depth(shadow::Encoding e, const DepthPath& path) {
     gl::PipelineState st;
     st.depth_test = false;
     st.depth_write = false;
     st.cull = gl::Cull::None;
     device_.apply(st);
-    const gl::Program& p = shaders_.get(light_depth_variant(e, frustum_.perspective));
+    const gl::Program& p = shaders_.get(light_depth_variant(e, frustum_.perspective, path));
     device_.use(p);
     device_.bind_texture(kShadowUnit, shadow_->map);
     p.set("u_shadow_map", kShadowUnit);
@@ -243,7 +303,7 @@ void Renderer::draw_light_depth(shadow::Encoding e) {
 }
 
 const FramePlan& Renderer::render(const scene::Scene& scene, const Settings& s, const gl::Target* window) {
-    if (meshes_.size() != scene.meshes.size()) load(scene);
+    if (fingerprint(scene) != loaded_) load(scene);
     plan_ = FramePlan{};
 
     // What the scene requires.
@@ -268,6 +328,14 @@ const FramePlan& Renderer::render(const scene::Scene& scene, const Settings& s, 
                                   ", this context's maximum");
             size = max;
         }
+        // Below 16 texels the one or few texels hold the nearest caster's depth for everything
+        // behind it and the whole frame falls into shadow: that is no longer a shadow map.
+        constexpr int kMinMap = 16;
+        if (size < kMinMap) {
+            plan_.notes.push_back("--map-size " + std::to_string(size) + " raised to " + std::to_string(kMinMap) +
+                                  ", the smallest map that still resolves a shadow");
+            size = kMinMap;
+        }
         plan_.map_size = size;
         frustum_ = shadow::fit_light_frustum(scene.light, scene::corners(shadowed), shadowed.center());
         ensure_shadow_target(s.encoding, size);
@@ -275,6 +343,7 @@ const FramePlan& Renderer::render(const scene::Scene& scene, const Settings& s, 
         key.light_view_proj = frustum_.view_proj();
         key.encoding = s.encoding;
         key.size = size;
+        key.mediump = s.precision == shadow::Precision::Mediump;
         for (int i : casters) {
             key.casters.push_back(scene.objects[static_cast<size_t>(i)].world);
             key.meshes.push_back(scene.objects[static_cast<size_t>(i)].mesh);
@@ -286,7 +355,7 @@ const FramePlan& Renderer::render(const scene::Scene& scene, const Settings& s, 
         if (drawn_key_ && *drawn_key_ == key) {
             plan_.passes.push_back({"shadow-map", "reused (light and casters unchanged): " + what});
         } else {
-            draw_shadow_map(scene, casters, s.encoding, size);
+            draw_shadow_map(scene, casters, s.encoding, size, depth_path(s));
             drawn_key_ = std::move(key);
             plan_.shadow_redrawn = true;
             plan_.passes.push_back({"shadow-map", what});
@@ -314,7 +383,7 @@ const FramePlan& Renderer::render(const scene::Scene& scene, const Settings& s, 
     if (s.aov == Aov::LightDepth) {
         device_.apply(gl::PipelineState{});
         device_.clear(&kWhite, true, false);
-        draw_light_depth(s.encoding);
+        draw_light_depth(s.encoding, depth_path(s));
         gl::check_errors("the light-depth view");
         plan_.passes.push_back({"light-depth view", target_name + ", the shadow map scaled for viewing"});
         return plan_;
@@ -335,6 +404,9 @@ const FramePlan& Renderer::render(const scene::Scene& scene, const Settings& s, 
         f.shadow_map = want_map && o.receives_shadow;
         f.encoding = s.encoding;
         f.filter = s.filter;
+        f.bias_auto = s.bias_auto;
+        f.light_perspective = frustum_.perspective;
+        f.mediump = s.precision == shadow::Precision::Mediump;
         return f;
     };
 
@@ -346,7 +418,10 @@ const FramePlan& Renderer::render(const scene::Scene& scene, const Settings& s, 
         gl::check_errors("the camera pass");
         std::string detail = target_name + ", " + std::to_string(drawable.size()) + " object(s)";
         if (want_map) detail += ", shadow lookup " + std::string(shadow::to_string(s.filter)) + " " +
-                                std::string(shadow::to_string(s.encoding)) + ", bias " + std::to_string(s.effective_bias());
+                                std::string(shadow::to_string(s.encoding)) + ", bias " +
+                                (s.bias_auto ? "auto (" + std::to_string(s.effective_bias()) + " + slope)"
+                                             : std::to_string(s.effective_bias())) +
+                                (s.precision == shadow::Precision::Mediump ? ", mediump emulated" : "");
         else detail += ", no shadows";
         if (visibility) detail += ", visibility AOV";
         plan_.passes.push_back({"camera", detail});
@@ -389,7 +464,7 @@ const FramePlan& Renderer::render(const scene::Scene& scene, const Settings& s, 
     project.stencil.ref = 1;
     project.stencil.pass = gl::StencilOp::Incr;
     device_.apply(project);
-    const gl::Program& flat = shaders_.get(depth_variant(shadow::Encoding::DepthTex));
+    const gl::Program& flat = shaders_.get(depth_variant(shadow::Encoding::DepthTex, depth_path(s)));
     device_.use(flat);
     int projected = 0;
     for (int i : casters) {
@@ -418,6 +493,25 @@ const FramePlan& Renderer::render(const scene::Scene& scene, const Settings& s, 
     gl::check_errors("the planar shadow pass");
     plan_.passes.push_back({"planar-shadow", "the ground again, unlit, where stencil = 2"});
     return plan_;
+}
+
+void Renderer::set_image_override(int image, const gl::Texture* texture) {
+    if (image < 0) return;
+    const auto i = static_cast<size_t>(image);
+    if (i >= image_overrides_.size()) image_overrides_.resize(i + 1, nullptr);
+    image_overrides_[i] = texture;
+}
+
+std::vector<std::uint8_t> Renderer::read_target(const gl::Target& target) {
+    device_.bind_target(target);
+    std::vector<std::uint8_t> px = device_.read_rgba(target.x, target.y, target.width, target.height);
+    // GL reads the bottom row first; images are stored top row first.
+    const size_t row = static_cast<size_t>(target.width) * 4u;
+    std::vector<std::uint8_t> out(px.size());
+    for (int y = 0; y < target.height; ++y)
+        std::copy_n(px.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(target.height - 1 - y) * row),
+                    row, out.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(y) * row));
+    return out;
 }
 
 std::vector<std::uint8_t> Renderer::read_image() {

@@ -27,13 +27,15 @@ std::string_view to_string(Aov a) {
 
 bool Settings::operator==(const Settings& o) const {
     return scene == o.scene && time == o.time && width == o.width && height == o.height && encoding == o.encoding &&
-           filter == o.filter && map_size == o.map_size && bias == o.bias && aov == o.aov &&
+           filter == o.filter && map_size == o.map_size && bias == o.bias && bias_auto == o.bias_auto &&
+           precision == o.precision && aov == o.aov &&
            technique == o.technique && out == o.out && frames == o.frames;
 }
 
 const std::vector<std::string_view>& option_names() {
-    static const std::vector<std::string_view> names = {"scene", "time", "size",  "encoding",  "filter", "map-size",
-                                                        "bias",  "aov",  "technique", "out", "frames"};
+    static const std::vector<std::string_view> names = {"scene", "time",      "size", "encoding", "filter",
+                                                        "map-size", "bias", "precision", "aov", "technique",
+                                                        "out", "frames"};
     return names;
 }
 
@@ -79,6 +81,7 @@ std::string format_double(double v) {
     return o.str();
 }
 
+constexpr shadow::Precision kPrecisions[] = {shadow::Precision::Highp, shadow::Precision::Mediump};
 constexpr Aov kAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth};
 constexpr Technique kTechniques[] = {Technique::ShadowMap, Technique::Planar, Technique::None};
 
@@ -112,15 +115,20 @@ std::string parse_option(Settings& s, std::string_view name, std::string_view va
         if (t.map_size <= 0) return bad("must be at least 1, got " + quoted);
     } else if (name == "bias") {
         double b = 0.0;
-        if (value == "default") {
+        if (value == "default" || value == "auto") {
             t.bias.reset();
+            t.bias_auto = value == "auto";
         } else if (!parse_double(value, b)) {
-            return bad("not a number: " + quoted + " (or 'default')");
+            return bad("not a number: " + quoted + " (or 'default', 'auto')");
         } else if (b < 0.0 || b > 1.0) {
             return bad("must lie in [0, 1] (a depth offset), got " + quoted);
         } else {
             t.bias = static_cast<float>(b);
+            t.bias_auto = false;
         }
+    } else if (name == "precision") {
+        if (!parse_enum(value, kPrecisions, t.precision))
+            return bad("unknown value " + quoted + " (" + choices(kPrecisions) + ")");
     } else if (name == "aov") {
         if (!parse_enum(value, kAovs, t.aov)) return bad("unknown value " + quoted + " (" + choices(kAovs) + ")");
     } else if (name == "technique") {
@@ -146,7 +154,8 @@ std::vector<std::pair<std::string, std::string>> to_pairs(const Settings& s) {
         {"encoding", std::string(to_string(s.encoding))},
         {"filter", std::string(to_string(s.filter))},
         {"map-size", std::to_string(s.map_size)},
-        {"bias", s.bias ? format_double(static_cast<double>(*s.bias)) : "default"},
+        {"bias", s.bias_auto ? "auto" : s.bias ? format_double(static_cast<double>(*s.bias)) : "default"},
+        {"precision", std::string(to_string(s.precision))},
         {"aov", std::string(to_string(s.aov))},
         {"technique", std::string(to_string(s.technique))},
         {"out", s.out},

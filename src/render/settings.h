@@ -32,12 +32,18 @@ struct Settings {
     shadow::Filter filter = shadow::Filter::Hard;
     int map_size = 1024;
     std::optional<float> bias;  // absent: the encoding's default (shadow::default_bias)
+    bool bias_auto = false;     // --bias auto: the encoding's quantum plus a receiver slope term
+    shadow::Precision precision = shadow::Precision::Highp;  // mediump: emulated fp16 depth path
     Aov aov = Aov::Color;
     Technique technique = Technique::ShadowMap;
     std::string out;  // PNG path; empty: write nothing
     int frames = 1;
 
-    float effective_bias() const { return bias ? *bias : shadow::default_bias(encoding); }
+    // The constant bias: the chosen one, the encoding's default, or with bias_auto the quantum part.
+    float effective_bias() const {
+        if (bias_auto) return shadow::auto_bias_constant(encoding, precision);
+        return bias ? *bias : shadow::default_bias(encoding);
+    }
     bool operator==(const Settings& o) const;
 };
 

@@ -52,6 +52,11 @@ Variant lit_variant(const LitFeatures& f) {
     Variant v{"lit.vert", "lit.frag", {}};
     if (f.shadow_map) {
         v.defines = {"SHADOW_MAP", encoding_define(f.encoding), filter_define(f.filter)};
+        if (f.bias_auto) {
+            v.defines.emplace_back("BIAS_AUTO");
+            if (f.light_perspective) v.defines.emplace_back("LIGHT_PERSPECTIVE");
+        }
+        if (f.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
     } else if (f.in_shadow) {
         v.defines = {"IN_SHADOW"};
     }
@@ -61,11 +66,26 @@ Variant lit_variant(const LitFeatures& f) {
     return v;
 }
 
-Variant depth_variant(shadow::Encoding e) { return {"depth.vert", "depth.frag", {encoding_define(e)}}; }
+Variant depth_variant(shadow::Encoding e, const DepthPath& path) {
+    Variant v{"depth.vert", "depth.frag", {encoding_define(e)}};
+    if (path.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
+    if (path.pack_floor) v.defines.emplace_back("PACK_FLOOR");
+    return v;
+}
 
-Variant light_depth_variant(shadow::Encoding e, bool perspective) {
+Variant light_depth_variant(shadow::Encoding e, bool perspective, const DepthPath& path) {
     Variant v{"light_depth.vert", "light_depth.frag", {encoding_define(e)}};
     if (perspective) v.defines.emplace_back("LINEARIZE");
+    if (path.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
+    return v;
+}
+
+Variant probe_variant() { return {"light_depth.vert", "probe.frag", {}}; }
+
+Variant ramp_variant(shadow::Encoding e, const DepthPath& path) {
+    Variant v{"light_depth.vert", "ramp.frag", {encoding_define(e)}};
+    if (path.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
+    if (path.pack_floor) v.defines.emplace_back("PACK_FLOOR");
     return v;
 }
 
@@ -77,13 +97,18 @@ std::vector<Variant> all_variants() {
     planar.in_shadow = true;
     shadowing.push_back(planar);
     for (auto e : shadow::kAllEncodings)
-        for (auto f : shadow::kAllFilters) {
-            LitFeatures sm;
-            sm.shadow_map = true;
-            sm.encoding = e;
-            sm.filter = f;
-            shadowing.push_back(sm);
-        }
+        for (auto f : shadow::kAllFilters)
+            for (int bias = 0; bias < 3; ++bias)  // constant, auto orthographic, auto perspective
+                for (bool mediump : {false, true}) {
+                    LitFeatures sm;
+                    sm.shadow_map = true;
+                    sm.encoding = e;
+                    sm.filter = f;
+                    sm.bias_auto = bias > 0;
+                    sm.light_perspective = bias == 2;
+                    sm.mediump = mediump;
+                    shadowing.push_back(sm);
+                }
     for (LitFeatures base : shadowing)
         for (int bits = 0; bits < 8; ++bits) {
             base.textured = bits & 1;
@@ -91,11 +116,16 @@ std::vector<Variant> all_variants() {
             base.visibility_aov = bits & 4;
             out.push_back(lit_variant(base));
         }
-    for (auto e : shadow::kAllEncodings) {
-        out.push_back(depth_variant(e));
-        out.push_back(light_depth_variant(e, false));
-        out.push_back(light_depth_variant(e, true));
-    }
+    for (auto e : shadow::kAllEncodings)
+        for (bool mediump : {false, true}) {
+            for (bool pack_floor : {false, true}) {
+                out.push_back(depth_variant(e, {mediump, pack_floor}));
+                if (e != shadow::Encoding::DepthTex) out.push_back(ramp_variant(e, {mediump, pack_floor}));
+            }
+            out.push_back(light_depth_variant(e, false, {mediump, false}));
+            out.push_back(light_depth_variant(e, true, {mediump, false}));
+        }
+    out.push_back(probe_variant());
     return out;
 }
 

@@ -32,11 +32,26 @@ struct LitFeatures {
     bool textured = false;
     bool spot = false;
     bool visibility_aov = false;
+    bool bias_auto = false;          // receiver slope bias (with shadow_map)
+    bool light_perspective = false;  // the light's projection, for bias_auto's depth slope
+    bool mediump = false;            // emulate fp16 along the depth path
+};
+
+// How the depth path is compiled on this context: the emulated precision and what the unorm8
+// probe found (PACK_FLOOR when the context truncates).
+struct DepthPath {
+    bool mediump = false;
+    bool pack_floor = false;
 };
 
 Variant lit_variant(const LitFeatures& f);
-Variant depth_variant(shadow::Encoding e);  // also the planar stencil pass (DepthTex: colour off)
-Variant light_depth_variant(shadow::Encoding e, bool perspective);
+// The light's pass (also the planar stencil pass with DepthTex: colour off).
+Variant depth_variant(shadow::Encoding e, const DepthPath& path = {});
+Variant light_depth_variant(shadow::Encoding e, bool perspective, const DepthPath& path = {});
+// The unorm8 rounding probe's program.
+Variant probe_variant();
+// The precision test pattern: a ramp of depths packed as `e` packs them (R8 or RGBA).
+Variant ramp_variant(shadow::Encoding e, const DepthPath& path);
 
 // Every variant the renderer can build.
 std::vector<Variant> all_variants();

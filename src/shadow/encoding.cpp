@@ -23,6 +23,9 @@ std::string_view to_string(Filter f) {
     return "?";
 }
 
+std::string_view to_string(Precision p) { return p == Precision::Highp ? "highp" : "mediump"; }
+std::string_view to_string(UnormRounding r) { return r == UnormRounding::Round ? "round" : "floor"; }
+
 float default_bias(Encoding e) {
     switch (e) {
         case Encoding::R8: return 0.005f;
@@ -32,38 +35,90 @@ float default_bias(Encoding e) {
     return 0.005f;
 }
 
-namespace {
-// GLES 2.0 section 2.1.2: a float written to a normalized fixed-point channel becomes
-// round(clamp(c,0,1) * 255).
-std::uint8_t to_unorm8(float c) {
-    const float v = std::clamp(c, 0.0f, 1.0f) * 255.0f;
-    return static_cast<std::uint8_t>(std::lround(v));
+float round_mediump(float x) {
+    const float a = std::fabs(x);
+    if (!(a >= 6.103515625e-05f)) return 0.0f;  // below fp16's smallest normal (and NaN): 0
+    int e = 0;
+    std::frexp(a, &e);                    // a = m * 2^e, m in [0.5, 1)
+    const float scale = std::ldexp(1.0f, 11 - e);  // 11 significant bits
+    const float r = std::min(std::floor(a * scale + 0.5f) / scale, 65504.0f);
+    return std::copysign(r, x);
 }
+
+namespace {
+
+float mp(float x, const PackContext& c) { return c.precision == Precision::Mediump ? round_mediump(x) : x; }
+
+// GLES 2.0 section 2.1.2: a float written to a normalized fixed-point channel becomes
+// round(clamp(c,0,1) * 255); an implementation that truncates gives floor instead.
+std::uint8_t to_unorm8(float v, UnormRounding r) {
+    const float x = std::clamp(v, 0.0f, 1.0f) * 255.0f;
+    return static_cast<std::uint8_t>(r == UnormRounding::Round ? std::lround(x) : static_cast<long>(std::floor(x)));
+}
+
+float unorm_offset(const PackContext& c) { return c.rounding == UnormRounding::Floor ? 0.5f : 0.0f; }
+
 }  // namespace
 
-std::uint8_t pack_r8(float depth) { return to_unorm8(depth); }
+std::uint8_t pack_r8(float depth, PackContext c) {
+    return to_unorm8(mp(mp(depth, c) + unorm_offset(c) / 255.0f, c), c.rounding);
+}
 
-float unpack_r8(std::uint8_t byte) { return static_cast<float>(byte) / 255.0f; }
+float unpack_r8(std::uint8_t byte, PackContext c) { return mp(static_cast<float>(byte) / 255.0f, c); }
 
-std::array<std::uint8_t, 4> pack_rgba(float depth) {
-    const float d = std::clamp(depth, 0.0f, kMaxPackedDepth);
+std::array<std::uint8_t, 4> pack_rgba(float depth, PackContext c) {
+    const float max = c.precision == Precision::Mediump ? kMaxPackedDepthMediump : kMaxPackedDepth;
+    const float d = std::clamp(mp(depth, c), 0.0f, max);
     const float shift[4] = {1.0f, 256.0f, 65536.0f, 16777216.0f};
     std::array<std::uint8_t, 4> out{};
     for (int i = 0; i < 4; ++i) {
-        const float scaled = d * shift[i];                       // exact: a power-of-two scale
-        const float e = scaled - std::floor(scaled);             // fract
-        const float byte = std::floor(e * 256.0f);               // exact
-        out[static_cast<size_t>(i)] = to_unorm8(byte / 255.0f);  // what the texture stores
+        const float scaled = mp(d * shift[i], c);        // exact under highp: a power-of-two scale
+        const float e = mp(scaled - std::floor(scaled), c);  // fract
+        const float byte = std::floor(e * 256.0f);       // exact
+        out[static_cast<size_t>(i)] = to_unorm8(mp((byte + unorm_offset(c)) / 255.0f, c), c.rounding);
     }
     return out;
 }
 
-float unpack_rgba(const std::array<std::uint8_t, 4>& bytes) {
+float unpack_rgba(const std::array<std::uint8_t, 4>& bytes, PackContext c) {
     // The shader sees texel = byte/255 and computes dot(texel, 255/256^(i+1)).
     const float weight[4] = {255.0f / 256.0f, 255.0f / 65536.0f, 255.0f / 16777216.0f, 255.0f / 4294967296.0f};
     float sum = 0.0f;
-    for (int i = 0; i < 4; ++i) sum += (static_cast<float>(bytes[static_cast<size_t>(i)]) / 255.0f) * weight[i];
-    return sum;
+    for (int i = 0; i < 4; ++i)
+        sum += mp(static_cast<float>(bytes[static_cast<size_t>(i)]) / 255.0f, c) * mp(weight[i], c);
+    return mp(sum, c);
+}
+
+float depth_quantum(Encoding e, Precision p) {
+    const float mediump_read = 1.0f / 2048.0f;  // half of fp16's 2^-10 step just below 1
+    switch (e) {
+        // Half a step of 1/255; under mediump the depth is rounded to a half on the way in and
+        // the texel on the way out, 2^-12 each.
+        case Encoding::R8: return 0.5f / 255.0f + (p == Precision::Mediump ? mediump_read : 0.0f);
+        case Encoding::RGBA:
+        case Encoding::DepthTex: return p == Precision::Mediump ? mediump_read : 1.0f / 16777216.0f;
+    }
+    return 0.5f / 255.0f;
+}
+
+float auto_bias_constant(Encoding e, Precision p) {
+    // The stored depth's error, plus the same again for the fragment's own depth once it is
+    // rounded for the comparison (mediump), plus a floor for the rasteriser's and the
+    // interpolator's float32 noise (measured a few 1e-6 on llvmpipe; 2e-5 leaves margin).
+    const float compare = p == Precision::Mediump ? 1.0f / 2048.0f : 0.0f;
+    return depth_quantum(e, p) + compare + 2e-5f;
+}
+
+float kernel_reach_texels(Filter f) {
+    // Per axis: the largest tap offset, plus half a texel to the nearest texel centre, plus half a
+    // texel of margin. Without the margin the bias equals the worst-case depth step exactly and
+    // the comparison's own rounding decides, which shows as acne (measured on the course table).
+    switch (f) {
+        case Filter::Hard: return 1.0f;
+        case Filter::PCF2x2: return 1.5f;
+        case Filter::PCF4x4: return 2.5f;
+    }
+    return 1.0f;
 }
 
 }  // namespace penumbra::shadow

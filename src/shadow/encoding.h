@@ -33,17 +33,52 @@ std::string_view to_string(Filter f);
 // 24-bit but the comparison still happens in the fragment shader's float: same bound as rgba.
 float default_bias(Encoding e);
 
-// Largest depth that packs without wrapping: 1 - 2^-24 (fract(1.0 * 256^i) would be 0).
+// Largest depth that packs without wrapping: 1 - 2^-24 (fract(1.0 * 256^i) would be 0), and
+// under mediump the largest half below 1, 1 - 2^-11.
 inline constexpr float kMaxPackedDepth = 0.99999994f;
+inline constexpr float kMaxPackedDepthMediump = 0.99951171875f;
+
+// The float precision the depth path is computed in. Highp: float32 (or whatever the context's
+// highp is). Mediump: emulated half precision (see round_mediump), so a desktop whose mediump is
+// float32 (llvmpipe, SwiftShader) shows what a phone's fp16 mediump does.
+enum class Precision { Highp, Mediump };
+std::string_view to_string(Precision p);
+
+// How the context turns a float colour into a unorm8 byte: GLES 2.0 asks for round(c * 255), but
+// an implementation may truncate. Probed at start-up (render/probe.h); the packing aims at the
+// middle of the byte (+0.5/255) when it truncates, so the stored byte is the intended one either way.
+enum class UnormRounding { Round, Floor };
+std::string_view to_string(UnormRounding r);
+
+struct PackContext {
+    Precision precision = Precision::Highp;
+    UnormRounding rounding = UnormRounding::Round;
+};
+
+// Half precision as the shaders emulate it (EMULATE_MEDIUMP): round to 11 significant bits,
+// ties away from zero; magnitudes below 2^-14 (fp16's smallest normal) flush to 0; clamp at 65504.
+float round_mediump(float x);
 
 // r8: what a unorm8 red channel stores for d, and what the shader reads back.
-std::uint8_t pack_r8(float depth);
-float unpack_r8(std::uint8_t byte);
+std::uint8_t pack_r8(float depth, PackContext c = {});
+float unpack_r8(std::uint8_t byte, PackContext c = {});
 
 // rgba bit-shift packing: byte i = floor(fract(d * 256^i) * 256), i = 0 most significant,
 // written as byte/255 so the unorm8 conversion keeps it exactly; unpacked as
-// dot(texel, 255 / 256^(i+1)). Exact to 2^-24 for every d in [0,1] under float32.
-std::array<std::uint8_t, 4> pack_rgba(float depth);
-float unpack_rgba(const std::array<std::uint8_t, 4>& bytes);
+// dot(texel, 255 / 256^(i+1)). Exact to 2^-24 for every d in [0,1] under float32; under
+// mediump every step is rounded as the shader's emulation rounds it.
+std::array<std::uint8_t, 4> pack_rgba(float depth, PackContext c = {});
+float unpack_rgba(const std::array<std::uint8_t, 4>& bytes, PackContext c = {});
+
+// The depth quantum of an encoding under a precision: the largest error of a stored-then-read
+// depth (r8: half a step of 1/255, plus 2^-11 under mediump; rgba: 2^-24 under highp, 2^-11 under mediump (half of fp16's
+// 2^-10 step below 1); depthtex: 2^-24 for a 24-bit depth, 2^-11 once the read is mediump).
+float depth_quantum(Encoding e, Precision p);
+
+// --bias auto: the constant part (the encoding's quantum plus the rounding of the comparison
+// itself) and the kernel's reach in texels per axis (how far from the fragment a tap's texel
+// centre can lie: the largest PCF offset, half a texel, and half a texel of margin).
+float auto_bias_constant(Encoding e, Precision p);
+float kernel_reach_texels(Filter f);
 
 }  // namespace penumbra::shadow

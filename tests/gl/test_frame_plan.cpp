@@ -68,6 +68,21 @@ TEST_F(RendererGl, ReusedMapGivesTheSameImage) {
     EXPECT_EQ(renderer->read_image(), first);
 }
 
+TEST_F(RendererGl, ASecondSceneWithAsManyMeshesIsUploadedAnew) {
+    // Both scenes have two meshes: the renderer must notice the second one is different.
+    auto course = scene::make_course_scene(4);
+    auto other = scene::make_course_scene(6);
+    render::Settings s;
+    s.width = s.height = 96;
+    s.map_size = 256;
+    renderer->render(course.scene, s);
+    renderer->render(other.scene, s);
+    const auto reused = renderer->read_image();
+    render::Renderer fresh(renderer->caps());
+    fresh.render(other.scene, s);
+    EXPECT_EQ(reused, fresh.read_image());
+}
+
 TEST_F(RendererGl, EachTechniqueRunsOnlyItsPasses) {
     auto course = scene::make_course_scene(4);
     render::Settings s;
@@ -96,11 +111,11 @@ TEST_F(RendererGl, OnlyTheVariantsInUseAreCompiled) {
     s.encoding = shadow::Encoding::R8;
     s.filter = shadow::Filter::Hard;
     renderer->render(course.scene, s);
-    // The depth pass, the textured table and the untextured teapot: three programs.
-    EXPECT_EQ(renderer->shaders().compiled(), 3u);
+    // The start-up probe, the depth pass, the textured table and the untextured teapot.
+    EXPECT_EQ(renderer->shaders().compiled(), 4u);
     s.technique = render::Technique::None;
     renderer->render(course.scene, s);
-    EXPECT_EQ(renderer->shaders().compiled(), 5u);  // + the two lit variants without SHADOW_MAP
+    EXPECT_EQ(renderer->shaders().compiled(), 6u);  // + the two lit variants without SHADOW_MAP
 }
 
 TEST_F(RendererGl, MapSizeBeyondTheContextIsClampedWithANote) {

@@ -28,6 +28,7 @@ TEST(Settings, EveryOptionRoundTrips) {
     s.filter = Filter::PCF2x2;
     s.map_size = 2048;
     s.bias = 0.0023f;
+    s.precision = penumbra::shadow::Precision::Mediump;
     s.aov = Aov::LightDepth;
     s.technique = Technique::Planar;
     s.out = "some dir/frame.png";
@@ -53,6 +54,19 @@ TEST(Settings, EachValueOfEachEnumRoundTrips) {
                     s.technique = t;
                     EXPECT_EQ(parse_all(to_pairs(s)), s) << to_args(s);
                 }
+}
+
+TEST(Settings, AutoBiasRoundTripsAndReplacesAFixedOne) {
+    Settings s;
+    ASSERT_EQ(parse_option(s, "bias", "0.01"), "");
+    ASSERT_EQ(parse_option(s, "bias", "auto"), "");
+    EXPECT_TRUE(s.bias_auto);
+    EXPECT_FALSE(s.bias.has_value());
+    EXPECT_EQ(parse_all(to_pairs(s)), s);
+    EXPECT_FLOAT_EQ(s.effective_bias(), penumbra::shadow::auto_bias_constant(s.encoding, s.precision));
+    ASSERT_EQ(parse_option(s, "bias", "0.002"), "");
+    EXPECT_FALSE(s.bias_auto);
+    EXPECT_FLOAT_EQ(s.effective_bias(), 0.002f);
 }
 
 TEST(Settings, DefaultsAreTheSheets) {
@@ -83,6 +97,8 @@ TEST(Settings, BadValuesAreNamedAndLeaveTheSettingsAlone) {
         {"map-size", "1.5", "--map-size: not a whole number: '1.5'"},
         {"time", "nan", "--time: not a number: 'nan'"},
         {"time", "1s", "--time: not a number: '1s'"},
+        {"precision", "lowp", "--precision: unknown value 'lowp' (highp, mediump)"},
+        {"bias", "slope", "--bias: not a number: 'slope' (or 'default', 'auto')"},
         {"bias", "2", "--bias: must lie in [0, 1] (a depth offset), got '2'"},
         {"frames", "0", "--frames: must be at least 1, got '0'"},
         {"aov", "normal", "--aov: unknown value 'normal' (color, visibility, light-depth)"},
@@ -102,7 +118,7 @@ TEST(Settings, ArgsLabelTheResult) {
     s.encoding = Encoding::R8;
     EXPECT_EQ(to_args(s),
               "--scene teapot --time 0 --size 512x512 --encoding r8 --filter hard --map-size 1024 --bias default "
-              "--aov color --technique shadowmap --frames 1");
+              "--precision highp --aov color --technique shadowmap --frames 1");
 }
 
 }  // namespace

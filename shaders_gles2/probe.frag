@@ -1,0 +1,10 @@
+#version 100
+// Start-up probe: writes a constant colour so the renderer can read back how this context turns
+// a float into a unorm8 byte (0.6/255 becomes 1 when it rounds, 0 when it truncates).
+#include "precision.glsl"
+
+uniform vec4 u_value;
+
+void main() {
+    gl_FragColor = u_value;
+}
