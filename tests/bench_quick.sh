@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# `penumbra bench --quick` end to end: it must finish and write a well-formed CSV (every row, every
+# number parses, percentages in range, each run labelled with its settings), a Markdown table, an
+# SVG that parses as XML and a PNG of the plot; never a timing check. Then `penumbra export` and
+# `penumbra truth --score` on the exported file, and their bad-input errors.
+# usage: bench_quick.sh PENUMBRA WORKDIR SOURCE_DIR
+set -uo pipefail
+penumbra=$1 work=$2 src=$3
+rm -rf "$work" && mkdir -p "$work" || exit 1
+pass=0 fail=0
+ok() { pass=$((pass + 1)); }
+bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
+
+start=$(date +%s)
+if "$penumbra" bench --quick --out-dir "$work/bench" \
+     --scenes "teapot@0.6,$src/tests/data/bench_easy.gltf" >"$work/bench.out" 2>"$work/bench.err"; then ok
+else bad "bench --quick exited $?"; cat "$work/bench.err"; fi
+echo "bench --quick took $(( $(date +%s) - start )) s"
+grep -q '^\[ *1/' "$work/bench.err" && ok || bad "no progress lines on stderr"
+
+python3 - "$work/bench" <<'PY' && ok || bad "bench outputs are not well-formed"
+import csv, struct, sys, xml.etree.ElementTree as ET, zlib
+d = sys.argv[1]
+rows = list(csv.DictReader(open(d + "/results.csv")))
+# 2 scenes x (3 encodings x 3 filters x 2 maps + none + planar)
+assert len(rows) == 2 * (3 * 3 * 2 + 2), len(rows)
+for r in rows:
+    for k in ("false_shadow_pct", "false_lit_pct", "error_pct", "mae_pct", "truth_shadowed_pct"):
+        v = float(r[k]); assert 0.0 <= v <= 100.0, (k, v)
+    assert abs(float(r["false_shadow_pct"]) + float(r["false_lit_pct"]) - float(r["error_pct"])) < 1e-3
+    assert int(r["valid_pixels"]) > 1000
+    for k in ("ms_moving", "ms_still", "ms_shadow_pass", "ms_camera_pass"):
+        assert float(r[k]) >= 0.0
+    assert r["settings"].startswith("--scene ") and "--technique " in r["settings"]
+    if r["technique"] not in ("none", "planar"):
+        assert int(r["shadow_map_bytes"]) >= int(r["map_size"]) ** 2, r
+        assert int(r["redrawn_moving"]) == int(r["frames"]) and int(r["redrawn_still"]) == 0, r
+md = open(d + "/results.md").read()
+assert md.startswith("# penumbra bench") and "| technique |" in md and "## The course scene, map 1024" in md
+svg = ET.parse(d + "/tradeoff.svg").getroot()
+assert svg.tag.endswith("svg") and len(svg.findall(".//{http://www.w3.org/2000/svg}polyline")) > 0
+png = open(d + "/tradeoff.png", "rb").read()
+assert png[:8] == b"\x89PNG\r\n\x1a\n"
+w, h = struct.unpack(">II", png[16:24]); assert w >= 400 and h >= 300, (w, h)
+print("outputs well-formed:", len(rows), "rows")
+PY
+
+# export -> render and truth on the exported file -> score.
+if "$penumbra" export --scene teapot --time 0.6 --out "$work/course.gltf" >/dev/null; then ok; else bad "export failed"; fi
+grep -q '"KHR_lights_punctual"' "$work/course.gltf" && grep -q 'data:image/png;base64' "$work/course.gltf" && ok || bad "export lacks the light or the marble"
+if "$penumbra" render --scene "$work/course.gltf" --size 96x96 --aov visibility --out "$work/vis.png" 2>/dev/null &&
+   out=$("$penumbra" truth --scene "$work/course.gltf" --size 96x96 --out-dir "$work/truth" --score "$work/vis.png") &&
+   grep -q "score of .*error [0-9.]* %" <<<"$out" && [ -s "$work/truth/errors.png" ] && [ -s "$work/truth/mask.png" ]; then ok
+else bad "truth --score on the exported scene: $out"; fi
+
+# Bad input: one line, exit 2, no file.
+expect_error() {
+  local what=$1; shift
+  local err rc; err=$("$penumbra" "$@" 2>&1 >/dev/null); rc=$?
+  if [ "$rc" -eq 2 ] && [ "$(grep -c . <<<"$err")" -eq 1 ]; then ok; else bad "$what: rc=$rc: $err"; fi
+}
+expect_error "export to .png" export --out "$work/x.png"
+expect_error "export, missing folder" export --out "$work/nope/x.gltf"
+expect_error "export, missing scene" export --scene "$work/none.gltf" --out "$work/x.gltf"
+expect_error "bench, unknown encoding" bench --quick --encodings r16 --out-dir "$work/b2"
+expect_error "bench, bad scene time" bench --quick --scenes teapot@soon --out-dir "$work/b2"
+expect_error "truth, bad size" truth --size 0x5 --out-dir "$work/t2"
+[ ! -e "$work/x.gltf" ] && [ ! -e "$work/x.png" ] && ok || bad "a failed export left a file"
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

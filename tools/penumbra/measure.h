@@ -1,0 +1,50 @@
+// What the measuring subcommands run (see measure_commands.h for the command line).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace penumbra::tools {
+
+// A problem that ends a command with one line on stderr and this exit status.
+struct CommandError {
+    std::string message;
+    int code = 1;
+};
+
+struct ExportOptions {
+    std::string scene = "teapot";
+    double time = 0.0;
+    std::string size = "512x512";  // written as the camera's aspect ratio when the scene leaves it to the viewport
+    std::string out;
+};
+void run_export(const ExportOptions& o);
+
+struct TruthCommandOptions {
+    std::string scene = "teapot";
+    double time = 0.0;
+    std::string size = "512x512";
+    std::string out_dir = "out/truth";
+    int soft_samples = 0;
+    float light_radius = -1.0f;  // < 0: the bench's default for the scene
+    std::string score;           // a visibility PNG (red channel) to compare with the truth
+};
+void run_truth(const TruthCommandOptions& o);
+
+struct BenchOptions {
+    bool quick = false;
+    std::string out_dir = "docs/bench";
+    std::string size;                 // default 512x512 (quick 128x128)
+    int frames = 0;                   // default 20 (quick 5)
+    int rounds = 0;                   // interleaved timing rounds, default 3 (quick 1)
+    std::vector<std::string> scenes;  // "teapot@T" or FILE.gltf[@T]; default: the course at four t and three glTF files
+    std::vector<int> maps;            // default 256 512 1024 2048 4096 (quick 256 1024)
+    std::vector<std::string> encodings, filters;  // default: all
+    std::vector<std::string> set;     // extra Settings options as name=value (e.g. bias=auto)
+    int soft_samples = -1;            // default 64 (quick 16)
+    bool references = true;           // also the techniques none and planar
+    std::string from_csv;             // rebuild the table and plots from these rows instead of measuring
+};
+void run_bench(const BenchOptions& o);
+
+}  // namespace penumbra::tools

@@ -1,0 +1,86 @@
+#include "measure_commands.h"
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "measure.h"
+
+namespace penumbra::tools {
+
+struct MeasureCommands {
+    CLI::App* export_cmd = nullptr;
+    CLI::App* truth_cmd = nullptr;
+    CLI::App* bench_cmd = nullptr;
+    ExportOptions export_options;
+    TruthCommandOptions truth_options;
+    BenchOptions bench_options;
+};
+
+std::shared_ptr<MeasureCommands> add_measure_commands(CLI::App& app) {
+    auto m = std::make_shared<MeasureCommands>();
+
+    m->export_cmd = app.add_subcommand("export", "write the scene at time t as one glTF 2.0 file (buffers and textures embedded)");
+    auto& e = m->export_options;
+    m->export_cmd->add_option("--scene", e.scene, "teapot (the course scene) or FILE.gltf / FILE.glb");
+    m->export_cmd->add_option("--time", e.time, "seconds (default 0)");
+    m->export_cmd->add_option("--size", e.size, "WxH whose aspect the camera gets when the scene leaves it to the viewport (default 512x512)");
+    m->export_cmd->add_option("--out", e.out, "FILE.gltf")->required();
+
+#ifdef PENUMBRA_HAVE_TRUTH
+    m->truth_cmd = app.add_subcommand("truth", "ray-trace the ground truth of one frame (Embree): visibility, validity mask, classes");
+    auto& t = m->truth_options;
+    m->truth_cmd->add_option("--scene", t.scene, "teapot or FILE.gltf / FILE.glb");
+    m->truth_cmd->add_option("--time", t.time, "seconds (default 0)");
+    m->truth_cmd->add_option("--size", t.size, "WxH, as the renderer's --size (default 512x512)");
+    m->truth_cmd->add_option("--out-dir", t.out_dir, "folder for the PNGs (default out/truth)");
+    m->truth_cmd->add_option("--soft-samples", t.soft_samples, "also an area light, this many samples per pixel (default 0: none)");
+    m->truth_cmd->add_option("--light-radius", t.light_radius,
+                             "area light radius: world units (point, spot) or radians (directional); default as bench");
+    m->truth_cmd->add_option("--score", t.score, "a visibility PNG of the same frame and size to score against the truth");
+
+    m->bench_cmd = app.add_subcommand("bench", "the sweep: error against the ray-traced truth, ms/frame and memory of every technique");
+    auto& b = m->bench_options;
+    m->bench_cmd->add_flag("--quick", b.quick, "small and fast (CI): 128x128, 5 frames, maps 256 and 1024, two scenes");
+    m->bench_cmd->add_option("--out-dir", b.out_dir, "folder for results.csv, results.md, tradeoff.svg/.png (default docs/bench)");
+    m->bench_cmd->add_option("--size", b.size, "WxH of the frames (default 512x512)");
+    m->bench_cmd->add_option("--frames", b.frames, "timed frames per run, each finished with glFinish (default 20)");
+    m->bench_cmd->add_option("--rounds", b.rounds, "interleaved timing rounds; the median of their medians is reported (default 3)");
+    m->bench_cmd->add_option("--scenes", b.scenes, "teapot@T or FILE.gltf, comma separated")->delimiter(',');
+    m->bench_cmd->add_option("--maps", b.maps, "shadow map sizes, comma separated (default 256,512,1024,2048,4096)")->delimiter(',');
+    m->bench_cmd->add_option("--encodings", b.encodings, "comma separated (default r8,rgba,depthtex)")->delimiter(',');
+    m->bench_cmd->add_option("--filters", b.filters, "comma separated (default hard,pcf2x2,pcf4x4)")->delimiter(',');
+    m->bench_cmd->add_option("--set", b.set, "any render option as name=value for every run, e.g. --set bias=auto");
+    m->bench_cmd->add_option("--from-csv", b.from_csv,
+                             "measure nothing: rebuild results.md and the plots from this CSV's rows (ours, or others' "
+                             "with the same columns, e.g. three.js runs scored by penumbra truth --score)");
+    m->bench_cmd->add_option("--soft-samples", b.soft_samples, "area-light samples per pixel for the soft truth (default 64, 0: none)");
+#endif
+    return m;
+}
+
+int run_measure_commands(MeasureCommands& m) {
+    try {
+        if (m.export_cmd && *m.export_cmd) {
+            run_export(m.export_options);
+            return 0;
+        }
+        if (m.truth_cmd && *m.truth_cmd) {
+            run_truth(m.truth_options);
+            return 0;
+        }
+        if (m.bench_cmd && *m.bench_cmd) {
+            run_bench(m.bench_options);
+            return 0;
+        }
+    } catch (const CommandError& e) {
+        std::fprintf(stderr, "penumbra: error: %s\n", e.message.c_str());
+        return e.code;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "penumbra: error: %s\n", e.what());
+        return 1;
+    }
+    return -1;
+}
+
+}  // namespace penumbra::tools

@@ -1,0 +1,574 @@
+#include "plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <sstream>
+
+#include <stb_easy_font.h>
+
+namespace penumbra::tools {
+namespace {
+
+struct Vec {
+    double x = 0.0, y = 0.0;
+};
+
+struct Rgb {
+    std::uint8_t r = 0, g = 0, b = 0;
+};
+
+Rgb parse_color(const std::string& hex) {
+    unsigned v = 0;
+    if (hex.size() == 7 && hex[0] == '#') std::sscanf(hex.c_str() + 1, "%6x", &v);
+    return {static_cast<std::uint8_t>(v >> 16), static_cast<std::uint8_t>((v >> 8) & 0xFF),
+            static_cast<std::uint8_t>(v & 0xFF)};
+}
+
+enum class Anchor { Start, Middle, End };
+
+// One thing to draw, in plot units (the SVG's user space; the PNG scales it).
+struct Item {
+    enum Kind { Polyline, Polygon, Circle, Text } kind = Polyline;
+    std::vector<Vec> pts;   // Polyline, Polygon; Circle: the centre; Text: the baseline start
+    double radius = 0.0;    // Circle
+    std::string stroke;     // "" none
+    std::string fill;       // "" none
+    double width = 1.0;     // stroke width
+    bool dashed = false;
+    std::string text;       // Text
+    double size = 12.0;     // Text: font size
+    Anchor anchor = Anchor::Start;
+    bool bold = false;
+    std::string tooltip;
+};
+
+// The layout, shared by both outputs.
+class Layout {
+public:
+    Layout(const Plot& p, int w, int h) : p_(p), w_(w), h_(h) {}
+
+    std::vector<Item> build() {
+        left_ = 78.0;
+        right_ = static_cast<double>(w_) - 250.0;
+        top_ = 84.0;
+        bottom_ = static_cast<double>(h_) - 58.0;
+        ranges();
+        items_.push_back(rect(0, 0, w_, h_, "#ffffff", ""));
+        text(left_, 26, p_.title, 17, "#111111", Anchor::Start, true);
+        text(left_, 46, p_.subtitle, 12, "#444444", Anchor::Start);
+        grid_and_axes();
+        front_line();
+        markers();
+        legend();
+        return items_;
+    }
+
+private:
+    void ranges() {
+        xmin_ = ymin_ = 1e300;
+        xmax_ = ymax_ = -1e300;
+        for (const auto& pt : p_.points) {
+            if (!std::isfinite(pt.x) || !std::isfinite(pt.y) || (p_.log_x && pt.x <= 0.0)) continue;
+            xmin_ = std::min(xmin_, pt.x);
+            xmax_ = std::max(xmax_, pt.x);
+            ymax_ = std::max(ymax_, pt.y);
+        }
+        if (xmin_ > xmax_) xmin_ = 1.0, xmax_ = 10.0, ymax_ = 1.0;
+        if (p_.log_x) {
+            xmin_ = std::pow(10.0, std::floor(std::log10(xmin_ / 1.15) * 10.0) / 10.0);
+            xmax_ = std::pow(10.0, std::ceil(std::log10(xmax_ * 1.15) * 10.0) / 10.0);
+        } else {
+            const double pad = 0.05 * std::max(xmax_ - xmin_, 1e-9);
+            xmin_ = std::max(0.0, xmin_ - pad);
+            xmax_ += pad;
+        }
+        ymin_ = 0.0;
+        ystep_ = nice_step(std::max(ymax_, 1e-9) / 6.0);
+        ymax_ = std::ceil(std::max(ymax_ * 1.06, 1e-9) / ystep_) * ystep_;
+    }
+
+    static double nice_step(double raw) {
+        const double e = std::pow(10.0, std::floor(std::log10(raw)));
+        const double f = raw / e;
+        return (f <= 1.0 ? 1.0 : f <= 2.0 ? 2.0 : f <= 2.5 ? 2.5 : f <= 5.0 ? 5.0 : 10.0) * e;
+    }
+
+    double px(double x) const {
+        const double t = p_.log_x ? (std::log10(x) - std::log10(xmin_)) / (std::log10(xmax_) - std::log10(xmin_))
+                                  : (x - xmin_) / (xmax_ - xmin_);
+        return left_ + t * (right_ - left_);
+    }
+    double py(double y) const { return bottom_ - (y - ymin_) / (ymax_ - ymin_) * (bottom_ - top_); }
+
+    static std::string fmt(double v) {
+        char b[32];
+        if (v == 0.0) return "0";
+        if (std::fabs(v) >= 100.0 || std::fabs(v - std::round(v)) < 1e-9) std::snprintf(b, sizeof b, "%.0f", v);
+        else if (std::fabs(v) >= 1.0) std::snprintf(b, sizeof b, "%.1f", v);
+        else std::snprintf(b, sizeof b, "%.2g", v);
+        return b;
+    }
+
+    static Item rect(double x, double y, double w, double h, const std::string& fill, const std::string& stroke) {
+        Item it;
+        it.kind = Item::Polygon;
+        it.pts = {{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}};
+        it.fill = fill;
+        it.stroke = stroke;
+        return it;
+    }
+
+    void line(double x0, double y0, double x1, double y1, const std::string& color, double width, bool dashed = false) {
+        Item it;
+        it.kind = Item::Polyline;
+        it.pts = {{x0, y0}, {x1, y1}};
+        it.stroke = color;
+        it.width = width;
+        it.dashed = dashed;
+        items_.push_back(it);
+    }
+
+    void text(double x, double y, const std::string& s, double size, const std::string& color,
+              Anchor a = Anchor::Start, bool bold = false) {
+        if (s.empty()) return;
+        Item it;
+        it.kind = Item::Text;
+        it.pts = {{x, y}};
+        it.text = s;
+        it.size = size;
+        it.fill = color;
+        it.anchor = a;
+        it.bold = bold;
+        items_.push_back(it);
+    }
+
+    void grid_and_axes() {
+        const std::string grid = "#e3e3e3", axis = "#333333";
+        for (double y = ymin_; y <= ymax_ + 1e-9 * ystep_; y += ystep_) {
+            line(left_, py(y), right_, py(y), grid, 1.0);
+            text(left_ - 8, py(y) + 4, fmt(y), 11, axis, Anchor::End);
+        }
+        std::vector<double> xt;
+        if (p_.log_x) {
+            for (double d = std::pow(10.0, std::floor(std::log10(xmin_))); d <= xmax_; d *= 10.0)
+                for (double m : {1.0, 2.0, 5.0})
+                    if (d * m >= xmin_ * 0.999 && d * m <= xmax_ * 1.001) xt.push_back(d * m);
+            // A narrow range (under a decade) gets every integer multiple as well.
+            if (xt.size() < 4) {
+                xt.clear();
+                for (double d = std::pow(10.0, std::floor(std::log10(xmin_))); d <= xmax_; d *= 10.0)
+                    for (int m = 1; m <= 9; ++m)
+                        if (d * m >= xmin_ * 0.999 && d * m <= xmax_ * 1.001) xt.push_back(d * m);
+            }
+        } else {
+            const double step = nice_step((xmax_ - xmin_) / 6.0);
+            for (double x = std::ceil(xmin_ / step) * step; x <= xmax_; x += step) xt.push_back(x);
+        }
+        for (double x : xt) {
+            line(px(x), top_, px(x), bottom_, grid, 1.0);
+            text(px(x), bottom_ + 17, fmt(x), 11, axis, Anchor::Middle);
+        }
+        line(left_, bottom_, right_, bottom_, axis, 1.2);
+        line(left_, top_, left_, bottom_, axis, 1.2);
+        text(0.5 * (left_ + right_), bottom_ + 40, p_.xlabel, 13, axis, Anchor::Middle);
+        text(left_ - 60, top_ - 14, p_.ylabel, 13, axis, Anchor::Start);
+    }
+
+    void front_line() {
+        if (p_.front.empty()) return;
+        Item it;
+        it.kind = Item::Polyline;
+        it.stroke = "#c0392b";
+        it.width = 2.0;
+        it.dashed = true;
+        for (size_t k = 0; k < p_.front.size(); ++k) {
+            const PlotPoint& a = p_.points[p_.front[k]];
+            it.pts.push_back({px(a.x), py(a.y)});
+            if (k + 1 < p_.front.size()) {
+                const PlotPoint& b = p_.points[p_.front[k + 1]];
+                it.pts.push_back({px(b.x), py(a.y)});  // a step: nothing between is better
+            }
+        }
+        // Out to the right edge: everything slower than the last point is dominated by it.
+        it.pts.push_back({right_, it.pts.back().y});
+        items_.push_back(it);
+    }
+
+    void marker(double cx, double cy, Marker m, double r, const std::string& fill, const std::string& stroke,
+                double width, const std::string& tooltip) {
+        Item it;
+        it.fill = fill;
+        it.stroke = stroke;
+        it.width = width;
+        it.tooltip = tooltip;
+        switch (m) {
+            case Marker::Circle:
+                it.kind = Item::Circle;
+                it.pts = {{cx, cy}};
+                it.radius = r;
+                break;
+            case Marker::Square:
+                it.kind = Item::Polygon;
+                r *= 0.9;
+                it.pts = {{cx - r, cy - r}, {cx + r, cy - r}, {cx + r, cy + r}, {cx - r, cy + r}};
+                break;
+            case Marker::Triangle:
+                it.kind = Item::Polygon;
+                r *= 1.2;
+                it.pts = {{cx, cy - r}, {cx + 0.866 * r, cy + 0.5 * r}, {cx - 0.866 * r, cy + 0.5 * r}};
+                break;
+            case Marker::Diamond:
+                it.kind = Item::Polygon;
+                r *= 1.2;
+                it.pts = {{cx, cy - r}, {cx + r, cy}, {cx, cy + r}, {cx - r, cy}};
+                break;
+            case Marker::Cross: {
+                const double a = r * 0.35;
+                it.kind = Item::Polygon;
+                it.pts = {{cx - a, cy - r}, {cx + a, cy - r}, {cx + a, cy - a}, {cx + r, cy - a}, {cx + r, cy + a},
+                          {cx + a, cy + a}, {cx + a, cy + r}, {cx - a, cy + r}, {cx - a, cy + a}, {cx - r, cy + a},
+                          {cx - r, cy - a}, {cx - a, cy - a}};
+                break;
+            }
+        }
+        items_.push_back(it);
+    }
+
+    std::string color(int i) const {
+        return i >= 0 && i < static_cast<int>(p_.colors.size()) ? p_.colors[static_cast<size_t>(i)] : "#555555";
+    }
+
+    void markers() {
+        std::vector<bool> on_front(p_.points.size(), false);
+        for (size_t i : p_.front) on_front[i] = true;
+        for (int pass = 0; pass < 2; ++pass)  // the front's points on top
+            for (size_t i = 0; i < p_.points.size(); ++i) {
+                const PlotPoint& pt = p_.points[i];
+                if (on_front[i] != (pass == 1)) continue;
+                if (!std::isfinite(pt.x) || !std::isfinite(pt.y) || (p_.log_x && pt.x <= 0.0)) continue;
+                const double cx = px(pt.x), cy = py(pt.y);
+                if (on_front[i]) {
+                    Item ring;
+                    ring.kind = Item::Circle;
+                    ring.pts = {{cx, cy}};
+                    ring.radius = pt.radius + 4.5;
+                    ring.stroke = "#c0392b";
+                    ring.width = 1.6;
+                    items_.push_back(ring);
+                }
+                marker(cx, cy, pt.marker, pt.radius, color(pt.color), "#222222", 0.7, pt.tooltip);
+            }
+        // Labels on the front, each at the first of eight places around its point that overlaps
+        // no label already placed and no marker of the front (greedy, in order of x).
+        struct Box {
+            double x0, y0, x1, y1;
+            bool hits(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+        };
+        std::vector<Box> taken;
+        for (size_t i : p_.front) {
+            const PlotPoint& pt = p_.points[i];
+            const double r = pt.radius + 5.0;
+            taken.push_back({px(pt.x) - r, py(pt.y) - r, px(pt.x) + r, py(pt.y) + r});
+        }
+        constexpr double kSize = 10.5, kCharW = 6.3, kHeight = 11.0;
+        for (size_t i : p_.front) {
+            const PlotPoint& pt = p_.points[i];
+            const double w = kCharW * static_cast<double>(pt.label.size()), r = pt.radius + 6.0;
+            const double cx = px(pt.x), cy = py(pt.y);
+            // Baseline positions: right above, right below, left above, left below, then farther out.
+            const double places[][2] = {{cx + r, cy - r}, {cx + r, cy + r + kHeight}, {cx - r - w, cy - r},
+                                        {cx - r - w, cy + r + kHeight}, {cx - 0.5 * w, cy - r - 6.0},
+                                        {cx - 0.5 * w, cy + r + kHeight + 6.0}, {cx + r, cy - r - 14.0},
+                                        {cx + r, cy + r + kHeight + 14.0}};
+            Box chosen{places[0][0], places[0][1] - kHeight, places[0][0] + w, places[0][1]};
+            for (const auto& pl : places) {
+                const Box b{pl[0], pl[1] - kHeight, pl[0] + w, pl[1] + 2.0};
+                if (b.x0 < left_ || b.x1 > right_ + 40.0 || b.y0 < top_ || b.y1 > bottom_ - 2.0) continue;
+                if (std::none_of(taken.begin(), taken.end(), [&](const Box& t) { return t.hits(b); })) {
+                    chosen = b;
+                    break;
+                }
+            }
+            taken.push_back(chosen);
+            text(chosen.x0, chosen.y1 - 2.0, pt.label, kSize, "#7b241c");
+        }
+    }
+
+    void legend() {
+        double x = right_ + 22, y = top_ + 4;
+        text(x, y, "encoding (colour)", 12, "#111111", Anchor::Start, true);
+        y += 18;
+        for (const auto& [label, c] : p_.color_legend) {
+            marker(x + 6, y - 4, Marker::Circle, 5, color(c), "#222222", 0.7, "");
+            text(x + 18, y, label, 11.5, "#222222");
+            y += 17;
+        }
+        y += 8;
+        text(x, y, "filter (shape)", 12, "#111111", Anchor::Start, true);
+        y += 18;
+        for (const auto& [label, m] : p_.marker_legend) {
+            marker(x + 6, y - 4, m, 5, "#bbbbbb", "#222222", 0.7, "");
+            text(x + 18, y, label, 11.5, "#222222");
+            y += 17;
+        }
+        y += 8;
+        line(x, y - 4, x + 14, y - 4, "#c0392b", 2.0, true);
+        text(x + 18, y, "Pareto front", 11.5, "#222222");
+        y += 22;
+        for (const auto& n : p_.notes) {
+            text(x, y, n, 10.5, "#555555");
+            y += 15;
+        }
+    }
+
+    const Plot& p_;
+    int w_, h_;
+    double left_ = 0, right_ = 0, top_ = 0, bottom_ = 0;
+    double xmin_ = 0, xmax_ = 1, ymin_ = 0, ymax_ = 1, ystep_ = 1;
+    std::vector<Item> items_;
+};
+
+std::string escape(const std::string& s) {
+    std::string o;
+    for (char c : s) {
+        switch (c) {
+            case '&': o += "&amp;"; break;
+            case '<': o += "&lt;"; break;
+            case '>': o += "&gt;"; break;
+            case '"': o += "&quot;"; break;
+            default: o += c;
+        }
+    }
+    return o;
+}
+
+std::string num(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.2f", v);
+    std::string s = b;
+    while (!s.empty() && s.back() == '0') s.pop_back();
+    if (!s.empty() && s.back() == '.') s.pop_back();
+    return s;
+}
+
+// ---- rasteriser ------------------------------------------------------------------------------
+
+class Canvas {
+public:
+    Canvas(int w, int h, double scale) : w_(w), h_(h), s_(scale), px_(static_cast<size_t>(w) * static_cast<size_t>(h)) {}
+
+    void draw(const Item& it) {
+        switch (it.kind) {
+            case Item::Polygon:
+                if (!it.fill.empty()) fill_polygon(scaled(it.pts), parse_color(it.fill));
+                if (!it.stroke.empty()) {
+                    auto closed = it.pts;
+                    closed.push_back(it.pts.front());
+                    stroke(closed, parse_color(it.stroke), it.width, false);
+                }
+                break;
+            case Item::Polyline: stroke(it.pts, parse_color(it.stroke), it.width, it.dashed); break;
+            case Item::Circle: circle(it); break;
+            case Item::Text: text(it); break;
+        }
+    }
+
+    Pixels downsample(int factor) const {
+        Pixels out;
+        out.width = w_ / factor;
+        out.height = h_ / factor;
+        out.channels = 3;
+        out.data.resize(static_cast<size_t>(out.width) * static_cast<size_t>(out.height) * 3u);
+        const int n = factor * factor;
+        for (int y = 0; y < out.height; ++y)
+            for (int x = 0; x < out.width; ++x) {
+                int r = 0, g = 0, b = 0;
+                for (int j = 0; j < factor; ++j)
+                    for (int i = 0; i < factor; ++i) {
+                        const Rgb& c = px_[static_cast<size_t>(y * factor + j) * static_cast<size_t>(w_) +
+                                           static_cast<size_t>(x * factor + i)];
+                        r += c.r;
+                        g += c.g;
+                        b += c.b;
+                    }
+                std::uint8_t* o = &out.data[(static_cast<size_t>(y) * static_cast<size_t>(out.width) + static_cast<size_t>(x)) * 3u];
+                o[0] = static_cast<std::uint8_t>((r + n / 2) / n);
+                o[1] = static_cast<std::uint8_t>((g + n / 2) / n);
+                o[2] = static_cast<std::uint8_t>((b + n / 2) / n);
+            }
+        return out;
+    }
+
+private:
+    std::vector<Vec> scaled(const std::vector<Vec>& pts) const {
+        std::vector<Vec> out;
+        for (const auto& p : pts) out.push_back({p.x * s_, p.y * s_});
+        return out;
+    }
+
+    void set(int x, int y, Rgb c) {
+        if (x < 0 || y < 0 || x >= w_ || y >= h_) return;
+        px_[static_cast<size_t>(y) * static_cast<size_t>(w_) + static_cast<size_t>(x)] = c;
+    }
+
+    // Even-odd scanline fill at pixel centres (any simple polygon).
+    void fill_polygon(const std::vector<Vec>& p, Rgb c) {
+        if (p.size() < 3) return;
+        double ymin = 1e300, ymax = -1e300;
+        for (const auto& v : p) {
+            ymin = std::min(ymin, v.y);
+            ymax = std::max(ymax, v.y);
+        }
+        const int y0 = std::max(0, static_cast<int>(std::floor(ymin))), y1 = std::min(h_ - 1, static_cast<int>(std::ceil(ymax)));
+        std::vector<double> xs;
+        for (int y = y0; y <= y1; ++y) {
+            const double sy = y + 0.5;
+            xs.clear();
+            for (size_t i = 0; i < p.size(); ++i) {
+                const Vec a = p[i], b = p[(i + 1) % p.size()];
+                if ((a.y <= sy && b.y > sy) || (b.y <= sy && a.y > sy)) xs.push_back(a.x + (sy - a.y) / (b.y - a.y) * (b.x - a.x));
+            }
+            std::sort(xs.begin(), xs.end());
+            for (size_t k = 0; k + 1 < xs.size(); k += 2) {
+                const int xa = std::max(0, static_cast<int>(std::ceil(xs[k] - 0.5)));
+                const int xb = std::min(w_ - 1, static_cast<int>(std::floor(xs[k + 1] - 0.5)));
+                for (int x = xa; x <= xb; ++x) set(x, y, c);
+            }
+        }
+    }
+
+    void segment(Vec a, Vec b, Rgb c, double width) {
+        const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
+        if (len < 1e-9) return;
+        const double hw = 0.5 * std::max(width * s_, 1.0);
+        const double nx = -dy / len * hw, ny = dx / len * hw;
+        fill_polygon({{a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}}, c);
+    }
+
+    void stroke(const std::vector<Vec>& pts, Rgb c, double width, bool dashed) {
+        const auto p = scaled(pts);
+        const double on = 7.0 * s_, off = 5.0 * s_;
+        double phase = 0.0;
+        for (size_t i = 0; i + 1 < p.size(); ++i) {
+            if (!dashed) {
+                segment(p[i], p[i + 1], c, width);
+                continue;
+            }
+            const double len = std::hypot(p[i + 1].x - p[i].x, p[i + 1].y - p[i].y);
+            double t = 0.0;
+            while (t < len) {
+                const double cycle = std::fmod(phase, on + off);
+                const bool drawing = cycle < on;
+                const double run = std::min(len - t, drawing ? on - cycle : on + off - cycle);
+                if (drawing) {
+                    const Vec a{p[i].x + (p[i + 1].x - p[i].x) * t / len, p[i].y + (p[i + 1].y - p[i].y) * t / len};
+                    const Vec b{p[i].x + (p[i + 1].x - p[i].x) * (t + run) / len,
+                                p[i].y + (p[i + 1].y - p[i].y) * (t + run) / len};
+                    segment(a, b, c, width);
+                }
+                t += run;
+                phase += run;
+            }
+        }
+    }
+
+    void circle(const Item& it) {
+        const double cx = it.pts[0].x * s_, cy = it.pts[0].y * s_, r = it.radius * s_;
+        const double hw = it.stroke.empty() ? 0.0 : 0.5 * it.width * s_;
+        const Rgb fill = parse_color(it.fill), stroke_c = parse_color(it.stroke);
+        const int x0 = static_cast<int>(std::floor(cx - r - hw - 1)), x1 = static_cast<int>(std::ceil(cx + r + hw + 1));
+        const int y0 = static_cast<int>(std::floor(cy - r - hw - 1)), y1 = static_cast<int>(std::ceil(cy + r + hw + 1));
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const double d = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
+                if (!it.stroke.empty() && std::fabs(d - r) <= hw) set(x, y, stroke_c);
+                else if (!it.fill.empty() && d < r) set(x, y, fill);
+            }
+    }
+
+    void text(const Item& it) {
+        // stb_easy_font: glyphs about 7 units tall above the baseline, 12 per line; quads out.
+        std::vector<char> buf(it.text.begin(), it.text.end());
+        buf.push_back('\0');
+        const double k = it.size / 9.5 * s_;
+        const double width = stb_easy_font_width(buf.data()) * k;
+        double x = it.pts[0].x * s_;
+        if (it.anchor == Anchor::Middle) x -= 0.5 * width;
+        if (it.anchor == Anchor::End) x -= width;
+        const double y = it.pts[0].y * s_ - 7.0 * k;
+        static std::vector<char> quads(1 << 18);
+        const int n = stb_easy_font_print(0.0f, 0.0f, buf.data(), nullptr, quads.data(), static_cast<int>(quads.size()));
+        const Rgb c = parse_color(it.fill);
+        for (int q = 0; q < n; ++q) {
+            const auto* v = reinterpret_cast<const float*>(quads.data() + static_cast<size_t>(q) * 64u);
+            // Four vertices of 16 bytes: x, y, z, colour.
+            const double qx0 = v[0], qy0 = v[1], qx1 = v[8], qy1 = v[9];
+            const double grow = it.bold ? 0.35 : 0.0;
+            fill_polygon({{x + (qx0 - grow) * k, y + qy0 * k},
+                          {x + (qx1 + grow) * k, y + qy0 * k},
+                          {x + (qx1 + grow) * k, y + qy1 * k},
+                          {x + (qx0 - grow) * k, y + qy1 * k}},
+                         c);
+        }
+    }
+
+    int w_, h_;
+    double s_;
+    std::vector<Rgb> px_;
+};
+
+}  // namespace
+
+std::string plot_svg(const Plot& plot, int width, int height) {
+    const std::vector<Item> items = Layout(plot, width, height).build();
+    std::ostringstream o;
+    o << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
+      << width << " " << height << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n";
+    for (const Item& it : items) {
+        const std::string paint = std::string(" fill=\"") + (it.fill.empty() ? "none" : it.fill) + "\"" +
+                                  (it.stroke.empty() ? std::string() : " stroke=\"" + it.stroke + "\" stroke-width=\"" + num(it.width) + "\"") +
+                                  (it.dashed ? " stroke-dasharray=\"7 5\"" : "");
+        const std::string title = it.tooltip.empty() ? "" : "<title>" + escape(it.tooltip) + "</title>";
+        const std::string close = title.empty() ? "/>\n" : ">" + title;
+        switch (it.kind) {
+            case Item::Polyline:
+            case Item::Polygon: {
+                o << (it.kind == Item::Polygon ? "<polygon" : "<polyline") << " points=\"";
+                for (size_t i = 0; i < it.pts.size(); ++i) o << (i ? " " : "") << num(it.pts[i].x) << "," << num(it.pts[i].y);
+                o << "\"" << (it.kind == Item::Polyline ? std::string(" fill=\"none\" stroke=\"") + it.stroke +
+                                                              "\" stroke-width=\"" + num(it.width) + "\"" +
+                                                              (it.dashed ? " stroke-dasharray=\"7 5\"" : "")
+                                                        : paint)
+                  << close;
+                if (!title.empty()) o << (it.kind == Item::Polygon ? "</polygon>\n" : "</polyline>\n");
+                break;
+            }
+            case Item::Circle:
+                o << "<circle cx=\"" << num(it.pts[0].x) << "\" cy=\"" << num(it.pts[0].y) << "\" r=\"" << num(it.radius)
+                  << "\"" << paint << close;
+                if (!title.empty()) o << "</circle>\n";
+                break;
+            case Item::Text:
+                o << "<text x=\"" << num(it.pts[0].x) << "\" y=\"" << num(it.pts[0].y) << "\" font-size=\"" << num(it.size)
+                  << "\" fill=\"" << it.fill << "\""
+                  << (it.anchor == Anchor::Middle ? " text-anchor=\"middle\"" : it.anchor == Anchor::End ? " text-anchor=\"end\"" : "")
+                  << (it.bold ? " font-weight=\"bold\"" : "") << ">" << escape(it.text) << "</text>\n";
+                break;
+        }
+    }
+    o << "</svg>\n";
+    return o.str();
+}
+
+Pixels plot_png(const Plot& plot, int width, int height) {
+    constexpr int kSuper = 3;
+    const std::vector<Item> items = Layout(plot, width, height).build();
+    Canvas c(width * kSuper, height * kSuper, kSuper);
+    for (const Item& it : items) c.draw(it);
+    return c.downsample(kSuper);
+}
+
+}  // namespace penumbra::tools

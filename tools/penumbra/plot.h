@@ -1,0 +1,45 @@
+// A scatter plot of error against time with the Pareto front marked, written as SVG (text) and
+// rasterised to PNG by the same layout code (no plotting package needed): one display list of
+// lines, markers and text, emitted twice.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "png_io.h"
+
+namespace penumbra::tools {
+
+enum class Marker { Circle, Square, Triangle, Diamond, Cross };
+
+struct PlotPoint {
+    double x = 0.0;
+    double y = 0.0;
+    int color = 0;        // index into Plot::colors
+    Marker marker = Marker::Circle;
+    double radius = 4.0;  // marker size in pixels
+    std::string label;    // drawn beside the point when it is on the front
+    std::string tooltip;  // SVG <title>
+};
+
+struct Plot {
+    std::string title;
+    std::string subtitle;
+    std::string xlabel;
+    std::string ylabel;
+    bool log_x = true;
+    std::vector<PlotPoint> points;
+    std::vector<std::size_t> front;  // indices into points, by increasing x
+    std::vector<std::string> colors; // "#rrggbb"
+    std::vector<std::pair<std::string, int>> color_legend;     // label, color index
+    std::vector<std::pair<std::string, Marker>> marker_legend; // label, marker
+    std::vector<std::string> notes;  // lines under the legend
+};
+
+// The plot as an SVG document of width x height user units.
+std::string plot_svg(const Plot& plot, int width, int height);
+// The same plot rasterised (RGB), anti-aliased by 3x3 supersampling.
+Pixels plot_png(const Plot& plot, int width, int height);
+
+}  // namespace penumbra::tools
