@@ -42,6 +42,10 @@ Caps probe_caps() {
     c.depth_texture = c.has("GL_OES_depth_texture") || c.has("GL_WEBGL_depth_texture") ||
                       c.has("WEBGL_depth_texture");
     c.packed_depth_stencil = c.has("GL_OES_packed_depth_stencil");
+#ifdef __EMSCRIPTEN__
+    // WebGL 1 has DEPTH_STENCIL renderbuffers and the DEPTH_STENCIL_ATTACHMENT point in core.
+    c.packed_depth_stencil = true;
+#endif
     c.depth24 = c.has("GL_OES_depth24");
     c.element_index_uint = c.has("GL_OES_element_index_uint") || c.has("OES_element_index_uint");
 

@@ -19,7 +19,7 @@ struct Caps {
     std::set<std::string> extensions;
 
     bool depth_texture = false;         // OES_depth_texture / WEBGL_depth_texture
-    bool packed_depth_stencil = false;  // OES_packed_depth_stencil (DEPTH24_STENCIL8)
+    bool packed_depth_stencil = false;  // OES_packed_depth_stencil (DEPTH24_STENCIL8); WebGL 1: DEPTH_STENCIL
     bool depth24 = false;               // OES_depth24 renderbuffers
     bool element_index_uint = false;    // OES_element_index_uint
     bool fragment_highp = false;        // highp float in fragment shaders (optional in ES 2.0)

@@ -19,6 +19,7 @@ std::string enum_name(unsigned int value) {
         case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
         case GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS: return "GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS";
         case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
+        case 0x9242: return "CONTEXT_LOST_WEBGL";
         default: break;
     }
     char buf[32];
@@ -39,5 +40,7 @@ void check_errors(const char* where, const char* file, int line) {
     if (file) msg += " (" + std::string(file) + ":" + std::to_string(line) + ")";
     throw Error(msg);
 }
+
+unsigned int take_error() { return glGetError(); }
 
 }  // namespace penumbra::gl

@@ -23,6 +23,10 @@ std::string enum_name(unsigned int value);
 // drains every pending error.
 void check_errors(const char* where, const char* file = nullptr, int line = 0);
 
+// The oldest pending glGetError value (0: none), taken off the queue without throwing; for the
+// pages' test hook and for draining what a lost context left behind.
+unsigned int take_error();
+
 }  // namespace penumbra::gl
 
 #if defined(PENUMBRA_GL_CHECKS) || !defined(NDEBUG)

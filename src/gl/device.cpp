@@ -77,6 +77,8 @@ void Device::invalidate() {
     glStencilMask(0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    scissor_ = false;
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     program_ = 0;
     glUseProgram(0);
@@ -114,7 +116,15 @@ MeshBuffers Device::upload_mesh(const std::vector<glm::vec3>& positions, const s
 
 void Device::bind_target(const Target& t) {
     PENUMBRA_GL(glBindFramebuffer(GL_FRAMEBUFFER, t.fb ? t.fb->id() : 0u));
-    PENUMBRA_GL(glViewport(0, 0, t.width, t.height));
+    PENUMBRA_GL(glViewport(t.x, t.y, t.width, t.height));
+    if (t.clip) {
+        if (!scissor_) glEnable(GL_SCISSOR_TEST);
+        PENUMBRA_GL(glScissor(t.x, t.y, t.width, t.height));
+        scissor_ = true;
+    } else if (scissor_) {
+        glDisable(GL_SCISSOR_TEST);
+        scissor_ = false;
+    }
 }
 
 void Device::clear(const glm::vec4* color, bool depth, bool stencil) {
@@ -210,9 +220,11 @@ void Device::draw_fullscreen() {
     PENUMBRA_GL(glDrawArrays(GL_TRIANGLES, 0, 3));
 }
 
-std::vector<std::uint8_t> Device::read_rgba(int width, int height) {
+std::vector<std::uint8_t> Device::read_rgba(int width, int height) { return read_rgba(0, 0, width, height); }
+
+std::vector<std::uint8_t> Device::read_rgba(int x, int y, int width, int height) {
     std::vector<std::uint8_t> px(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4u);
-    PENUMBRA_GL(glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, px.data()));
+    PENUMBRA_GL(glReadPixels(x, y, width, height, GL_RGBA, GL_UNSIGNED_BYTE, px.data()));
     check_errors("glReadPixels", __FILE__, __LINE__);
     return px;
 }

@@ -51,6 +51,11 @@ struct Target {
     const Framebuffer* fb = nullptr;
     int width = 0;
     int height = 0;
+    // A region of a larger framebuffer (a picture-in-picture view): the viewport's lower-left
+    // corner, and with clip set, clears are kept inside the region too (scissor test).
+    int x = 0;
+    int y = 0;
+    bool clip = false;
 };
 
 class Device {
@@ -76,12 +81,15 @@ public:
 
     // Reads the bound target's pixels, RGBA8, rows bottom first (GL order).
     std::vector<std::uint8_t> read_rgba(int width, int height);
+    // The same from the region whose lower-left corner is (x, y).
+    std::vector<std::uint8_t> read_rgba(int x, int y, int width, int height);
     void finish();
     // Forget every cached state (after something outside the Device touched GL, e.g. a context restore).
     void invalidate();
 
 private:
     PipelineState state_;
+    bool scissor_ = false;  // a clipped Target is bound
     std::uint32_t program_ = 0;
     Buffer fullscreen_;
 };

@@ -72,7 +72,11 @@ Renderbuffer::Renderbuffer(RenderbufferFormat format, int width, int height, con
     switch (format) {
         case RenderbufferFormat::Depth16: internal = GL_DEPTH_COMPONENT16; break;
         case RenderbufferFormat::Depth24: internal = GL_DEPTH_COMPONENT24_OES; break;
+#ifdef __EMSCRIPTEN__
+        case RenderbufferFormat::Depth24Stencil8: internal = GL_DEPTH_STENCIL_OES; break;  // WebGL 1: DEPTH_STENCIL
+#else
         case RenderbufferFormat::Depth24Stencil8: internal = GL_DEPTH24_STENCIL8_OES; break;
+#endif
         case RenderbufferFormat::Stencil8: internal = GL_STENCIL_INDEX8; break;
     }
     GLuint id = 0;
@@ -104,6 +108,12 @@ Framebuffer::Framebuffer(const FramebufferDesc& d) {
     if (d.depth_texture)
         PENUMBRA_GL(
             glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, d.depth_texture->id(), 0));
+#ifdef __EMSCRIPTEN__
+    // WebGL 1 attaches a DEPTH_STENCIL renderbuffer at DEPTH_STENCIL_ATTACHMENT (0x821A), once.
+    if (d.depth && d.depth->format() == RenderbufferFormat::Depth24Stencil8) {
+        PENUMBRA_GL(glFramebufferRenderbuffer(GL_FRAMEBUFFER, 0x821A, GL_RENDERBUFFER, d.depth->id()));
+    } else
+#endif
     if (d.depth) {
         PENUMBRA_GL(glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, d.depth->id()));
         if (d.depth->format() == RenderbufferFormat::Depth24Stencil8)

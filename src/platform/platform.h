@@ -20,6 +20,26 @@ struct FrameInfo {
 // Return false to stop the loop.
 using FrameCallback = std::function<bool(const FrameInfo&)>;
 
+// A key press: printable keys as their US-layout ASCII character (letters upper case, digits,
+// '[', ']', '-', '=', ...), the others as the Key values below.
+struct KeyEvent {
+    int key = 0;
+    bool shift = false;
+};
+namespace keys {
+inline constexpr int Escape = 256;
+inline constexpr int Left = 257;
+inline constexpr int Right = 258;
+inline constexpr int Up = 259;
+inline constexpr int Down = 260;
+inline constexpr int Tab = 261;
+inline constexpr int F1 = 262;
+}  // namespace keys
+using KeyCallback = std::function<void(const KeyEvent&)>;
+
+enum class ContextEvent { Lost, Restored };
+using ContextCallback = std::function<void(ContextEvent)>;
+
 class Platform {
 public:
     virtual ~Platform() = default;
@@ -29,10 +49,49 @@ public:
     virtual bool has_default_framebuffer() const = 0;
     // Runs frames until the callback returns false (a browser returns at once and keeps calling).
     virtual void run(const FrameCallback& frame) = 0;
+
+    // ---- windows and canvases: input, size and the context's life (headless: none of it) ----
+    // Called for each key pressed (not for repeats).
+    virtual void on_key(KeyCallback callback) { (void)callback; }
+    // Called when the context is lost and again when it is restored (WebGL). Between the two,
+    // no frame is run; on Restored the context is current again, empty: every GL object made
+    // before the loss is gone and must be made again.
+    virtual void on_context(ContextCallback callback) { (void)callback; }
+    // Asks for a drawable of this size (a window is resized, a canvas gets new width/height);
+    // later frames report the size really obtained. False where the size cannot be set.
+    virtual bool set_size(int width, int height) {
+        (void)width;
+        (void)height;
+        return false;
+    }
+    // Sets the window's title (no-op elsewhere).
+    virtual void set_title(const std::string& title) { (void)title; }
 };
 
 // A GLES 2 context on EGL's surfaceless platform (no X server, no GPU needed), made current on
 // this thread. Returns null and sets `error` to one line naming the failing EGL call when it fails.
 std::unique_ptr<Platform> create_headless(std::string& error);
+
+// A desktop window (GLFW) with a GLES 2 context made through EGL, a depth and a stencil buffer,
+// made current on this thread; run() polls events, calls back and swaps until the callback
+// returns false or the window is closed. Native builds only (src/platform/glfw_window.cpp).
+struct WindowOptions {
+    int width = 512;
+    int height = 512;
+    std::string title = "penumbra";
+    int swap_interval = 1;  // 1: wait for vsync; 0: as fast as it goes
+};
+std::unique_ptr<Platform> create_glfw_window(const WindowOptions& options, std::string& error);
+
+// A WebGL 1 context on a canvas (Emscripten), with depth and stencil, no antialiasing, made
+// current; run() hands the frame callback to the browser's requestAnimationFrame loop and returns
+// at once (what the callback uses must outlive main). Context loss and restore are reported
+// through on_context. Browser builds only (src/platform/emscripten_canvas.cpp).
+struct CanvasOptions {
+    std::string selector = "#canvas";
+    // Keep the drawing buffer after it is shown, so a test can read back the last frame at any time.
+    bool preserve_drawing_buffer = true;
+};
+std::unique_ptr<Platform> create_web_canvas(const CanvasOptions& options, std::string& error);
 
 }  // namespace penumbra::platform

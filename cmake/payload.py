@@ -1,0 +1,69 @@
+#!/usr/bin/env python3
+"""Print what each page of the web site downloads: its wasm and JavaScript, raw and gzipped
+(gzip -9, as a static server with compression would send it), and the page's total with its
+HTML and CSS.
+
+usage: payload.py SITE_DIR [--markdown]
+A page's files are the local src=/href= references in its HTML, plus the .wasm that a referenced
+Emscripten .js loads (the .js of the same name).
+"""
+import gzip
+import pathlib
+import re
+import sys
+
+REF = re.compile(r'(?:src|href)="([^"#?:]+)"')
+
+
+def sizes(path: pathlib.Path) -> tuple[int, int]:
+    data = path.read_bytes()
+    return len(data), len(gzip.compress(data, compresslevel=9, mtime=0))
+
+
+def page_files(site: pathlib.Path, page: pathlib.Path) -> list[pathlib.Path]:
+    files = [page]
+    for ref in REF.findall(page.read_text()):
+        f = site / ref
+        if f.is_file() and f.suffix in (".js", ".css") and f not in files:
+            files.append(f)
+            wasm = f.with_suffix(".wasm")
+            if f.suffix == ".js" and wasm.is_file() and wasm not in files:
+                files.append(wasm)
+    return files
+
+
+def kib(n: int) -> str:
+    return f"{n / 1024:.1f} KiB"
+
+
+def main() -> None:
+    site = pathlib.Path(sys.argv[1])
+    markdown = "--markdown" in sys.argv[2:]
+    pages = sorted(p for p in site.glob("*.html"))
+    if not pages:
+        sys.exit(f"payload: no pages in {site}")
+    rows = []
+    for page in pages:
+        files = page_files(site, page)
+        wasm = [sizes(f) for f in files if f.suffix == ".wasm"]
+        js = [sizes(f) for f in files if f.suffix == ".js"]
+        total = [sizes(f) for f in files]
+        s = lambda xs, i: sum(x[i] for x in xs)  # noqa: E731
+        rows.append((page.name, s(wasm, 0), s(wasm, 1), s(js, 0), s(js, 1), s(total, 0), s(total, 1)))
+    if markdown:
+        print("| page | wasm raw | wasm gzip | js raw | js gzip | wasm+js raw | wasm+js gzip | page total raw | page total gzip |")
+        print("|---|---|---|---|---|---|---|---|---|")
+        for name, wr, wg, jr, jg, tr, tg in rows:
+            print(f"| {name} | {kib(wr)} | {kib(wg)} | {kib(jr)} | {kib(jg)} | {kib(wr + jr)} | {kib(wg + jg)} "
+                  f"| {kib(tr)} | {kib(tg)} |")
+        return
+    print(f"payload of each page in {site} (gzip -9); one wasm module serves every exercise page:")
+    print(f"  {'page':<14} {'wasm raw':>10} {'wasm gz':>10} {'js raw':>10} {'js gz':>10} "
+          f"{'wasm+js raw':>12} {'wasm+js gz':>11} {'all raw':>10} {'all gz':>10}")
+    for name, wr, wg, jr, jg, tr, tg in rows:
+        print(f"  {name:<14} {wr:>10} {wg:>10} {jr:>10} {jg:>10} {wr + jr:>12} {wg + jg:>11} {tr:>10} {tg:>10}")
+    print("  (bytes; 'all' adds the page's HTML and CSS)")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,221 @@
+// penumbra-desktop: the course exercises W09P1, W09P2a, W09P2b and W09P2c in a desktop window
+// (GLFW, GLES 2 through EGL), with keys for the same controls the web pages have.
+//
+//   penumbra-desktop [--exercise w09p1|w09p2a|w09p2b|w09p2c] [--size WxH] [--frames N]
+//                    [--screenshot FILE.png] [--resize WxH] [--no-vsync] [-v]
+//                    [--light on|off] [--jump on|off] [--projection persp|ortho]
+//                    [--fbo-view light|camera] [--map-view on|off] [--time T]
+//                    [--encoding r8|rgba|depthtex] [--filter hard|pcf2x2|pcf4x4]
+//                    [--bias B|default|auto] [--precision highp|mediump] [--map-size N]
+//                    [--aov color|visibility]
+//
+// --frames N stops after N frames (for unattended runs), --screenshot writes the last frame as a
+// PNG (top row first), --resize asks the window for a new size halfway through, --time fixes
+// both clocks (paused). Bad input gets one line and exit status 2; a GL failure exit status 1.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "exercises.h"
+#include "gl/check.h"
+#include "platform/platform.h"
+#include "png_io.h"
+
+using namespace penumbra;
+
+namespace {
+
+struct Args {
+    examples::Exercise exercise = examples::Exercise::W09P1;
+    int width = 512, height = 512;
+    long frames = 0;  // 0: until the window is closed
+    std::string screenshot;
+    int resize_w = 0, resize_h = 0;
+    bool vsync = true;
+    bool verbose = false;
+    std::vector<std::pair<std::string, std::string>> options;  // for CourseApp::set_option
+};
+
+[[noreturn]] void usage_error(const std::string& message) {
+    std::fprintf(stderr, "penumbra-desktop: error: %s (see penumbra-desktop --help)\n", message.c_str());
+    std::exit(2);
+}
+
+bool parse_size(const std::string& v, int& w, int& h) {
+    const auto x = v.find('x');
+    if (x == std::string::npos) return false;
+    char* end = nullptr;
+    const long a = std::strtol(v.c_str(), &end, 10);
+    if (end != v.c_str() + x) return false;
+    const long b = std::strtol(v.c_str() + x + 1, &end, 10);
+    if (*end != '\0' || a < 1 || b < 1 || a > 16384 || b > 16384) return false;
+    w = static_cast<int>(a);
+    h = static_cast<int>(b);
+    return true;
+}
+
+void print_help() {
+    std::printf(
+        "penumbra-desktop: the W09 course exercises in a window (GLFW, GLES 2 through EGL)\n\n"
+        "  --exercise E        w09p1 (default), w09p2a, w09p2b, w09p2c\n"
+        "  --size WxH          window size (default 512x512)\n"
+        "  --frames N          stop after N frames\n"
+        "  --screenshot F.png  write the last frame (with --frames)\n"
+        "  --resize WxH        resize the window halfway through --frames\n"
+        "  --no-vsync          draw as fast as possible\n"
+        "  -v, --verbose       print each frame's passes at the end\n"
+        "  --light on|off, --jump on|off, --projection persp|ortho, --fbo-view light|camera,\n"
+        "  --map-view on|off, --time T, --encoding E, --filter F, --bias B|default|auto,\n"
+        "  --precision highp|mediump, --map-size N, --aov color|visibility: as the web pages'\n"
+        "  controls and URL\n\n%s",
+        examples::CourseApp::key_help().c_str());
+}
+
+Args parse_args(int argc, char** argv) {
+    Args a;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "-h" || arg == "--help") {
+            print_help();
+            std::exit(0);
+        }
+        if (arg == "-v" || arg == "--verbose") {
+            a.verbose = true;
+            continue;
+        }
+        if (arg == "--no-vsync") {
+            a.vsync = false;
+            continue;
+        }
+        if (arg.rfind("--", 0) != 0) usage_error("unexpected argument '" + arg + "'");
+        if (i + 1 >= argc) usage_error(arg + ": needs a value");
+        const std::string name = arg.substr(2), value = argv[++i];
+        if (name == "exercise") {
+            if (!examples::parse_exercise(value, a.exercise))
+                usage_error("--exercise: unknown value '" + value + "' (w09p1, w09p2a, w09p2b, w09p2c)");
+        } else if (name == "size") {
+            if (!parse_size(value, a.width, a.height)) usage_error("--size: expected WIDTHxHEIGHT, got '" + value + "'");
+        } else if (name == "resize") {
+            if (!parse_size(value, a.resize_w, a.resize_h))
+                usage_error("--resize: expected WIDTHxHEIGHT, got '" + value + "'");
+        } else if (name == "frames") {
+            char* end = nullptr;
+            a.frames = std::strtol(value.c_str(), &end, 10);
+            if (*end != '\0' || a.frames < 1) usage_error("--frames: expected a whole number >= 1, got '" + value + "'");
+        } else if (name == "screenshot") {
+            if (value.size() < 5 || value.substr(value.size() - 4) != ".png")
+                usage_error("--screenshot " + value + ": the file name must end in .png");
+            a.screenshot = value;
+        } else {
+            a.options.emplace_back(name, value);
+        }
+    }
+    if (!a.screenshot.empty() && a.frames == 0) usage_error("--screenshot needs --frames N");
+    return a;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const Args args = parse_args(argc, argv);
+    examples::CourseApp app(args.exercise);
+    // Every option is checked before a window opens; what the context supports, after.
+    for (const auto& [name, value] : args.options)
+        if (const std::string err = app.set_option(name, value); !err.empty()) usage_error("--" + err);
+
+    std::string error;
+    platform::WindowOptions wo;
+    wo.width = args.width;
+    wo.height = args.height;
+    wo.title = "penumbra: " + std::string(examples::title(args.exercise));
+    wo.swap_interval = args.vsync ? 1 : 0;
+    auto window = platform::create_glfw_window(wo, error);
+    if (!window) {
+        std::fprintf(stderr, "penumbra-desktop: error: %s\n", error.c_str());
+        return 1;
+    }
+    int status = 0;
+    try {
+        app.create_gl();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "penumbra-desktop: error: %s\n", e.what());
+        return 1;
+    }
+    for (const auto& [name, value] : args.options)
+        if (name == "encoding")  // depthtex needs OES_depth_texture
+            if (const std::string err = app.set_option(name, value); !err.empty()) usage_error("--" + err);
+
+    std::printf("%s\n%s\n%s\n%s", window->description().c_str(), app.caps()->summary().c_str(),
+                std::string(examples::title(app.exercise())).c_str(), examples::CourseApp::key_help().c_str());
+    std::fflush(stdout);
+
+    bool quit = false;
+    window->on_key([&](const platform::KeyEvent& k) {
+        if (k.key == platform::keys::Escape) {
+            quit = true;
+            return;
+        }
+        const std::string message = app.on_key(k.key, k.shift);
+        if (!message.empty()) {
+            std::printf("%s\n", message.c_str());
+            std::fflush(stdout);
+        }
+    });
+
+    double last_t = -1.0, last_title = 0.0;
+    int last_w = 0, last_h = 0;
+    window->run([&](const platform::FrameInfo& f) {
+        if (quit) return false;
+        if (last_t >= 0.0) app.advance(f.time_s - last_t);
+        last_t = f.time_s;
+        if (f.width != last_w || f.height != last_h) {
+            if (last_w) std::printf("window resized to %dx%d\n", f.width, f.height);
+            last_w = f.width;
+            last_h = f.height;
+        }
+        try {
+            app.draw(f.width, f.height);
+        } catch (const gl::Error& e) {
+            std::fprintf(stderr, "penumbra-desktop: error: GL: %s\n", e.what());
+            status = 1;
+            return false;
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "penumbra-desktop: error: %s\n", e.what());
+            status = 1;
+            return false;
+        }
+        if (f.time_s - last_title > 0.5) {
+            last_title = f.time_s;
+            char title[256];
+            std::snprintf(title, sizeof title, "penumbra: %s | %.2f ms/frame | %s",
+                          std::string(examples::title(app.exercise())).c_str(), app.median_ms(),
+                          app.query().c_str());
+            window->set_title(title);
+        }
+        const long n = f.frame_index + 1;
+        if (args.resize_w && args.frames && n == std::max(1L, args.frames / 2))
+            window->set_size(args.resize_w, args.resize_h);
+        if (args.frames && n >= args.frames) {
+            if (!args.screenshot.empty()) {
+                const auto rgba = app.read_pixels(f.width, f.height);
+                const std::string err =
+                    tools::write_png(args.screenshot, tools::from_rgba(rgba, f.width, f.height, 3));
+                if (!err.empty()) {
+                    std::fprintf(stderr, "penumbra-desktop: error: %s\n", err.c_str());
+                    status = 1;
+                } else {
+                    std::printf("wrote %s (%dx%d)\n", args.screenshot.c_str(), f.width, f.height);
+                }
+            }
+            return false;
+        }
+        return true;
+    });
+    std::printf("%ld frames, median %.3f ms/frame (draw + wait, last %zu frames); %s\n", app.frames_drawn(),
+                app.median_ms(), static_cast<size_t>(std::min(60L, app.frames_drawn())), app.query().c_str());
+    if (args.verbose) std::printf("%s", app.last_plan().c_str());
+    return status;
+}

@@ -1,0 +1,238 @@
+// The course exercises in the browser: one WebGL 1 module for the four pages (web/*.html), which
+// pass --exercise. The page's JavaScript (web/penumbra-page.js) drives it through the exported
+// C functions below: options from the URL and the controls, the state for the readouts, and a
+// small test hook (fixed time, synchronous frames, pixel readback, glGetError).
+//
+// No emscripten header here: the platform layer owns the canvas, the loop and the context's life;
+// the exports are listed at link time (web/CMakeLists.txt).
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "exercises.h"
+#include "gl/check.h"
+#include "platform/platform.h"
+#include "shadow/encoding.h"
+
+using namespace penumbra;
+
+namespace {
+
+// Everything the browser's frames use lives here: main() returns while the page runs on.
+struct WebApp {
+    std::unique_ptr<platform::Platform> platform;
+    std::unique_ptr<examples::CourseApp> app;
+    std::string status = "starting";
+    std::string last_error;  // of the last failing call or frame
+    std::string reported;    // the last frame error printed (each distinct one is printed once)
+    double last_t = -1.0;
+    int width = 0, height = 0;
+    bool lost = false;
+    std::vector<std::uint8_t> pixels;
+    std::string text;  // the last string handed to JavaScript
+};
+WebApp* g = nullptr;
+
+std::string json_escape(const std::string& s) {
+    std::string o;
+    for (char c : s) {
+        switch (c) {
+            case '"': o += "\\\""; break;
+            case '\\': o += "\\\\"; break;
+            case '\n': o += "\\n"; break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20) {
+                    char buf[8];
+                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
+                    o += buf;
+                } else {
+                    o += c;
+                }
+        }
+    }
+    return o;
+}
+
+// Draws one frame; a failure is shown in the status line and printed once to stderr (the page
+// routes stderr to console.error).
+bool draw_frame() {
+    if (!g || !g->app || !g->app->has_gl() || g->lost || g->width <= 0) return false;
+    try {
+        g->app->draw(g->width, g->height);
+        if (!g->reported.empty()) {
+            g->reported.clear();
+            g->status = "running";
+        }
+        return true;
+    } catch (const std::exception& e) {
+        g->last_error = e.what();
+        g->status = std::string("error: ") + e.what();
+        if (g->reported != g->last_error) {
+            g->reported = g->last_error;
+            std::fprintf(stderr, "penumbra: %s\n", e.what());
+        }
+        return false;
+    }
+}
+
+bool frame(const platform::FrameInfo& f) {
+    if (g->last_t >= 0.0) g->app->advance(f.time_s - g->last_t);
+    g->last_t = f.time_s;
+    g->width = f.width;
+    g->height = f.height;
+    draw_frame();
+    return true;
+}
+
+void on_context(platform::ContextEvent e) {
+    if (e == platform::ContextEvent::Lost) {
+        g->lost = true;
+        g->app->drop_gl();
+        g->status = "WebGL context lost: waiting for the browser to restore it";
+        std::printf("penumbra: %s\n", g->status.c_str());
+        return;
+    }
+    // A restored context is empty: errors left from the loss are drained, then the renderer, its
+    // shaders, meshes, textures, the shadow map and the FBO are all made again.
+    while (gl::take_error() != 0) {
+    }
+    try {
+        g->app->create_gl();
+        g->lost = false;
+        g->status = "WebGL context restored: renderer and GL objects made again (generation " +
+                    std::to_string(g->app->gl_generation()) + ")";
+    } catch (const std::exception& ex) {
+        g->status = std::string("WebGL context restored, but making the GL objects failed: ") + ex.what();
+        std::fprintf(stderr, "penumbra: %s\n", g->status.c_str());
+    }
+    std::printf("penumbra: %s\n", g->status.c_str());
+}
+
+const char* hand(std::string s) {
+    g->text = std::move(s);
+    return g->text.c_str();
+}
+
+}  // namespace
+
+extern "C" {
+
+// Sets one option (URL or control): returns 1, or 0 with penumbra_last_error() saying why.
+int penumbra_set_option(const char* name, const char* value) {
+    if (!g || !g->app) return 0;
+    const std::string err = g->app->set_option(name, value);
+    if (!err.empty()) {
+        g->last_error = err;
+        return 0;
+    }
+    return 1;
+}
+
+const char* penumbra_last_error() { return hand(g ? g->last_error : ""); }
+const char* penumbra_query() { return hand(g && g->app ? g->app->query() : ""); }
+
+// Everything the page shows, as JSON.
+const char* penumbra_state() {
+    if (!g || !g->app) return hand("{}");
+    const auto& a = *g->app;
+    const auto& s = a.settings();
+    std::string j = "{";
+    j += "\"exercise\":\"" + std::string(examples::to_string(a.exercise())) + "\"";
+    j += ",\"title\":\"" + json_escape(std::string(examples::title(a.exercise()))) + "\"";
+    j += ",\"query\":\"" + json_escape(a.query()) + "\"";
+    j += ",\"options\":{";
+    bool first = true;
+    for (const auto& [k, v] : a.options()) {
+        j += (first ? "\"" : ",\"") + json_escape(k) + "\":\"" + json_escape(v) + "\"";
+        first = false;
+    }
+    j += "}";
+    char num[160];
+    std::snprintf(num, sizeof num,
+                  ",\"bias\":%.9g,\"defaultBias\":%.9g,\"mapSize\":%d,\"ms\":%.4f,\"frames\":%ld,\"lightTime\":%.6f,"
+                  "\"jumpTime\":%.6f",
+                  static_cast<double>(a.bias()), static_cast<double>(a.default_bias()), s.map_size, a.median_ms(),
+                  a.frames_drawn(), a.light_time(), a.jump_time());
+    j += num;
+    // bias=auto's constant part for the chosen encoding and precision (the page's bias control says it).
+    std::snprintf(num, sizeof num, ",\"autoBias\":%.9g",
+                  static_cast<double>(shadow::auto_bias_constant(s.encoding, s.precision)));
+    j += num;
+    j += std::string(",\"paused\":") + (a.paused() ? "true" : "false");
+    j += std::string(",\"lost\":") + (g->lost ? "true" : "false");
+    j += ",\"generation\":" + std::to_string(a.gl_generation());
+    const gl::Caps* caps = a.caps();
+    j += std::string(",\"depthTexture\":") + (caps && caps->depth_texture ? "true" : "false");
+    j += ",\"maxMapSize\":" + std::to_string(caps ? caps->max_target_size() : 0);
+    j += ",\"renderer\":\"" + json_escape(caps ? caps->renderer : "") + "\"";
+    j += ",\"status\":\"" + json_escape(g->status) + "\"";
+    j += ",\"width\":" + std::to_string(g->width) + ",\"height\":" + std::to_string(g->height);
+    j += "}";
+    return hand(j);
+}
+
+// ---- the test hook -----------------------------------------------------------------------------
+void penumbra_set_time(double t) {
+    if (g && g->app) g->app->set_time(t);
+}
+void penumbra_pause(int paused) {
+    if (g && g->app) g->app->set_paused(paused != 0);
+}
+long penumbra_frame_count() { return g && g->app ? g->app->frames_drawn() : 0; }
+// Draws one frame now, outside the animation loop (at the current, e.g. fixed, time).
+int penumbra_render_now(int width, int height) {
+    if (!g) return 0;
+    if (width > 0 && height > 0) {
+        g->width = width;
+        g->height = height;
+    }
+    return draw_frame() ? 1 : 0;
+}
+// The canvas's pixels (RGBA8, top row first, width x height of the last frame); null on failure.
+const std::uint8_t* penumbra_read_pixels() {
+    if (!g || !g->app || !g->app->has_gl() || g->lost) return nullptr;
+    try {
+        g->pixels = g->app->read_pixels(g->width, g->height);
+    } catch (const std::exception& e) {
+        g->last_error = e.what();
+        return nullptr;
+    }
+    return g->pixels.data();
+}
+int penumbra_width() { return g ? g->width : 0; }
+int penumbra_height() { return g ? g->height : 0; }
+// The oldest pending GL error (0: none), through Emscripten's glGetError.
+unsigned penumbra_gl_error() { return g && !g->lost ? gl::take_error() : 0u; }
+const char* penumbra_plan() { return hand(g && g->app ? g->app->last_plan() : ""); }
+
+}  // extern "C"
+
+int main(int argc, char** argv) {
+    examples::Exercise exercise = examples::Exercise::W09P1;
+    for (int i = 1; i + 1 < argc; ++i)
+        if (std::string(argv[i]) == "--exercise" && !examples::parse_exercise(argv[i + 1], exercise))
+            std::fprintf(stderr, "penumbra: unknown exercise '%s'\n", argv[i + 1]);
+    g = new WebApp;  // lives as long as the page
+    g->app = std::make_unique<examples::CourseApp>(exercise);
+    std::string error;
+    g->platform = platform::create_web_canvas(platform::CanvasOptions{}, error);
+    if (!g->platform) {
+        g->status = "error: " + error;
+        std::fprintf(stderr, "penumbra: %s\n", error.c_str());
+        return 1;
+    }
+    try {
+        g->app->create_gl();
+    } catch (const std::exception& e) {
+        g->status = std::string("error: ") + e.what();
+        std::fprintf(stderr, "penumbra: %s\n", e.what());
+        return 1;
+    }
+    g->status = "running";
+    g->platform->on_context(on_context);
+    g->platform->run(frame);  // returns at once; the browser calls frame() from now on
+    return 0;
+}

@@ -1,0 +1,137 @@
+// The course's four exercises of worksheet W09 (02561) over the library, shared by the browser
+// pages (course_web.cpp) and the desktop app (course_desktop.cpp):
+//   W09P1   jumping teapot on a marble table top, planar projected shadows (stencil), buttons to
+//           switch the light's circulation and the teapot's jump on and off;
+//   W09P2a  the scene from the light: its own view and projection fitted tightly around the
+//           scene, perspective for the point light, orthographic for a directional light;
+//   W09P2b  the scene rendered into a framebuffer object, and that texture on the ground quad;
+//   W09P2c  shadow mapping: depth encoding, 4x4 PCF, bias (fixed, the encoding's default or auto),
+//           precision (highp or emulated mediump), map size, and the shadow map shown scaled for
+//           viewing in a corner.
+// No GL here: the renderer and the gl layer do the drawing; the platform owns the context.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "gl/caps.h"
+#include "gl/objects.h"
+#include "render/renderer.h"
+#include "render/settings.h"
+#include "scene/course_scene.h"
+
+namespace penumbra::examples {
+
+enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c };
+inline constexpr Exercise kAllExercises[] = {Exercise::W09P1, Exercise::W09P2a, Exercise::W09P2b, Exercise::W09P2c};
+
+std::string_view to_string(Exercise e);  // "w09p1", as in the page names and --exercise
+std::string_view title(Exercise e);      // "W09P1: jumping teapot on a marble table top"
+bool parse_exercise(std::string_view name, Exercise& out);
+
+// What the controls set besides render::Settings, with their URL/command-line names.
+struct Toggles {
+    bool light = true;       // light=on|off: the light circles the table
+    bool jump = true;        // jump=on|off: the teapot jumps
+    bool ortho = false;      // projection=persp|ortho (W09P2a): ortho makes the light directional
+    bool fbo_light = true;   // fbo-view=light|camera (W09P2b): what is rendered into the FBO
+    bool map_view = true;    // map-view=on|off (W09P2c): the shadow map in the top right corner
+};
+
+class CourseApp {
+public:
+    explicit CourseApp(Exercise e);
+    ~CourseApp();
+    CourseApp(const CourseApp&) = delete;
+    CourseApp& operator=(const CourseApp&) = delete;
+
+    Exercise exercise() const { return exercise_; }
+    void set_exercise(Exercise e) { exercise_ = e; }
+
+    // One option by its URL / command-line name: a render::Settings option (parsed by
+    // render::parse_option), a toggle above, or time=T (both clocks to T, paused). Returns "" or
+    // one line naming the problem; nothing changes on a problem.
+    std::string set_option(std::string_view name, std::string_view value);
+    // The options this exercise shows, plus any other setting that differs from its default, as
+    // name/value pairs that set_option reads back; time=T only while paused.
+    std::vector<std::pair<std::string, std::string>> options() const;
+    std::string query() const;  // options() as "name=value&name=value"
+    const render::Settings& settings() const { return settings_; }
+    const Toggles& toggles() const { return toggles_; }
+    // The bias in use (with bias=auto its constant part, the slope term is added per fragment),
+    // and the chosen encoding's default (the sheet's 0.005 / 0.0015).
+    float bias() const;
+    float default_bias() const;
+
+    // The GL side's life. create_gl: the context is current and new (first made, or restored
+    // after a loss): make the renderer and every GL object. drop_gl: the context is gone; forget
+    // what was made on it.
+    void create_gl();
+    void drop_gl();
+    bool has_gl() const { return renderer_ != nullptr; }
+    const gl::Caps* caps() const;
+    std::size_t gl_generation() const { return generation_; }  // how many times create_gl ran
+
+    // Time: the light's and the jump's clocks advance by dt when their motion is on and time is
+    // not paused. set_time puts both clocks at t.
+    void advance(double dt);
+    void set_time(double t);
+    void set_paused(bool paused) { paused_ = paused; }
+    bool paused() const { return paused_; }
+    double light_time() const { return light_time_; }
+    double jump_time() const { return jump_time_; }
+
+    // Draws one frame of the current exercise into the default framebuffer (width x height) and
+    // waits for it (a one-pixel readback) so the frame's time is measured. Throws gl::Error on a GL failure and
+    // std::runtime_error when the settings cannot render on this context.
+    void draw(int width, int height);
+    // The default framebuffer's pixels, RGBA8, top row first.
+    std::vector<std::uint8_t> read_pixels(int width, int height);
+    // Median ms/frame over the last 60 frames (draw + wait), 0 before the first.
+    double median_ms() const;
+    long frames_drawn() const { return frames_drawn_; }
+    // The passes of the last frame (each render call's plan), for --verbose.
+    std::string last_plan() const;
+
+    // Desktop keys: the help text, and one key's action. Returns a line saying what changed,
+    // or "" when the key means nothing here.
+    static std::string key_help();
+    std::string on_key(int key, bool shift);
+
+private:
+    void draw_w09p1(const gl::Target& window);
+    void draw_w09p2a(const gl::Target& window);
+    void draw_w09p2b(const gl::Target& window);
+    void draw_w09p2c(const gl::Target& window);
+    void ensure_fbo(int size);
+    void render_checked(const scene::Scene& scene, const render::Settings& s, const gl::Target& target);
+    // The scene seen from the light (camera and, with ortho, a directional light), rendered with
+    // the settings given; restores the scene afterwards.
+    void render_light_view(const render::Settings& s, const gl::Target& target, bool ortho);
+
+    struct Fbo;
+
+    Exercise exercise_;
+    render::Settings settings_;
+    Toggles toggles_;
+    scene::CourseScene course_;
+    int fbo_mesh_ = -1;      // the table quad with uvs 0..1 (the FBO image once over the table)
+    int fbo_material_ = -1;  // white, textured with the placeholder image the FBO replaces
+    int fbo_image_ = -1;
+    std::unique_ptr<render::Renderer> renderer_;
+    std::unique_ptr<Fbo> fbo_;
+    std::size_t generation_ = 0;
+    double light_time_ = 0.0;
+    double jump_time_ = 0.0;
+    bool paused_ = false;
+    std::vector<double> ms_;  // ring of the last frame times
+    long frames_drawn_ = 0;
+    std::string plan_text_;  // this frame's passes, for --verbose
+};
+
+}  // namespace penumbra::examples

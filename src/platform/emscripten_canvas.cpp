@@ -1,0 +1,120 @@
+// A WebGL 1 context on a canvas (Emscripten). The browser owns the loop: run() registers the frame
+// callback with requestAnimationFrame and returns. Context loss (WEBGL_lose_context, a GPU reset)
+// stops the frames until the browser restores the context; both are reported to the app, which
+// must make every GL object again on the restored (empty) context.
+#include <emscripten.h>
+#include <emscripten/html5.h>
+
+#include <string>
+
+#include "platform/platform.h"
+
+namespace penumbra::platform {
+
+namespace {
+
+// WebGL extensions are off until asked for; the library uses these where the browser has them.
+// After a restore they are off again and are asked for again.
+constexpr const char* kExtensions[] = {"WEBGL_depth_texture", "OES_element_index_uint"};
+
+class WebCanvas final : public Platform {
+public:
+    ~WebCanvas() override {
+        emscripten_cancel_main_loop();
+        if (context_ > 0) emscripten_webgl_destroy_context(context_);
+    }
+
+    bool init(const CanvasOptions& o, std::string& error) {
+        selector_ = o.selector;
+        EmscriptenWebGLContextAttributes a;
+        emscripten_webgl_init_context_attributes(&a);
+        a.majorVersion = 1;
+        a.minorVersion = 0;
+        a.alpha = EM_FALSE;
+        a.depth = EM_TRUE;
+        a.stencil = EM_TRUE;     // planar shadows (W09P1) count in the stencil buffer
+        a.antialias = EM_FALSE;  // the same pixels as the headless and desktop builds
+        a.premultipliedAlpha = EM_TRUE;
+        a.preserveDrawingBuffer = o.preserve_drawing_buffer ? EM_TRUE : EM_FALSE;
+        a.enableExtensionsByDefault = EM_FALSE;
+        context_ = emscripten_webgl_create_context(selector_.c_str(), &a);
+        if (context_ <= 0) {
+            error = "WebGL 1: no context on " + selector_ + " (emscripten_webgl_create_context returned " +
+                    std::to_string(context_) + ")";
+            return false;
+        }
+        if (emscripten_webgl_make_context_current(context_) != EMSCRIPTEN_RESULT_SUCCESS) {
+            error = "WebGL 1: emscripten_webgl_make_context_current failed";
+            return false;
+        }
+        enable_extensions();
+        emscripten_set_webglcontextlost_callback(selector_.c_str(), this, EM_FALSE, &WebCanvas::lost);
+        emscripten_set_webglcontextrestored_callback(selector_.c_str(), this, EM_FALSE, &WebCanvas::restored);
+        start_ms_ = emscripten_get_now();
+        return true;
+    }
+
+    std::string description() const override { return "WebGL 1 canvas " + selector_ + " (Emscripten)"; }
+    bool has_default_framebuffer() const override { return true; }
+
+    void run(const FrameCallback& frame) override {
+        frame_ = frame;
+        // 0 fps: requestAnimationFrame; false: main() returns (the runtime stays alive).
+        emscripten_set_main_loop_arg(&WebCanvas::tick, this, 0, EM_FALSE);
+    }
+
+    void on_context(ContextCallback callback) override { context_cb_ = std::move(callback); }
+
+    bool set_size(int width, int height) override {
+        if (width <= 0 || height <= 0) return false;
+        return emscripten_set_canvas_element_size(selector_.c_str(), width, height) == EMSCRIPTEN_RESULT_SUCCESS;
+    }
+
+private:
+    void enable_extensions() {
+        for (const char* e : kExtensions) emscripten_webgl_enable_extension(context_, e);
+    }
+
+    static void tick(void* user) {
+        auto* self = static_cast<WebCanvas*>(user);
+        if (self->lost_ || emscripten_is_webgl_context_lost(self->context_)) return;  // wait for the restore
+        int w = 0, h = 0;
+        emscripten_get_canvas_element_size(self->selector_.c_str(), &w, &h);
+        const FrameInfo info{(emscripten_get_now() - self->start_ms_) / 1000.0, w, h, self->frame_index_++};
+        if (!self->frame_(info)) emscripten_cancel_main_loop();
+    }
+
+    static EM_BOOL lost(int, const void*, void* user) {
+        auto* self = static_cast<WebCanvas*>(user);
+        self->lost_ = true;
+        if (self->context_cb_) self->context_cb_(ContextEvent::Lost);
+        return EM_TRUE;  // preventDefault: tells the browser the page can restore the context
+    }
+
+    static EM_BOOL restored(int, const void*, void* user) {
+        auto* self = static_cast<WebCanvas*>(user);
+        emscripten_webgl_make_context_current(self->context_);
+        self->enable_extensions();
+        self->lost_ = false;
+        if (self->context_cb_) self->context_cb_(ContextEvent::Restored);
+        return EM_TRUE;
+    }
+
+    std::string selector_;
+    EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context_ = 0;
+    FrameCallback frame_;
+    ContextCallback context_cb_;
+    double start_ms_ = 0.0;
+    long frame_index_ = 0;
+    bool lost_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Platform> create_web_canvas(const CanvasOptions& options, std::string& error) {
+    auto p = std::make_unique<WebCanvas>();
+    if (!p->init(options, error)) return nullptr;
+    return p;
+}
+
+}  // namespace penumbra::platform

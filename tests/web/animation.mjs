@@ -1,0 +1,39 @@
+// web.light and web.jump (argument: light | jump), on W09P1 with the page's real buttons:
+// while the control is on, two readbacks some frames apart differ; switched off (from the
+// keyboard: focus and Space), they are equal. The other motion is switched off first (a click),
+// so the difference belongs to the control under test.
+import { runTest, openPage, waitFrames, readPixels, compare, check } from './harness.mjs';
+
+const which = process.argv[2];
+if (which !== 'light' && which !== 'jump') throw new Error('usage: animation.mjs light|jump');
+const other = which === 'light' ? 'jump' : 'light';
+const FRAMES_APART = 12;
+
+await runTest(`web.${which}`, async ({ server, browser }) => {
+  const { page, problems } = await openPage(browser, `${server.url}/w09p1.html`);
+  await page.click(`#${other}`);
+  check((await page.getAttribute(`#${other}`, 'aria-pressed')) === 'false', `the ${other} button did not switch off`);
+  await waitFrames(page, 2);
+
+  const a = await readPixels(page);
+  await waitFrames(page, FRAMES_APART);
+  const b = await readPixels(page);
+  const moving = compare(a, b);
+  check(moving.differing > 100, `${which} on: only ${moving.differing} pixels changed in ${FRAMES_APART} frames`);
+
+  // Off, from the keyboard.
+  await page.focus(`#${which}`);
+  await page.keyboard.press('Space');
+  check((await page.getAttribute(`#${which}`, 'aria-pressed')) === 'false', `Space on the ${which} button did not switch it off`);
+  const state = await page.evaluate(() => window.penumbra.state());
+  check(state.options[which] === 'off', `the module's ${which} is '${state.options[which]}'`);
+  check(new URL(page.url()).searchParams.get(which) === 'off', `the URL does not say ${which}=off: ${page.url()}`);
+  await waitFrames(page, 2);
+  const c = await readPixels(page);
+  await waitFrames(page, FRAMES_APART);
+  const d = await readPixels(page);
+  const frozen = compare(c, d);
+  check(frozen.differing === 0, `${which} off: ${frozen.differing} pixels still changed in ${FRAMES_APART} frames`);
+  check(problems.length === 0, problems.join('; '));
+  console.log(`${which} on: ${moving.differing} pixels changed over ${FRAMES_APART} frames; off: ${frozen.differing}`);
+});

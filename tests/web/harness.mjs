@@ -1,0 +1,137 @@
+// What the browser tests share: a tiny static server on 127.0.0.1 (started and stopped by the test
+// itself), Debian's Chromium driven by playwright-core with SwiftShader WebGL, a page opener that
+// records console errors, page errors and failed requests, and pixel helpers.
+import { createServer } from 'node:http';
+import { readFile, stat } from 'node:fs/promises';
+import { existsSync } from 'node:fs';
+import path from 'node:path';
+import { chromium } from 'playwright-core';
+
+export const CHROMIUM = process.env.PENUMBRA_CHROMIUM || '/usr/bin/chromium';
+// From ../shared/design/TOOLCHAIN.md: WebGL on SwiftShader, and no background networking (this
+// machine cannot reach other hosts).
+export const CHROMIUM_ARGS = [
+  '--headless', '--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader', '--use-angle=swiftshader',
+  '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update',
+  '--disable-sync',
+];
+export const PAGES = ['w09p1', 'w09p2a', 'w09p2b', 'w09p2c'];
+
+const TYPES = {
+  '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.css': 'text/css; charset=utf-8',
+  '.wasm': 'application/wasm', '.png': 'image/png', '.json': 'application/json',
+};
+
+// Serves `root` on 127.0.0.1 at a free port. Returns {url, close()}.
+export async function serve(root) {
+  const server = createServer(async (req, res) => {
+    try {
+      const rel = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+      const file = path.join(root, path.normalize(rel === '/' ? '/index.html' : rel));
+      if (!file.startsWith(path.resolve(root))) throw new Error('outside the site');
+      const s = await stat(file);
+      if (!s.isFile()) throw new Error('not a file');
+      const body = await readFile(file);
+      res.writeHead(200, { 'Content-Type': TYPES[path.extname(file)] || 'application/octet-stream',
+                           'Cache-Control': 'no-store' });
+      res.end(body);
+    } catch {
+      res.writeHead(404, { 'Content-Type': 'text/plain' });
+      res.end('not found');
+    }
+  });
+  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+  const { port } = server.address();
+  return { url: `http://127.0.0.1:${port}`, close: () => new Promise((r) => server.close(r)) };
+}
+
+export function siteDir() {
+  const dir = process.env.PENUMBRA_SITE || path.resolve(path.dirname(new URL(import.meta.url).pathname), '../../build-web/site');
+  if (!existsSync(path.join(dir, 'penumbra.wasm')))
+    throw new Error(`${dir} has no penumbra.wasm: build the web preset first (cmake --preset web && cmake --build --preset web)`);
+  return dir;
+}
+
+export async function launch() {
+  return chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS, headless: true });
+}
+
+// Opens `url` in a fresh 1280x900 page, waits for the module (window.penumbra.ready) and returns
+// {page, problems}: problems collects console errors, page errors and failed requests.
+export async function openPage(browser, url, { waitReady = true } = {}) {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 900 } });
+  const page = await context.newPage();
+  const problems = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
+  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+  page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} (${r.failure()?.errorText})`));
+  page.on('response', (r) => { if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`); });
+  await page.goto(url, { waitUntil: 'load' });
+  if (waitReady) await page.evaluate(() => window.penumbra.ready);
+  return { page, context, problems };
+}
+
+// Waits until the page has drawn `n` more frames through its animation loop.
+export async function waitFrames(page, n) {
+  const start = await page.evaluate(() => window.penumbra.frameCount());
+  await page.waitForFunction((target) => window.penumbra.frameCount() >= target, start + n, { timeout: 60000 });
+}
+
+// The canvas's pixels now: {width, height, data: Buffer RGBA top row first}.
+export async function readPixels(page) {
+  const px = await page.evaluate(() => window.penumbra.readPixelsBase64());
+  if (!px) throw new Error('readPixels failed');
+  return { width: px.width, height: px.height, data: Buffer.from(px.data, 'base64') };
+}
+
+// Fixes time at t (paused), draws a frame now and reads it back.
+export async function frameAt(page, t) {
+  return page.evaluate((time) => {
+    window.penumbra.pause();
+    window.penumbra.setTime(time);
+    if (!window.penumbra.renderNow()) return null;
+    return window.penumbra.readPixelsBase64();
+  }, t).then((px) => {
+    if (!px) throw new Error('renderNow/readPixels failed');
+    return { width: px.width, height: px.height, data: Buffer.from(px.data, 'base64') };
+  });
+}
+
+// Per-pixel comparison of two RGBA images of the same size (alpha ignored).
+export function compare(a, b, threshold = 0) {
+  if (a.width !== b.width || a.height !== b.height) throw new Error(`sizes differ: ${a.width}x${a.height} vs ${b.width}x${b.height}`);
+  let differing = 0, sum = 0, max = 0;
+  const n = a.width * a.height;
+  const mask = new Uint8Array(n);
+  for (let i = 0; i < n; ++i) {
+    let d = 0;
+    for (let c = 0; c < 3; ++c) d = Math.max(d, Math.abs(a.data[4 * i + c] - b.data[4 * i + c]));
+    sum += d;
+    if (d > max) max = d;
+    if (d > threshold) { ++differing; mask[i] = 1; }
+  }
+  return { differing, fraction: differing / n, mean: sum / n, max, mask };
+}
+
+export function check(condition, message) {
+  if (!condition) throw new Error(message);
+}
+
+// Runs `body` with a browser and the served site, closing both whatever happens; prints PASS or
+// the failure and sets the exit status.
+export async function runTest(name, body) {
+  const started = Date.now();
+  let server, browser;
+  try {
+    server = await serve(siteDir());
+    browser = await launch();
+    await body({ server, browser });
+    console.log(`PASS ${name} (${((Date.now() - started) / 1000).toFixed(1)} s)`);
+  } catch (e) {
+    console.error(`FAIL ${name}: ${e.stack || e}`);
+    process.exitCode = 1;
+  } finally {
+    if (browser) await browser.close().catch(() => {});
+    if (server) await server.close();
+  }
+}

@@ -1,0 +1,41 @@
+// web.load: the index and every exercise page load with no console error, no page error, no failed
+// request and no WebGL error after some frames; every control has a label; the index links resolve.
+import { runTest, openPage, waitFrames, check, PAGES } from './harness.mjs';
+
+await runTest('web.load', async ({ server, browser }) => {
+  // The index: its links lead to the four pages.
+  {
+    const { page, context, problems } = await openPage(browser, `${server.url}/index.html`, { waitReady: false });
+    const links = await page.$$eval('a[href]', (as) => as.map((a) => a.getAttribute('href')));
+    for (const p of PAGES) check(links.includes(`${p}.html`), `index.html does not link ${p}.html`);
+    for (const href of links) {
+      const r = await page.request.get(`${server.url}/${href}`);
+      check(r.ok(), `index.html links ${href}, which answers ${r.status()}`);
+    }
+    check(problems.length === 0, `index.html: ${problems.join('; ')}`);
+    await context.close();
+  }
+  for (const p of PAGES) {
+    const { page, context, problems } = await openPage(browser, `${server.url}/${p}.html`);
+    await waitFrames(page, 10);
+    const errors = await page.evaluate(() => {
+      const out = [];
+      for (let e = window.penumbra.glError(), i = 0; e !== 0 && i < 16; e = window.penumbra.glError(), ++i) out.push(e);
+      return out;
+    });
+    check(errors.length === 0, `${p}: glGetError reported ${errors.map((e) => '0x' + e.toString(16)).join(', ')}`);
+    const state = await page.evaluate(() => window.penumbra.state());
+    check(state.status === 'running', `${p}: status is '${state.status}'`);
+    check(state.exercise === p, `${p}: the module runs exercise ${state.exercise}`);
+    check(state.frames >= 10 && state.ms > 0, `${p}: no frames timed (${state.frames} frames, ${state.ms} ms)`);
+    const ms = await page.textContent('#ms');
+    check(/ms\/frame/.test(ms), `${p}: the ms/frame readout says '${ms}'`);
+    // Every control is reachable by its label (or its own text, for buttons).
+    const unlabelled = await page.$$eval('#controls input, #controls select, #controls button', (els) =>
+      els.filter((el) => (el.tagName === 'BUTTON' ? !el.textContent.trim() : el.labels.length === 0)).map((el) => el.id || el.outerHTML));
+    check(unlabelled.length === 0, `${p}: controls without a label: ${unlabelled.join(', ')}`);
+    check(problems.length === 0, `${p}: ${problems.join('; ')}`);
+    console.log(`${p}: ${state.frames} frames, ${state.ms.toFixed(2)} ms/frame, ${state.renderer}, no errors`);
+    await context.close();
+  }
+});
