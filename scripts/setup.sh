@@ -10,11 +10,16 @@ packages=(
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri  # headless GLES2 on Mesa llvmpipe
   libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libcli11-dev  # maths, scenes, PNG, CLI
   libgtest-dev libbenchmark-dev glslang-tools    # tests and shader validation
+  libembree-dev                                  # the ray-traced ground truth (penumbra bench / truth)
+  libglfw3-dev xvfb xauth                        # the desktop app, and its test on a virtual X server
+  emscripten chromium nodejs                     # the web pages, and their tests in headless Chromium
 )
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# Debian packages npm apart from nodejs; other nodejs builds bring their own.
+command -v npm >/dev/null 2>&1 || missing+=(npm)
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${missing[*]}"
   sudo=""
@@ -25,6 +30,18 @@ else
   echo "setup: all Debian packages present"
 fi
 
+# playwright-core (drives /usr/bin/chromium; no browser download), pngjs and three (the three.js
+# side by side, tools/threejs_compare.mjs) for the browser tests,
+# as package-lock.json pins them.
+if [ ! -d node_modules/playwright-core ] || [ ! -d node_modules/three ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
+  echo "setup: npm ci (playwright-core, pngjs, three)"
+  npm ci --no-audit --no-fund --loglevel=error
+fi
+
 cmake --preset ci >/dev/null
 cmake --build --preset ci
-echo "setup: built build/penumbra"
+echo "setup: built build/penumbra and build/penumbra-desktop"
+# The exercise pages (Emscripten, WebGL 1): build-web/site, served by scripts/serve.sh.
+cmake --preset web >/dev/null
+cmake --build --preset web
+echo "setup: built build-web/site"

@@ -1,12 +1,17 @@
 #!/usr/bin/env bash
 # The test command: builds with warnings as errors and runs every test ring (unit, GL on headless
-# EGL, shader validation, command line), then the unit and GL tests again under ASan + UBSan.
+# EGL, shader validation, command line, the desktop app under Xvfb, the web pages in headless
+# Chromium), then the unit and GL tests again under ASan + UBSan.
 # Set PENUMBRA_SKIP_ASAN=1 to skip the sanitizer pass.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$(date +%s)
 cmake --preset ci >/dev/null
 cmake --build --preset ci
+# The web pages once (Emscripten; prints each page's payload); the web.* tests load build-web/site.
+cmake --preset web >/dev/null
+cmake --build --preset web
+{ [ -d node_modules/playwright-core ] && [ -d node_modules/three ]; } || npm ci --no-audit --no-fund --loglevel=error
 ctest --preset ci
 if [ "${PENUMBRA_SKIP_ASAN:-0}" != 1 ]; then
   echo "== again under AddressSanitizer + UndefinedBehaviorSanitizer (Debug, per-call GL checks) =="

@@ -20,11 +20,15 @@
 #include "gl/caps.h"
 #include "gl/check.h"
 #include "platform/platform.h"
+#ifdef PENUMBRA_HAVE_TRUTH
+#include "bias_sweep.h"
+#endif
 #include "png_io.h"
 #include "render/renderer.h"
 #include "render/settings.h"
 #include "render/shader_library.h"
 #include "scene/scene_source.h"
+#include "measure_commands.h"
 
 namespace fs = std::filesystem;
 using namespace penumbra;
@@ -75,7 +79,10 @@ int run_render(const render::Settings& s, bool verbose) {
     scene::SceneSource src = open_scene(s.scene);
     auto ctx = make_context();
     render::Renderer r(gl::probe_caps());
-    if (verbose) std::cerr << ctx->description() << "\n" << r.caps().summary() << "\nsettings: " << render::to_args(s) << "\n";
+    if (verbose)
+        std::cerr << ctx->description() << "\n"
+                  << r.caps().summary() << "\nfloat -> unorm8 conversion: " << shadow::to_string(r.unorm_rounding())
+                  << " (probed; the packing is compiled for it)\nsettings: " << render::to_args(s) << "\n";
     if (const std::string problem = r.check(src.at(s.time), s); !problem.empty()) throw Failure{problem, 2};
 
     std::vector<double> ms;
@@ -224,14 +231,16 @@ int main(int argc, char** argv) {
         {"encoding", "r8 | rgba | depthtex (default rgba)"},
         {"filter", "hard | pcf2x2 | pcf4x4 (default hard)"},
         {"map-size", "shadow map width = height (default 1024)"},
-        {"bias", "depth offset, or 'default' (r8 0.005, rgba and depthtex 0.0015)"},
+        {"bias", "depth offset, 'default' (r8 0.005, rgba and depthtex 0.0015) or 'auto' (quantum + receiver slope)"},
+        {"precision", "highp | mediump (emulated fp16 along the depth path, as a phone computes it)"},
         {"aov", "color | visibility | light-depth"},
         {"technique", "shadowmap | planar | none (default shadowmap)"},
         {"out", "FILE.png (top row first); none: write nothing"},
         {"frames", "render N frames, t advancing 1/60 s, and print the median ms/frame"}};
     for (auto name : render::option_names()) {
         const std::string n(name);
-        render_cmd->add_option("--" + n, raw[n], help.at(n));
+        const auto h = help.find(n);
+        render_cmd->add_option("--" + n, raw[n], h == help.end() ? "" : h->second);
     }
     bool verbose = false;
     render_cmd->add_flag("-v,--verbose", verbose, "list the context, the settings and each frame's passes");
@@ -247,6 +256,18 @@ int main(int argc, char** argv) {
     shaders_cmd->add_option("--out", shader_dir, "folder")->required();
 
     auto* caps_cmd = app.add_subcommand("caps", "print what the headless context supports");
+    // export, truth, bench: measuring the trade (tools/penumbra/measure_commands.h).
+    const auto measure = tools::add_measure_commands(app);
+
+#ifdef PENUMBRA_HAVE_TRUTH
+    auto* sweep_cmd = app.add_subcommand(
+        "bias-sweep", "acne and peter-panning against bias, elevation, encoding and precision (docs/precision)");
+    tools::BiasSweepOptions sweep;
+    sweep_cmd->add_option("--out-dir", sweep.out_dir, "folder for the CSV, the table and the charts");
+    sweep_cmd->add_flag("--quick", sweep.quick, "3 elevations and 5 biases, for CI");
+    sweep_cmd->add_option("--size", sweep.size, "image width = height (default 256)")->check(CLI::Range(16, 4096));
+    sweep_cmd->add_option("--map-size", sweep.map_size, "shadow map size (default 1024)")->check(CLI::Range(16, 8192));
+#endif
 
     try {
         app.parse(argc, argv);
@@ -273,6 +294,10 @@ int main(int argc, char** argv) {
         if (*gallery_cmd) return run_gallery(gallery_dir, settings_from(gallery_cmd, graw, render::Settings{}));
         if (*shaders_cmd) return run_shaders(shader_dir);
         if (*caps_cmd) return run_caps();
+        if (const int rc = tools::run_measure_commands(*measure); rc >= 0) return rc;
+#ifdef PENUMBRA_HAVE_TRUTH
+        if (*sweep_cmd) return tools::run_bias_sweep(sweep);
+#endif
     } catch (const Failure& f) {
         std::fprintf(stderr, "penumbra: error: %s\n", f.message.c_str());
         return f.code;
