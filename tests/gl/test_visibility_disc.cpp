@@ -3,9 +3,7 @@
 // Every plane pixel (found by casting the pixel's ray on the CPU) must agree on >= 99% of them.
 #include "gl_fixture.h"
 
-#include <glm/gtc/matrix_transform.hpp>
-
-#include "scene/primitives.h"
+#include "scene/probe_scenes.h"
 
 using namespace penumbra;
 
@@ -15,28 +13,8 @@ constexpr float kRadius = 1.0f;
 constexpr float kHeight = 2.0f;
 constexpr float kPlane = 10.0f;
 
-scene::Scene sphere_over_plane() {
-    scene::Scene s;
-    s.meshes = {scene::make_quad(kPlane), scene::make_sphere(kRadius, 64, 32)};
-    s.materials.resize(1);
-    scene::Object plane;
-    plane.name = "ground";
-    plane.mesh = 0;
-    scene::Object ball;
-    ball.name = "sphere";
-    ball.mesh = 1;
-    ball.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, kHeight, 0.0f));
-    s.objects = {plane, ball};
-    s.light.type = scene::LightType::Directional;
-    s.light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-    s.ground_plane = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
-    s.ground_object = 0;
-    s.camera.view = glm::lookAt(glm::vec3(0.0f, 7.0f, 7.0f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-    s.camera.yfov = glm::radians(50.0f);
-    s.camera.znear = 0.5f;
-    s.camera.zfar = 40.0f;
-    return s;
-}
+// scene::make_sphere_over_plane: radius 1 at height 2 over a 10 x 10 ground, light straight down.
+scene::Scene sphere_over_plane() { return scene::make_sphere_over_plane(); }
 
 struct Tally {
     int plane_pixels = 0;
