@@ -28,6 +28,10 @@ await runTest('web.load', async ({ server, browser }) => {
     check(state.status === 'running', `${p}: status is '${state.status}'`);
     check(state.exercise === p, `${p}: the module runs exercise ${state.exercise}`);
     check(state.frames >= 10 && state.ms > 0, `${p}: no frames timed (${state.frames} frames, ${state.ms} ms)`);
+    // The readout is refreshed by a 250 ms poll, so it may trail the frames: give it a few polls.
+    await page
+      .waitForFunction(() => /ms\/frame/.test(document.getElementById('ms').textContent), null, { timeout: 10000 })
+      .catch(() => {});
     const ms = await page.textContent('#ms');
     check(/ms\/frame/.test(ms), `${p}: the ms/frame readout says '${ms}'`);
     // Every control is reachable by its label (or its own text, for buttons).
