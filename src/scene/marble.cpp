@@ -3,6 +3,8 @@
 // wraps at the image's edge and the vein sine runs a whole number of periods across it.
 #include "scene/marble.h"
 
+#include "scene/hash.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,17 +17,6 @@ namespace {
 constexpr float kTwoPi = 6.28318530717958647692f;
 constexpr int kOctaves = 5;
 constexpr int kBaseCells = 4;  // lattice cells across the image at the lowest octave
-
-// A fixed integer hash (Wellons' "lowbias32"): the same bits on every platform and standard
-// library, unlike std::rand or the std:: distributions.
-std::uint32_t hash32(std::uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
 
 // One octave of periodic value noise: a cells x cells lattice of values in [0,1) that wraps,
 // so noise(u) with u in [0,1) tiles.

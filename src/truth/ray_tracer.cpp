@@ -1,5 +1,7 @@
 #include "truth/ray_tracer.h"
 
+#include "scene/hash.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -67,14 +69,6 @@ float radical_inverse(std::uint32_t bits) {
     return static_cast<float>(bits) * 2.3283064365386963e-10f;
 }
 
-std::uint32_t hash(std::uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
 
 // Shirley-Chiu concentric map of the unit square onto the unit disc (area preserving).
 glm::vec2 concentric_disc(float u, float v) {
@@ -214,8 +208,8 @@ struct RayTracer::Impl {
         glm::vec3 a, b;
         orthonormal_basis(l, a, b);
         // Cranley-Patterson rotation per pixel of one Hammersley set: stratified, deterministic.
-        const float r1 = static_cast<float>(hash(seed) & 0xFFFFFFu) / 16777216.0f;
-        const float r2 = static_cast<float>(hash(seed ^ 0x9e3779b9u) & 0xFFFFFFu) / 16777216.0f;
+        const float r1 = static_cast<float>(scene::hash32(seed) & 0xFFFFFFu) / 16777216.0f;
+        const float r2 = static_cast<float>(scene::hash32(seed ^ 0x9e3779b9u) & 0xFFFFFFu) / 16777216.0f;
         int open = 0;
         for (int k = 0; k < samples; ++k) {
             float u = (static_cast<float>(k) + 0.5f) / static_cast<float>(samples) + r1;

@@ -88,15 +88,6 @@ SceneSpec parse_scene_spec(const std::string& spec) {
     return s;
 }
 
-scene::SceneSource open_scene(const std::string& name) {
-    scene::SceneSource src;
-    std::string error;
-    std::vector<std::string> warnings;
-    const bool ok = src.open(name, error, warnings);
-    for (const auto& w : warnings) std::cerr << "penumbra: note: " << w << "\n";
-    if (!ok) throw CommandError{"--scene: " + error, 2};
-    return src;
-}
 
 // The area light the soft truth uses unless told otherwise: 1% of the scene's diagonal for a
 // point or spot light (a bulb), 0.01 rad (about twice the sun's) for a directional light.

@@ -26,6 +26,16 @@ float parse_aspect(const std::string& option, const std::string& size) {
 
 }  // namespace
 
+scene::SceneSource open_scene(const std::string& name) {
+    scene::SceneSource src;
+    std::string error;
+    std::vector<std::string> warnings;
+    const bool ok = src.open(name, error, warnings);
+    for (const auto& w : warnings) std::cerr << "penumbra: note: " << w << "\n";
+    if (!ok) throw CommandError{"--scene: " + error, 2};
+    return src;
+}
+
 void run_export(const ExportOptions& o) {
     const fs::path out(o.out);
     if (out.extension() != ".gltf") throw CommandError{"--out " + o.out + ": the file name must end in .gltf", 2};

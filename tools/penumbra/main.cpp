@@ -28,6 +28,7 @@
 #include "render/settings.h"
 #include "render/shader_library.h"
 #include "scene/scene_source.h"
+#include "measure.h"
 #include "measure_commands.h"
 
 namespace fs = std::filesystem;
@@ -35,11 +36,9 @@ using namespace penumbra;
 
 namespace {
 
-// Failures that end the run with one line on stderr.
-struct Failure {
-    std::string message;
-    int code = 1;
-};
+// Failures that end the run with one line on stderr (the measuring commands' type).
+using Failure = tools::CommandError;
+using tools::open_scene;
 
 std::unique_ptr<platform::Platform> make_context() {
     std::string error;
@@ -56,15 +55,6 @@ void write_image(render::Renderer& r, const render::Settings& s, const std::stri
     if (!err.empty()) throw Failure{err};
 }
 
-scene::SceneSource open_scene(const std::string& name) {
-    scene::SceneSource src;
-    std::string error;
-    std::vector<std::string> warnings;
-    const bool ok = src.open(name, error, warnings);
-    for (const auto& w : warnings) std::cerr << "penumbra: note: " << w << "\n";
-    if (!ok) throw Failure{"--scene: " + error};
-    return src;
-}
 
 // ---- render ---------------------------------------------------------------------------------
 

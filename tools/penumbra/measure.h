@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/scene_source.h"
+
 namespace penumbra::tools {
 
 // A problem that ends a command with one line on stderr and this exit status.
@@ -11,6 +13,10 @@ struct CommandError {
     std::string message;
     int code = 1;
 };
+
+// Opens "teapot" or a glTF file; the loader's notes go to stderr; a failure is a CommandError
+// (exit status 2) naming the file.
+scene::SceneSource open_scene(const std::string& name);
 
 struct ExportOptions {
     std::string scene = "teapot";
