@@ -30,22 +30,24 @@ PrecisionFormat precision(GLenum shader, GLenum type) {
 
 }  // namespace
 
-Caps probe_caps() {
+Caps probe_caps(Api api) {
     Caps c;
+    c.api = api;
     c.vendor = get_string(GL_VENDOR);
     c.renderer = get_string(GL_RENDERER);
     c.version = get_string(GL_VERSION);
     c.glsl_version = get_string(GL_SHADING_LANGUAGE_VERSION);
-    std::istringstream ext(get_string(GL_EXTENSIONS));
-    for (std::string e; ext >> e;) c.extensions.insert(e);
+    const std::string ext = get_string(GL_EXTENSIONS);
+    for (size_t at = 0; at < ext.size();) {
+        const size_t end = std::min(ext.find(' ', at), ext.size());
+        if (end > at) c.extensions.insert(ext.substr(at, end - at));
+        at = end + 1;
+    }
 
     c.depth_texture = c.has("GL_OES_depth_texture") || c.has("GL_WEBGL_depth_texture") ||
                       c.has("WEBGL_depth_texture");
-    c.packed_depth_stencil = c.has("GL_OES_packed_depth_stencil");
-#ifdef __EMSCRIPTEN__
     // WebGL 1 has DEPTH_STENCIL renderbuffers and the DEPTH_STENCIL_ATTACHMENT point in core.
-    c.packed_depth_stencil = true;
-#endif
+    c.packed_depth_stencil = api == Api::WebGL1 || c.has("GL_OES_packed_depth_stencil");
     c.depth24 = c.has("GL_OES_depth24");
     c.element_index_uint = c.has("GL_OES_element_index_uint") || c.has("OES_element_index_uint");
 
@@ -65,13 +67,9 @@ Caps probe_caps() {
     return c;
 }
 
-int Caps::max_target_size() const {
-    return std::min({max_texture_size, max_renderbuffer_size, max_viewport_width, max_viewport_height});
-}
-
 std::string Caps::summary() const {
     std::ostringstream s;
-    s << "GL: " << version << " (" << renderer << ", " << vendor << ")\n"
+    s << (api == Api::WebGL1 ? "WebGL 1: " : "GLES 2: ") << version << " (" << renderer << ", " << vendor << ")\n"
       << "GLSL: " << glsl_version << "\n"
       << "max texture " << max_texture_size << ", renderbuffer " << max_renderbuffer_size << ", viewport "
       << max_viewport_width << "x" << max_viewport_height << "\n"

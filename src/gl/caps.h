@@ -2,8 +2,12 @@
 // precision formats, size limits. Fallbacks are chosen from this, never by trial and error.
 #pragma once
 
+#include <algorithm>
 #include <set>
 #include <string>
+
+#include "gl/state.h"
+#include "platform/platform.h"
 
 namespace penumbra::gl {
 
@@ -14,7 +18,13 @@ struct PrecisionFormat {
     int precision = 0;
 };
 
+// Which API the context speaks, as the platform layer reports it (Platform::api()): WebGL 1
+// differs from GLES 2 in a few places (DEPTH_STENCIL renderbuffers and their attachment point are
+// core in WebGL 1).
+using Api = platform::Api;
+
 struct Caps {
+    Api api = Api::GLES2;
     std::string vendor, renderer, version, glsl_version;
     std::set<std::string> extensions;
 
@@ -23,6 +33,10 @@ struct Caps {
     bool depth24 = false;               // OES_depth24 renderbuffers
     bool element_index_uint = false;    // OES_element_index_uint
     bool fragment_highp = false;        // highp float in fragment shaders (optional in ES 2.0)
+    // The context truncates float colours to unorm8 instead of rounding them: found by the
+    // renderer's probe (render/renderer.h), not by probe_caps; the packing shaders aim at the
+    // middle of the byte when it is set (PACK_FLOOR).
+    bool unorm_floor = false;
 
     int max_texture_size = 0;
     int max_renderbuffer_size = 0;
@@ -33,12 +47,22 @@ struct Caps {
 
     bool has(const std::string& extension) const { return extensions.count(extension) > 0; }
     // The largest square render target this context can hold (texture and renderbuffer).
-    int max_target_size() const;
+    int max_target_size() const {
+        return std::min({max_texture_size, max_renderbuffer_size, max_viewport_width, max_viewport_height});
+    }
+    // The depth renderbuffer of a render target: 24 bits where the context has them.
+    RenderbufferFormat depth_format() const {
+        return depth24 ? RenderbufferFormat::Depth24 : RenderbufferFormat::Depth16;
+    }
+    // A packed depth + stencil renderbuffer, in this API's spelling.
+    RenderbufferFormat depth_stencil_format() const {
+        return api == Api::WebGL1 ? RenderbufferFormat::DepthStencil : RenderbufferFormat::Depth24Stencil8;
+    }
     // A few lines for --verbose and logs.
     std::string summary() const;
 };
 
-// Probe the context that is current on this thread.
-Caps probe_caps();
+// Probe the context that is current on this thread; `api` is what the platform says it made.
+Caps probe_caps(Api api);
 
 }  // namespace penumbra::gl

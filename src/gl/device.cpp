@@ -45,16 +45,6 @@ constexpr GLsizei kStride = 8 * sizeof(float);  // position 3, normal 3, uv 2
 
 }  // namespace
 
-bool StencilState::operator==(const StencilState& o) const {
-    return enabled == o.enabled && func == o.func && ref == o.ref && read_mask == o.read_mask &&
-           write_mask == o.write_mask && fail == o.fail && depth_fail == o.depth_fail && pass == o.pass;
-}
-
-bool PipelineState::operator==(const PipelineState& o) const {
-    return depth_test == o.depth_test && depth_func == o.depth_func && depth_write == o.depth_write &&
-           color_write == o.color_write && cull == o.cull && stencil == o.stencil;
-}
-
 Device::Device() {
     // A triangle twice the size of the viewport covers it with no diagonal seam.
     const float tri[] = {-1.0f, -1.0f, 0, 0, 0, 0, 0, 0, 3.0f, -1.0f, 0, 0, 0, 0, 0, 0, -1.0f, 3.0f, 0, 0, 0, 0, 0, 0};

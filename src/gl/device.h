@@ -10,32 +10,9 @@
 #include <glm/glm.hpp>
 
 #include "gl/objects.h"
+#include "gl/state.h"
 
 namespace penumbra::gl {
-
-enum class Compare { Never, Less, LEqual, Equal, GEqual, Greater, NotEqual, Always };
-enum class StencilOp { Keep, Zero, Replace, Incr, Decr };
-enum class Cull { None, Back, Front };
-
-struct StencilState {
-    bool enabled = false;
-    Compare func = Compare::Always;
-    int ref = 0;
-    std::uint32_t read_mask = 0xFF;
-    std::uint32_t write_mask = 0xFF;
-    StencilOp fail = StencilOp::Keep, depth_fail = StencilOp::Keep, pass = StencilOp::Keep;
-    bool operator==(const StencilState& o) const;
-};
-
-struct PipelineState {
-    bool depth_test = true;
-    Compare depth_func = Compare::Less;
-    bool depth_write = true;
-    bool color_write = true;
-    Cull cull = Cull::Back;
-    StencilState stencil;
-    bool operator==(const PipelineState& o) const;
-};
 
 // GPU copy of a scene mesh: interleaved position/normal/uv and 16- or 32-bit indices.
 struct MeshBuffers {

@@ -6,6 +6,7 @@
 
 #include "gl/check.h"
 #include "gl/gl_headers.h"
+#include "gl/uniforms.h"
 
 namespace penumbra::gl {
 
@@ -72,11 +73,8 @@ Renderbuffer::Renderbuffer(RenderbufferFormat format, int width, int height, con
     switch (format) {
         case RenderbufferFormat::Depth16: internal = GL_DEPTH_COMPONENT16; break;
         case RenderbufferFormat::Depth24: internal = GL_DEPTH_COMPONENT24_OES; break;
-#ifdef __EMSCRIPTEN__
-        case RenderbufferFormat::Depth24Stencil8: internal = GL_DEPTH_STENCIL_OES; break;  // WebGL 1: DEPTH_STENCIL
-#else
         case RenderbufferFormat::Depth24Stencil8: internal = GL_DEPTH24_STENCIL8_OES; break;
-#endif
+        case RenderbufferFormat::DepthStencil: internal = GL_DEPTH_STENCIL_OES; break;  // WebGL 1's DEPTH_STENCIL
         case RenderbufferFormat::Stencil8: internal = GL_STENCIL_INDEX8; break;
     }
     GLuint id = 0;
@@ -88,12 +86,8 @@ Renderbuffer::Renderbuffer(RenderbufferFormat format, int width, int height, con
 }
 
 std::size_t Renderbuffer::bytes() const {
-    const std::size_t px = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
-    switch (format_) {
-        case RenderbufferFormat::Depth16: return px * 2u;
-        case RenderbufferFormat::Stencil8: return px;
-        default: return px * 4u;
-    }
+    return static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) *
+           static_cast<std::size_t>(bytes_per_pixel(format_));
 }
 
 // ---- Framebuffer ----------------------------------------------------------------------------
@@ -108,13 +102,10 @@ Framebuffer::Framebuffer(const FramebufferDesc& d) {
     if (d.depth_texture)
         PENUMBRA_GL(
             glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, d.depth_texture->id(), 0));
-#ifdef __EMSCRIPTEN__
-    // WebGL 1 attaches a DEPTH_STENCIL renderbuffer at DEPTH_STENCIL_ATTACHMENT (0x821A), once.
-    if (d.depth && d.depth->format() == RenderbufferFormat::Depth24Stencil8) {
+    if (d.depth && d.depth->format() == RenderbufferFormat::DepthStencil) {
+        // WebGL 1 attaches a DEPTH_STENCIL renderbuffer at DEPTH_STENCIL_ATTACHMENT (0x821A), once.
         PENUMBRA_GL(glFramebufferRenderbuffer(GL_FRAMEBUFFER, 0x821A, GL_RENDERBUFFER, d.depth->id()));
-    } else
-#endif
-    if (d.depth) {
+    } else if (d.depth) {
         PENUMBRA_GL(glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, d.depth->id()));
         if (d.depth->format() == RenderbufferFormat::Depth24Stencil8)
             PENUMBRA_GL(
@@ -160,6 +151,10 @@ GLuint compile(GLenum stage, const std::string& source, const std::string& label
 }  // namespace
 
 Program::Program(const std::string& vs, const std::string& fs, const std::string& label) : label_(label) {
+    if (kStrictUniforms) {
+        declared_ = declared_uniforms(vs);
+        declared_.merge(declared_uniforms(fs));
+    }
     const GLuint v = compile(GL_VERTEX_SHADER, vs, label);
     GLuint f = 0;
     try {
@@ -194,6 +189,8 @@ Program::Program(const std::string& vs, const std::string& fs, const std::string
 int Program::location(const char* name) const {
     auto it = locations_.find(name);
     if (it != locations_.end()) return it->second;
+    if (kStrictUniforms && !declares(name))
+        throw Error(label_ + ": no uniform '" + name + "' in this program (misspelt, or a feature the variant lacks)");
     const int loc = glGetUniformLocation(h_.id(), name);
     locations_.emplace(name, loc);
     return loc;

@@ -4,11 +4,14 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <utility>
 
 #include <glm/glm.hpp>
+
+#include "gl/state.h"
 
 namespace penumbra::gl {
 
@@ -63,13 +66,6 @@ private:
     std::size_t bytes_ = 0;
 };
 
-enum class TextureFormat {
-    RGBA8,  // GL_RGBA / GL_UNSIGNED_BYTE
-    Depth   // GL_DEPTH_COMPONENT / GL_UNSIGNED_INT (OES_depth_texture)
-};
-enum class Sampling { Nearest, Linear, LinearMipmap };
-enum class Wrap { Clamp, Repeat };
-
 struct TextureDesc {
     int width = 0;
     int height = 0;
@@ -94,13 +90,6 @@ private:
     Handle<TextureDeleter> h_;
     int width_ = 0, height_ = 0;
     TextureFormat format_ = TextureFormat::RGBA8;
-};
-
-enum class RenderbufferFormat {
-    Depth16,
-    Depth24,          // OES_depth24
-    Depth24Stencil8,  // OES_packed_depth_stencil
-    Stencil8
 };
 
 class Renderbuffer {
@@ -140,6 +129,13 @@ private:
 // Fixed attribute locations, bound before linking, shared by every program and mesh layout.
 enum Attribute : std::uint32_t { kPosition = 0, kNormal = 1, kUV = 2 };
 
+// Debug builds (and PENUMBRA_GL_CHECKS) refuse to set a uniform the program does not declare.
+#if defined(PENUMBRA_GL_CHECKS) || !defined(NDEBUG)
+inline constexpr bool kStrictUniforms = true;
+#else
+inline constexpr bool kStrictUniforms = false;
+#endif
+
 // A linked program. Compile and link logs go into the thrown error with the label.
 class Program {
 public:
@@ -148,8 +144,9 @@ public:
     std::uint32_t id() const { return h_.id(); }
     const std::string& label() const { return label_; }
 
-    // Uniform setters for the bound program; unknown names (optimised out, or absent from this
-    // variant) are ignored.
+    // Uniform setters for the bound program. A uniform the source declares but the compiler
+    // optimised out is ignored; one the source does not declare (in the variant's active #ifdef
+    // blocks, see gl/uniforms.h) throws gl::Error in debug builds, naming it and the program.
     void set(const char* name, int v) const;
     void set(const char* name, float v) const;
     void set(const char* name, const glm::vec2& v) const;
@@ -157,12 +154,15 @@ public:
     void set(const char* name, const glm::vec4& v) const;
     void set(const char* name, const glm::mat3& v) const;
     void set(const char* name, const glm::mat4& v) const;
-    bool has_uniform(const char* name) const { return location(name) >= 0; }
+    // Declared in the source's active blocks (whether or not the compiler kept it); debug builds
+    // only (release builds do not scan the source and answer false).
+    bool declares(const std::string& name) const { return declared_.count(name) > 0; }
 
 private:
     int location(const char* name) const;
     Handle<ProgramDeleter> h_;
     std::string label_;
+    std::set<std::string> declared_;
     mutable std::unordered_map<std::string, int> locations_;
 };
 

@@ -55,6 +55,7 @@ public:
     }
 
     std::string description() const override { return "WebGL 1 canvas " + selector_ + " (Emscripten)"; }
+    Api api() const override { return Api::WebGL1; }
     bool has_default_framebuffer() const override { return true; }
 
     void run(const FrameCallback& frame) override {

@@ -75,6 +75,7 @@ public:
     }
 
     std::string description() const override { return description_; }
+    Api api() const override { return Api::GLES2; }
     bool has_default_framebuffer() const override { return true; }
 
     void run(const FrameCallback& frame) override {

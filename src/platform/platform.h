@@ -38,6 +38,9 @@ inline constexpr int F1 = 262;
 using KeyCallback = std::function<void(const KeyEvent&)>;
 
 enum class ContextEvent { Lost, Restored };
+
+// The API of the context a platform makes: GLES 2 (EGL: headless, GLFW) or WebGL 1 (a canvas).
+enum class Api { GLES2, WebGL1 };
 using ContextCallback = std::function<void(ContextEvent)>;
 
 class Platform {
@@ -45,6 +48,8 @@ public:
     virtual ~Platform() = default;
     // One line: API, version, renderer.
     virtual std::string description() const = 0;
+    // Which API the context speaks (the gl layer's capability probe needs it).
+    virtual Api api() const = 0;
     // True for a window or a canvas: draw to framebuffer 0 and it is shown. False headless.
     virtual bool has_default_framebuffer() const = 0;
     // Runs frames until the callback returns false (a browser returns at once and keeps calling).

@@ -1,0 +1,98 @@
+#include "gl/state.h"
+
+#include <cstdio>
+
+namespace penumbra::gl {
+
+bool StencilState::operator==(const StencilState& o) const {
+    return enabled == o.enabled && func == o.func && ref == o.ref && read_mask == o.read_mask &&
+           write_mask == o.write_mask && fail == o.fail && depth_fail == o.depth_fail && pass == o.pass;
+}
+
+bool PipelineState::operator==(const PipelineState& o) const {
+    return depth_test == o.depth_test && depth_func == o.depth_func && depth_write == o.depth_write &&
+           color_write == o.color_write && cull == o.cull && stencil == o.stencil;
+}
+
+std::string to_string(Compare c) {
+    switch (c) {
+        case Compare::Never: return "never";
+        case Compare::Less: return "less";
+        case Compare::LEqual: return "lequal";
+        case Compare::Equal: return "equal";
+        case Compare::GEqual: return "gequal";
+        case Compare::Greater: return "greater";
+        case Compare::NotEqual: return "notequal";
+        case Compare::Always: return "always";
+    }
+    return "?";
+}
+
+std::string to_string(StencilOp o) {
+    switch (o) {
+        case StencilOp::Keep: return "keep";
+        case StencilOp::Zero: return "zero";
+        case StencilOp::Replace: return "replace";
+        case StencilOp::Incr: return "incr";
+        case StencilOp::Decr: return "decr";
+    }
+    return "?";
+}
+
+std::string to_string(Cull c) {
+    switch (c) {
+        case Cull::None: return "none";
+        case Cull::Back: return "back";
+        case Cull::Front: return "front";
+    }
+    return "?";
+}
+
+std::string to_string(const PipelineState& s) {
+    std::string out = s.depth_test ? "depth " + to_string(s.depth_func) : std::string("depth off");
+    out += s.depth_write ? ", write" : ", no write";
+    out += s.color_write ? "; colour on" : "; colour off";
+    out += "; cull " + to_string(s.cull);
+    const StencilState& st = s.stencil;
+    if (!st.enabled) return out + "; stencil off";
+    char masks[48];
+    std::snprintf(masks, sizeof masks, " (read %02x, write %02x)", static_cast<unsigned>(st.read_mask),
+                  static_cast<unsigned>(st.write_mask));
+    out += "; stencil " + to_string(st.func) + " " + std::to_string(st.ref) + masks;
+    out += ", fail " + to_string(st.fail) + ", depth fail " + to_string(st.depth_fail) + ", pass " + to_string(st.pass);
+    return out;
+}
+
+std::string to_string(Sampling s) {
+    switch (s) {
+        case Sampling::Nearest: return "nearest";
+        case Sampling::Linear: return "linear";
+        case Sampling::LinearMipmap: return "linear-mipmap";
+    }
+    return "?";
+}
+
+std::string to_string(Wrap w) { return w == Wrap::Repeat ? "repeat" : "clamp"; }
+
+std::string to_string(RenderbufferFormat f) {
+    switch (f) {
+        case RenderbufferFormat::Depth16: return "depth16";
+        case RenderbufferFormat::Depth24: return "depth24";
+        case RenderbufferFormat::Depth24Stencil8: return "depth24-stencil8";
+        case RenderbufferFormat::DepthStencil: return "depth-stencil";
+        case RenderbufferFormat::Stencil8: return "stencil8";
+    }
+    return "?";
+}
+
+int bytes_per_pixel(TextureFormat) { return 4; }
+
+int bytes_per_pixel(RenderbufferFormat f) {
+    switch (f) {
+        case RenderbufferFormat::Depth16: return 2;
+        case RenderbufferFormat::Stencil8: return 1;
+        default: return 4;
+    }
+}
+
+}  // namespace penumbra::gl

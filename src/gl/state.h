@@ -1,0 +1,65 @@
+// The gl layer's plain values: pipeline state, texture and renderbuffer formats. No GL call is
+// made here (state.cpp only compares and prints), so a frame plan that holds these values can be
+// built and tested without a context.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace penumbra::gl {
+
+enum class Compare { Never, Less, LEqual, Equal, GEqual, Greater, NotEqual, Always };
+enum class StencilOp { Keep, Zero, Replace, Incr, Decr };
+enum class Cull { None, Back, Front };
+
+struct StencilState {
+    bool enabled = false;
+    Compare func = Compare::Always;
+    int ref = 0;
+    std::uint32_t read_mask = 0xFF;
+    std::uint32_t write_mask = 0xFF;
+    StencilOp fail = StencilOp::Keep, depth_fail = StencilOp::Keep, pass = StencilOp::Keep;
+    bool operator==(const StencilState& o) const;
+    bool operator!=(const StencilState& o) const { return !(*this == o); }
+};
+
+struct PipelineState {
+    bool depth_test = true;
+    Compare depth_func = Compare::Less;
+    bool depth_write = true;
+    bool color_write = true;
+    Cull cull = Cull::Back;
+    StencilState stencil;
+    bool operator==(const PipelineState& o) const;
+    bool operator!=(const PipelineState& o) const { return !(*this == o); }
+};
+
+std::string to_string(Compare c);    // "less"
+std::string to_string(StencilOp o);  // "replace"
+std::string to_string(Cull c);       // "back"
+// "depth less, write; colour on; cull back; stencil off" or "...; stencil equal 1 (read ff), pass incr"
+std::string to_string(const PipelineState& s);
+
+enum class TextureFormat {
+    RGBA8,  // GL_RGBA / GL_UNSIGNED_BYTE
+    Depth   // GL_DEPTH_COMPONENT / GL_UNSIGNED_INT (OES_depth_texture)
+};
+enum class Sampling { Nearest, Linear, LinearMipmap };
+enum class Wrap { Clamp, Repeat };
+
+enum class RenderbufferFormat {
+    Depth16,
+    Depth24,          // OES_depth24
+    Depth24Stencil8,  // OES_packed_depth_stencil, attached at DEPTH and STENCIL
+    DepthStencil,     // WebGL 1's DEPTH_STENCIL, attached once at DEPTH_STENCIL_ATTACHMENT
+    Stencil8
+};
+
+std::string to_string(Sampling s);            // "nearest"
+std::string to_string(Wrap w);                // "clamp"
+std::string to_string(RenderbufferFormat f);  // "depth24"
+// Bytes per pixel as the GPU is assumed to store them (estimates for memory figures).
+int bytes_per_pixel(TextureFormat f);
+int bytes_per_pixel(RenderbufferFormat f);
+
+}  // namespace penumbra::gl
