@@ -1,7 +1,6 @@
 // Shadow-map lookup for the camera pass. The encoding (ENC_R8, ENC_RGBA, else a depth texture),
-// the filter (FILTER_PCF4X4, FILTER_PCF2X2, else hard) and the bias rule (BIAS_AUTO or a
-// constant) are chosen by #define when the variant is compiled, so no shader branches on
-// settings at run time.
+// the filter's kernel (PCF_TAPS, PCF_SUM) and the bias rule (BIAS_AUTO or a constant) are chosen
+// by #define when the variant is compiled, so no shader branches on settings at run time.
 #include "pack.glsl"
 
 uniform sampler2D u_shadow_map;
@@ -53,31 +52,22 @@ float litAt(vec2 uv, float z, float bias) {
     return z > MP(shadowDepth(uv) + bias) ? 0.0 : 1.0;
 }
 
+#ifdef PCF_TAPS
+// One tap of the kernel: `offset` in texels from the lookup point.
+float litTap(vec2 offset, vec2 uv, float z, float bias) {
+    return litAt(uv + offset * u_texmapscale, z, bias);
+}
+
 // 1.0 where the light reaches, 0.0 in shadow, PCF fractions in between. Points outside the
 // light's frustum are lit: the map says nothing about them. normal: the receiver's unit normal in
-// world space (for BIAS_AUTO).
+// world space (for BIAS_AUTO). The kernel's taps (PCF_TAPS, PCF_SUM) are written into the variant
+// from shadow::pcf_offsets (render/variants.cpp): hard is one tap at the lookup point, PCF 2x2 four
+// at +-0.5 texel, PCF 4x4 sixteen at +-0.5 and +-1.5 texels (Bunnell & Pellacini).
 float shadowVisibility(vec4 shadowCoord, vec3 normal) {
     if (shadowCoord.w <= 0.0) return 1.0;
     vec3 c = MP(shadowCoord.xyz / shadowCoord.w);
     if (c.x < 0.0 || c.x > 1.0 || c.y < 0.0 || c.y > 1.0 || c.z < 0.0 || c.z > 1.0) return 1.0;
     float bias = shadowBias(normal, c);
-#if defined(FILTER_PCF4X4)
-    // 16 taps at -1.5, -0.5, 0.5, 1.5 texels: a 4x4 block of the map (Bunnell & Pellacini).
-    float sum = 0.0;
-    for (int i = 0; i < 4; ++i) {
-        for (int j = 0; j < 4; ++j) {
-            vec2 offset = vec2(float(i) - 1.5, float(j) - 1.5);
-            sum += litAt(c.xy + offset * u_texmapscale, c.z, bias);
-        }
-    }
-    return sum / 16.0;
-#elif defined(FILTER_PCF2X2)
-    float sum = litAt(c.xy + vec2(-0.5, -0.5) * u_texmapscale, c.z, bias);
-    sum += litAt(c.xy + vec2(0.5, -0.5) * u_texmapscale, c.z, bias);
-    sum += litAt(c.xy + vec2(-0.5, 0.5) * u_texmapscale, c.z, bias);
-    sum += litAt(c.xy + vec2(0.5, 0.5) * u_texmapscale, c.z, bias);
-    return sum * 0.25;
-#else
-    return litAt(c.xy, c.z, bias);
-#endif
+    return PCF_SUM(litTap, c.xy, c.z, bias) / float(PCF_TAPS);
 }
+#endif

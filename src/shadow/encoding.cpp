@@ -109,16 +109,4 @@ float auto_bias_constant(Encoding e, Precision p) {
     return depth_quantum(e, p) + compare + 2e-5f;
 }
 
-float kernel_reach_texels(Filter f) {
-    // Per axis: the largest tap offset, plus half a texel to the nearest texel centre, plus half a
-    // texel of margin. Without the margin the bias equals the worst-case depth step exactly and
-    // the comparison's own rounding decides, which shows as acne (measured on the course table).
-    switch (f) {
-        case Filter::Hard: return 1.0f;
-        case Filter::PCF2x2: return 1.5f;
-        case Filter::PCF4x4: return 2.5f;
-    }
-    return 1.0f;
-}
-
 }  // namespace penumbra::shadow

@@ -76,9 +76,7 @@ float unpack_rgba(const std::array<std::uint8_t, 4>& bytes, PackContext c = {});
 float depth_quantum(Encoding e, Precision p);
 
 // --bias auto: the constant part (the encoding's quantum plus the rounding of the comparison
-// itself) and the kernel's reach in texels per axis (how far from the fragment a tap's texel
-// centre can lie: the largest PCF offset, half a texel, and half a texel of margin).
+// itself); the slope part scales with the kernel's reach (shadow/pcf.h).
 float auto_bias_constant(Encoding e, Precision p);
-float kernel_reach_texels(Filter f);
 
 }  // namespace penumbra::shadow

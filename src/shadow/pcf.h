@@ -1,6 +1,9 @@
-// Percentage-closer filter kernels, in texels; the shader scales them by texmapscale = 1/size.
+// Percentage-closer filter kernels, in texels: the one definition of each filter's taps. The
+// shader generator writes them into the lookup (render/variants.cpp: PCF_SUM) and the CPU mirror
+// below averages the same taps, so the two cannot drift apart.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -10,6 +13,18 @@
 namespace penumbra::shadow {
 
 // Hard: {(0,0)}; PCF2x2: the 4 offsets (+-0.5, +-0.5); PCF4x4: the 16 offsets in {-1.5,-0.5,0.5,1.5}^2.
+// Rows (y) outer, columns (x) inner, bottom-left first.
 std::vector<glm::vec2> pcf_offsets(Filter filter);
+
+// --bias auto's reach of the kernel in texels per axis: the largest tap offset, plus half a texel
+// to the nearest texel centre, plus half a texel of margin. Without the margin the bias equals the
+// worst-case depth step exactly and the comparison's own rounding decides, which shows as acne
+// (measured on the course table).
+float kernel_reach_texels(Filter filter);
+
+// The CPU mirror of the shader's lookup: the fraction of taps where the receiver at depth z is lit
+// (z <= stored depth + bias), each tap at uv + offset * texel. `stored_depth` reads the map.
+float pcf_visibility(Filter filter, glm::vec2 uv, float z, float bias, glm::vec2 texel,
+                     const std::function<float(glm::vec2)>& stored_depth);
 
 }  // namespace penumbra::shadow

@@ -1,0 +1,146 @@
+#include "render/variants.h"
+
+#include <cstdio>
+
+#include "shadow/pcf.h"
+
+namespace penumbra::render {
+
+namespace {
+
+const char* encoding_define(shadow::Encoding e) {
+    switch (e) {
+        case shadow::Encoding::R8: return "ENC_R8";
+        case shadow::Encoding::RGBA: return "ENC_RGBA";
+        case shadow::Encoding::DepthTex: return "ENC_DEPTHTEX";
+    }
+    return "ENC_RGBA";
+}
+
+const char* filter_define(shadow::Filter f) {
+    switch (f) {
+        case shadow::Filter::Hard: return "FILTER_HARD";
+        case shadow::Filter::PCF2x2: return "FILTER_PCF2X2";
+        case shadow::Filter::PCF4x4: return "FILTER_PCF4X4";
+    }
+    return "FILTER_HARD";
+}
+
+std::string glsl_float(float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f", static_cast<double>(v));
+    return buf;
+}
+
+}  // namespace
+
+std::string Variant::key() const {
+    std::string k = vertex + "+" + fragment + "[";
+    for (size_t i = 0; i < defines.size(); ++i) k += (i ? "," : "") + defines[i];
+    return k + "]";
+}
+
+std::string Variant::tag() const {
+    std::string t;
+    for (const auto& d : defines) t += (t.empty() ? "" : "_") + d.substr(0, d.find(' '));
+    return t;
+}
+
+std::string Variant::name() const {
+    std::string k = vertex + "+" + fragment + "[";
+    for (size_t i = 0; i < defines.size(); ++i) k += (i ? "," : "") + defines[i].substr(0, defines[i].find(' '));
+    return k + "]";
+}
+
+std::vector<std::string> pcf_kernel_defines(shadow::Filter f) {
+    const auto taps = shadow::pcf_offsets(f);
+    std::string sum = "PCF_SUM(F, uv, z, bias) (";
+    for (size_t i = 0; i < taps.size(); ++i)
+        sum += std::string(i ? " + " : "") + "F(vec2(" + glsl_float(taps[i].x) + ", " + glsl_float(taps[i].y) +
+               "), uv, z, bias)";
+    return {"PCF_TAPS " + std::to_string(taps.size()), sum + ")"};
+}
+
+Variant lit_variant(const LitFeatures& f) {
+    Variant v{"lit.vert", "lit.frag", {}};
+    if (f.shadow_map) {
+        v.defines = {"SHADOW_MAP", encoding_define(f.encoding), filter_define(f.filter)};
+        for (auto& d : pcf_kernel_defines(f.filter)) v.defines.push_back(std::move(d));
+        if (f.bias_auto) {
+            v.defines.emplace_back("BIAS_AUTO");
+            if (f.light_perspective) v.defines.emplace_back("LIGHT_PERSPECTIVE");
+        }
+        if (f.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
+    } else if (f.in_shadow) {
+        v.defines = {"IN_SHADOW"};
+    }
+    if (f.textured) v.defines.emplace_back("TEXTURED");
+    if (f.spot) v.defines.emplace_back("LIGHT_SPOT");
+    if (f.visibility_aov) v.defines.emplace_back("AOV_VISIBILITY");
+    return v;
+}
+
+Variant depth_variant(shadow::Encoding e, const DepthPath& path) {
+    Variant v{"depth.vert", "depth.frag", {encoding_define(e)}};
+    if (path.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
+    if (path.pack_floor) v.defines.emplace_back("PACK_FLOOR");
+    return v;
+}
+
+Variant light_depth_variant(shadow::Encoding e, bool perspective, const DepthPath& path) {
+    Variant v{"light_depth.vert", "light_depth.frag", {encoding_define(e)}};
+    if (perspective) v.defines.emplace_back("LINEARIZE");
+    if (path.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
+    return v;
+}
+
+Variant probe_variant() { return {"light_depth.vert", "probe.frag", {}}; }
+
+Variant ramp_variant(shadow::Encoding e, const DepthPath& path) {
+    Variant v{"light_depth.vert", "ramp.frag", {encoding_define(e)}};
+    if (path.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
+    if (path.pack_floor) v.defines.emplace_back("PACK_FLOOR");
+    return v;
+}
+
+std::vector<Variant> all_variants() {
+    std::vector<Variant> out;
+    std::vector<LitFeatures> shadowing;
+    shadowing.push_back(LitFeatures{});  // no shadows
+    LitFeatures planar;
+    planar.in_shadow = true;
+    shadowing.push_back(planar);
+    for (auto e : shadow::kAllEncodings)
+        for (auto f : shadow::kAllFilters)
+            for (int bias = 0; bias < 3; ++bias)  // constant, auto orthographic, auto perspective
+                for (bool mediump : {false, true}) {
+                    LitFeatures sm;
+                    sm.shadow_map = true;
+                    sm.encoding = e;
+                    sm.filter = f;
+                    sm.bias_auto = bias > 0;
+                    sm.light_perspective = bias == 2;
+                    sm.mediump = mediump;
+                    shadowing.push_back(sm);
+                }
+    for (LitFeatures base : shadowing)
+        for (int bits = 0; bits < 8; ++bits) {
+            base.textured = bits & 1;
+            base.spot = bits & 2;
+            base.visibility_aov = bits & 4;
+            out.push_back(lit_variant(base));
+        }
+    for (auto e : shadow::kAllEncodings)
+        for (bool mediump : {false, true}) {
+            for (bool pack_floor : {false, true}) {
+                out.push_back(depth_variant(e, {mediump, pack_floor}));
+                if (e != shadow::Encoding::DepthTex) out.push_back(ramp_variant(e, {mediump, pack_floor}));
+            }
+            out.push_back(light_depth_variant(e, false, {mediump, false}));
+            out.push_back(light_depth_variant(e, true, {mediump, false}));
+        }
+    out.push_back(probe_variant());
+    return out;
+}
+
+}  // namespace penumbra::render

@@ -1,0 +1,63 @@
+// Shader variants as data: a file pair plus the #defines for the features in use. Which variant
+// each draw needs is decided when the frame is planned (no GL here); render/shader_library.h
+// compiles a variant on first use. The same list of every variant the renderer can ask for feeds
+// the glslangValidator test and the on-context compile test.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "shadow/encoding.h"
+
+namespace penumbra::render {
+
+struct Variant {
+    std::string vertex;                // file in shaders_gles2/, e.g. "lit.vert"
+    std::string fragment;              // e.g. "lit.frag"
+    // "NAME" (written as #define NAME 1) or "NAME TEXT" (#define NAME TEXT: generated code, e.g.
+    // the PCF kernel), e.g. {"SHADOW_MAP", "ENC_RGBA", "FILTER_PCF4X4", "PCF_TAPS 16", ...}.
+    std::vector<std::string> defines;
+    std::string key() const;           // "lit.vert+lit.frag[SHADOW_MAP,ENC_RGBA,...]"
+    std::string tag() const;           // the define names joined by "_" (file names)
+    std::string name() const;          // "lit.vert+lit.frag[SHADOW_MAP,PCF_TAPS,...]": names, no values
+    bool operator==(const Variant& o) const { return key() == o.key(); }
+};
+
+// What the lit shader needs for one object in one pass.
+struct LitFeatures {
+    bool shadow_map = false;  // with encoding and filter
+    shadow::Encoding encoding = shadow::Encoding::RGBA;
+    shadow::Filter filter = shadow::Filter::Hard;
+    bool in_shadow = false;   // planar: the region the stencil marked
+    bool textured = false;
+    bool spot = false;
+    bool visibility_aov = false;
+    bool bias_auto = false;          // receiver slope bias (with shadow_map)
+    bool light_perspective = false;  // the light's projection, for bias_auto's depth slope
+    bool mediump = false;            // emulate fp16 along the depth path
+};
+
+// How the depth path is compiled on this context: the emulated precision and what the unorm8
+// probe found (PACK_FLOOR when the context truncates).
+struct DepthPath {
+    bool mediump = false;
+    bool pack_floor = false;
+};
+
+Variant lit_variant(const LitFeatures& f);
+// The light's pass (also the planar stencil pass with DepthTex: colour off).
+Variant depth_variant(shadow::Encoding e, const DepthPath& path = {});
+Variant light_depth_variant(shadow::Encoding e, bool perspective, const DepthPath& path = {});
+// The unorm8 rounding probe's program.
+Variant probe_variant();
+// The precision test pattern: a ramp of depths packed as `e` packs them (R8 or RGBA).
+Variant ramp_variant(shadow::Encoding e, const DepthPath& path);
+
+// The PCF kernel of `f` as the shader's defines: PCF_TAPS (the count) and PCF_SUM(F, uv, z, bias),
+// the sum of F(offset, uv, z, bias) over shadow::pcf_offsets(f).
+std::vector<std::string> pcf_kernel_defines(shadow::Filter f);
+
+// Every variant the renderer can build.
+std::vector<Variant> all_variants();
+
+}  // namespace penumbra::render
