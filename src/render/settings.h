@@ -1,13 +1,11 @@
-// Every technique choice in one value type, with one parser and one printer, used alike by the
-// command line, the web page's URL, the desktop keys and the benchmark sweep. A result is always
-// labelled with the exact settings that made it (to_args()).
+// What the renderer is asked to do, as one value type: the technique part of the options (the
+// job part, what to render and where it goes, is render::Job in options.h). Every field has one
+// entry in the option table (options.h), which parses and prints it for the command line, the
+// pages, the desktop app and the bench alike.
 #pragma once
 
 #include <optional>
-#include <string>
 #include <string_view>
-#include <utility>
-#include <vector>
 
 #include "shadow/encoding.h"
 
@@ -19,15 +17,14 @@ enum class Aov {
     Visibility,  // 8-bit grey: 255 where the light reaches the surface seen at the pixel, 0 in shadow
     LightDepth   // the shadow map, depth scaled for viewing
 };
+inline constexpr Technique kAllTechniques[] = {Technique::ShadowMap, Technique::Planar, Technique::None};
+inline constexpr Aov kAllAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth};
 
 std::string_view to_string(Technique t);
 std::string_view to_string(Aov a);
 
 struct Settings {
-    std::string scene = "teapot";  // "teapot" or a .gltf/.glb path
-    double time = 0.0;             // seconds; animation is a pure function of it
-    int width = 512;
-    int height = 512;
+    Technique technique = Technique::ShadowMap;
     shadow::Encoding encoding = shadow::Encoding::RGBA;
     shadow::Filter filter = shadow::Filter::Hard;
     int map_size = 1024;
@@ -35,9 +32,6 @@ struct Settings {
     bool bias_auto = false;     // --bias auto: the encoding's quantum plus a receiver slope term
     shadow::Precision precision = shadow::Precision::Highp;  // mediump: emulated fp16 depth path
     Aov aov = Aov::Color;
-    Technique technique = Technique::ShadowMap;
-    std::string out;  // PNG path; empty: write nothing
-    int frames = 1;
 
     // The constant bias: the chosen one, the encoding's default, or with bias_auto the quantum part.
     float effective_bias() const {
@@ -45,18 +39,7 @@ struct Settings {
         return bias ? *bias : shadow::default_bias(encoding);
     }
     bool operator==(const Settings& o) const;
+    bool operator!=(const Settings& o) const { return !(*this == o); }
 };
-
-// The options in their command-line spelling, without the leading "--", in printing order.
-const std::vector<std::string_view>& option_names();
-
-// Parse one option's value into s. Returns an empty string on success, else one line naming the
-// problem ("--encoding: unknown value 'r16' (r8, rgba, depthtex)"). s is unchanged on failure.
-std::string parse_option(Settings& s, std::string_view name, std::string_view value);
-
-// Every option with its value, as parse_option reads it back (an absent bias prints "default").
-std::vector<std::pair<std::string, std::string>> to_pairs(const Settings& s);
-// "--scene teapot --time 0 ..." for labels and logs.
-std::string to_args(const Settings& s);
 
 }  // namespace penumbra::render

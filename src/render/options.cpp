@@ -1,0 +1,359 @@
+#include "render/options.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace penumbra::render {
+
+std::string_view to_string(Technique t) {
+    switch (t) {
+        case Technique::ShadowMap: return "shadowmap";
+        case Technique::Planar: return "planar";
+        case Technique::None: return "none";
+    }
+    return "?";
+}
+
+std::string_view to_string(Aov a) {
+    switch (a) {
+        case Aov::Color: return "color";
+        case Aov::Visibility: return "visibility";
+        case Aov::LightDepth: return "light-depth";
+    }
+    return "?";
+}
+
+bool Settings::operator==(const Settings& o) const {
+    return technique == o.technique && encoding == o.encoding && filter == o.filter && map_size == o.map_size &&
+           bias == o.bias && bias_auto == o.bias_auto && precision == o.precision && aov == o.aov;
+}
+
+bool Job::operator==(const Job& o) const {
+    return scene == o.scene && time == o.time && width == o.width && height == o.height && out == o.out &&
+           frames == o.frames;
+}
+
+// ---- parsing ----------------------------------------------------------------------------------
+
+bool parse_int(std::string_view v, int& out) {
+    if (v.empty() || v.size() > 11) return false;
+    const std::string s(v);
+    char* end = nullptr;
+    const long x = std::strtol(s.c_str(), &end, 10);
+    if (end != s.c_str() + s.size() || std::isspace(static_cast<unsigned char>(s.front()))) return false;
+    if (x < std::numeric_limits<int>::min() || x > std::numeric_limits<int>::max()) return false;
+    out = static_cast<int>(x);
+    return true;
+}
+
+bool parse_number(std::string_view v, double& out) {
+    const std::string s(v);
+    if (s.empty() || std::isspace(static_cast<unsigned char>(s.front()))) return false;
+    char* end = nullptr;
+    const double x = std::strtod(s.c_str(), &end);
+    if (end != s.c_str() + s.size() || !std::isfinite(x)) return false;
+    out = x;
+    return true;
+}
+
+bool parse_size(std::string_view v, int& w, int& h) {
+    const auto x = v.find('x');
+    return x != std::string_view::npos && parse_int(v.substr(0, x), w) && parse_int(v.substr(x + 1), h);
+}
+
+std::string format_number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+std::string shortest_float(float f) {
+    for (int precision = 1; precision <= 9; ++precision) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.*g", precision, static_cast<double>(f));
+        if (static_cast<float>(std::strtod(buf, nullptr)) == f) return buf;
+    }
+    return format_number(static_cast<double>(f));
+}
+
+namespace {
+
+std::string number_text(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+std::string word_list(const std::vector<Choice>& choices, const char* quote = "") {
+    std::string s;
+    for (const Choice& c : choices) s += (s.empty() ? "" : ", ") + std::string(quote) + std::string(c.value) + quote;
+    return s;
+}
+
+// "" when v lies in the option's range, else the rule it breaks.
+std::string range_problem(const OptionInfo& o, double v) {
+    const bool low = std::isfinite(o.min), high = std::isfinite(o.max);
+    if ((!low || v >= o.min) && (!high || v <= o.max)) return {};
+    if (low && high) return "must lie in [" + number_text(o.min) + ", " + number_text(o.max) + "]";
+    if (low) return "must be at least " + number_text(o.min);
+    return "must be at most " + number_text(o.max);
+}
+
+std::string range_words(const OptionInfo& o) {
+    const bool low = std::isfinite(o.min), high = std::isfinite(o.max);
+    if (low && high) return " in [" + number_text(o.min) + ", " + number_text(o.max) + "]";
+    if (low) return " >= " + number_text(o.min);
+    if (high) return " <= " + number_text(o.max);
+    return {};
+}
+
+}  // namespace
+
+std::string accepted_values(const OptionInfo& o) {
+    switch (o.type) {
+        case OptionType::Choice: return word_list(o.choices);
+        case OptionType::Integer: return "a whole number" + range_words(o);
+        case OptionType::Number: return "a number" + range_words(o);
+        case OptionType::Size: return "WIDTHxHEIGHT";
+        case OptionType::Text: return std::string(o.help);
+        case OptionType::NumberOrWord: return "a number" + range_words(o) + ", or " + word_list(o.choices);
+    }
+    return {};
+}
+
+std::string check_value(const OptionInfo& o, std::string_view value) {
+    const std::string opt = "--" + std::string(o.name) + ": ";
+    const std::string quoted = "'" + std::string(value) + "'";
+    const auto among = [&] {
+        for (const Choice& c : o.choices)
+            if (c.value == value) return true;
+        return false;
+    };
+    switch (o.type) {
+        case OptionType::Choice:
+            if (!among()) return opt + "unknown value " + quoted + " (" + word_list(o.choices) + ")";
+            return {};
+        case OptionType::Integer: {
+            int v = 0;
+            if (!parse_int(value, v)) return opt + "not a whole number: " + quoted;
+            if (std::string r = range_problem(o, v); !r.empty()) return opt + r + ", got " + quoted;
+            return {};
+        }
+        case OptionType::Number:
+        case OptionType::NumberOrWord: {
+            if (o.type == OptionType::NumberOrWord && among()) return {};
+            double v = 0.0;
+            if (!parse_number(value, v))
+                return opt + "not a number: " + quoted +
+                       (o.type == OptionType::NumberOrWord ? " (or " + word_list(o.choices, "'") + ")" : "");
+            if (std::string r = range_problem(o, v); !r.empty()) return opt + r + ", got " + quoted;
+            return {};
+        }
+        case OptionType::Size: {
+            int w = 0, h = 0;
+            if (!parse_size(value, w, h)) return opt + "expected WIDTHxHEIGHT, got " + quoted;
+            if (w < 1 || h < 1) return opt + "width and height must be at least 1, got " + quoted;
+            return {};
+        }
+        case OptionType::Text:
+            if (value.empty() && !o.may_be_empty) return opt + "needs a value: " + std::string(o.help);
+            return {};
+    }
+    return {};
+}
+
+std::string parse_list(const OptionInfo& o, std::string_view text, std::vector<std::string>& out) {
+    std::vector<std::string> items;
+    size_t start = 0;
+    while (start <= text.size()) {
+        size_t end = text.find(',', start);
+        if (end == std::string_view::npos) end = text.size();
+        const std::string_view item = text.substr(start, end - start);
+        if (std::string err = check_value(o, item); !err.empty()) return err;
+        items.emplace_back(item);
+        start = end + 1;
+    }
+    out.insert(out.end(), items.begin(), items.end());
+    return {};
+}
+
+// ---- the table --------------------------------------------------------------------------------
+
+namespace {
+
+template <typename E, size_t N>
+E enum_of(std::string_view v, const E (&all)[N]) {
+    for (E e : all)
+        if (to_string(e) == v) return e;
+    return all[0];  // unreachable: check_value accepted v among the choices
+}
+
+int int_of(std::string_view v) {
+    int x = 0;
+    parse_int(v, x);
+    return x;
+}
+
+double number_of(std::string_view v) {
+    double x = 0.0;
+    parse_number(v, x);
+    return x;
+}
+
+OptionInfo info(std::string_view name, OptionPart part, OptionType type, std::string_view help, std::string_view label,
+                std::vector<Choice> choices = {}) {
+    OptionInfo o;
+    o.name = name;
+    o.part = part;
+    o.type = type;
+    o.help = help;
+    o.label = label;
+    o.choices = std::move(choices);
+    return o;
+}
+
+std::vector<Option<Options>> make_table() {
+    using P = OptionPart;
+    using T = OptionType;
+    std::vector<Option<Options>> t;
+    const auto add = [&](OptionInfo info, void (*store)(Options&, std::string_view), std::string (*print)(const Options&)) {
+        t.push_back({std::move(info), store, print});
+    };
+
+    OptionInfo scene = info("scene", P::Job, T::Text, "teapot (the course scene) or FILE.gltf / FILE.glb", "Scene");
+    add(scene, [](Options& o, std::string_view v) { o.job.scene = std::string(v); },
+        [](const Options& o) { return o.job.scene; });
+
+    OptionInfo time = info("time", P::Job, T::Number, "seconds; the animation is a pure function of t", "Time (s)");
+    add(time, [](Options& o, std::string_view v) { o.job.time = number_of(v); },
+        [](const Options& o) { return format_number(o.job.time); });
+
+    OptionInfo size = info("size", P::Job, T::Size, "WxH of the image", "Image size");
+    add(size, [](Options& o, std::string_view v) { parse_size(v, o.job.width, o.job.height); },
+        [](const Options& o) { return std::to_string(o.job.width) + "x" + std::to_string(o.job.height); });
+
+    OptionInfo encoding = info("encoding", P::Technique, T::Choice, "the depth in the shadow map", "Depth encoding",
+                        {{"r8", "8-bit red (r8)"}, {"rgba", "bit-shift packed RGBA (rgba)"}, {"depthtex", "depth texture (depthtex)"}});
+    add(encoding, [](Options& o, std::string_view v) { o.settings.encoding = enum_of(v, shadow::kAllEncodings); },
+        [](const Options& o) { return std::string(shadow::to_string(o.settings.encoding)); });
+
+    OptionInfo filter = info("filter", P::Technique, T::Choice, "percentage-closer filtering of the lookup", "Filter",
+                      {{"hard", "hard: one tap"}, {"pcf2x2", "2x2 PCF"}, {"pcf4x4", "4x4 PCF"}});
+    add(filter, [](Options& o, std::string_view v) { o.settings.filter = enum_of(v, shadow::kAllFilters); },
+        [](const Options& o) { return std::string(shadow::to_string(o.settings.filter)); });
+
+    OptionInfo map_size = info("map-size", P::Technique, T::Integer, "shadow map width = height in texels", "Map size");
+    map_size.min = 1;
+    map_size.presets = {{"256", "256 x 256"}, {"512", "512 x 512"}, {"1024", "1024 x 1024"}, {"2048", "2048 x 2048"},
+                        {"4096", "4096 x 4096"}};
+    add(map_size, [](Options& o, std::string_view v) { o.settings.map_size = int_of(v); },
+        [](const Options& o) { return std::to_string(o.settings.map_size); });
+
+    OptionInfo bias = info("bias", P::Technique, T::NumberOrWord,
+                    "depth offset, 'default' (r8 0.005, rgba and depthtex 0.0015) or 'auto' (quantum + receiver slope)",
+                    "Bias", {{"default", "the encoding's default"}, {"auto", "auto: the encoding's quantum + the surface's slope"}});
+    bias.min = 0.0;
+    bias.max = 1.0;
+    bias.step = 0.0005;
+    add(bias,
+        [](Options& o, std::string_view v) {
+            o.settings.bias_auto = v == "auto";
+            if (v == "default" || v == "auto") o.settings.bias.reset();
+            else o.settings.bias = static_cast<float>(number_of(v));
+        },
+        [](const Options& o) {
+            const Settings& s = o.settings;
+            return s.bias_auto ? std::string("auto") : s.bias ? shortest_float(*s.bias) : "default";
+        });
+
+    OptionInfo precision = info("precision", P::Technique, T::Choice,
+                         "mediump: emulated fp16 along the depth path, as a phone computes it", "Precision",
+                         {{"highp", "highp (float32)"}, {"mediump", "mediump, emulated (fp16, as on a phone)"}});
+    add(precision,
+        [](Options& o, std::string_view v) {
+            constexpr shadow::Precision all[] = {shadow::Precision::Highp, shadow::Precision::Mediump};
+            o.settings.precision = enum_of(v, all);
+        },
+        [](const Options& o) { return std::string(shadow::to_string(o.settings.precision)); });
+
+    OptionInfo aov = info("aov", P::Technique, T::Choice, "what the image shows", "Show",
+                   {{"color", "colour"}, {"visibility", "visibility (white lit, black shadowed)"},
+                    {"light-depth", "the shadow map's depth"}});
+    add(aov, [](Options& o, std::string_view v) { o.settings.aov = enum_of(v, kAllAovs); },
+        [](const Options& o) { return std::string(to_string(o.settings.aov)); });
+
+    OptionInfo technique = info("technique", P::Technique, T::Choice, "the shadow technique", "Technique",
+                         {{"shadowmap", "shadow map"}, {"planar", "planar projected shadows (stencil)"}, {"none", "no shadows"}});
+    add(technique, [](Options& o, std::string_view v) { o.settings.technique = enum_of(v, kAllTechniques); },
+        [](const Options& o) { return std::string(to_string(o.settings.technique)); });
+
+    OptionInfo out = info("out", P::Job, T::Text, "FILE.png (top row first); none: write nothing", "Output");
+    out.may_be_empty = true;
+    add(out, [](Options& o, std::string_view v) { o.job.out = std::string(v); }, [](const Options& o) { return o.job.out; });
+
+    OptionInfo frames = info("frames", P::Job, T::Integer, "render N frames, t advancing 1/60 s, and print the median ms/frame",
+                      "Frames");
+    frames.min = 1;
+    add(frames, [](Options& o, std::string_view v) { o.job.frames = int_of(v); },
+        [](const Options& o) { return std::to_string(o.job.frames); });
+    return t;
+}
+
+}  // namespace
+
+const std::vector<Option<Options>>& option_table() {
+    static const std::vector<Option<Options>> table = make_table();
+    return table;
+}
+
+const OptionInfo& option_info(std::string_view name) {
+    if (const auto* o = find_option(option_table(), name)) return o->info;
+    throw std::logic_error("no option --" + std::string(name));
+}
+
+std::string parse_option(Options& o, std::string_view name, std::string_view value) {
+    return set_option(option_table(), o, name, value);
+}
+
+std::string parse_option(Settings& s, std::string_view name, std::string_view value) {
+    const auto* o = find_option(option_table(), name);
+    if (o && o->info.part != OptionPart::Technique) return "--" + std::string(name) + ": not a technique setting";
+    Options all;
+    all.settings = s;
+    std::string err = parse_option(all, name, value);
+    if (err.empty()) s = all.settings;
+    return err;
+}
+
+std::vector<std::pair<std::string, std::string>> to_pairs(const Options& o) {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& opt : option_table()) out.emplace_back(std::string(opt.info.name), opt.print(o));
+    return out;
+}
+
+std::vector<std::pair<std::string, std::string>> to_pairs(const Settings& s) {
+    Options o;
+    o.settings = s;
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& opt : option_table())
+        if (opt.info.part == OptionPart::Technique) out.emplace_back(std::string(opt.info.name), opt.print(o));
+    return out;
+}
+
+namespace {
+std::string args_of(const std::vector<std::pair<std::string, std::string>>& pairs) {
+    std::string out;
+    for (const auto& [k, v] : pairs) {
+        if (k == "out" && v.empty()) continue;
+        out += (out.empty() ? "--" : " --") + k + " " + v;
+    }
+    return out;
+}
+}  // namespace
+
+std::string to_args(const Options& o) { return args_of(to_pairs(o)); }
+std::string to_args(const Settings& s) { return args_of(to_pairs(s)); }
+
+}  // namespace penumbra::render
