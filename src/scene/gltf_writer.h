@@ -19,8 +19,7 @@ struct GltfWriteOptions {
     std::string generator = "penumbra";
 };
 
-// The glTF JSON text for `scene`. Camera::projection (an override such as the light's view) has
-// no glTF form: the camera is written from yfov/znear/zfar.
+// The glTF JSON text for `scene`; the camera is written from yfov/znear/zfar.
 std::string to_gltf(const Scene& scene, const GltfWriteOptions& options = {});
 
 // Writes to_gltf(scene) to `path` through a temporary file renamed into place. Returns "" or one

@@ -64,9 +64,6 @@ struct Camera {
     float znear = 0.1f;
     float zfar = 100.0f;
     float aspect = 0.0f;     // 0: take the viewport's
-    // When set, replaces the perspective made from yfov/znear/zfar/aspect (e.g. the light's own
-    // orthographic projection, to show the scene as the light sees it).
-    std::optional<glm::mat4> projection;
 };
 
 struct Bounds {

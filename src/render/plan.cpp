@@ -1,0 +1,334 @@
+// plan(): what every frame has (the camera's view, its target and its pass) around what the
+// technique in use adds (render/techniques/). No GL here.
+#include "render/plan.h"
+
+#include <algorithm>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render/techniques/technique.h"
+
+namespace penumbra::render {
+
+namespace {
+
+constexpr glm::vec4 kBackground{0.12f, 0.13f, 0.16f, 1.0f};
+constexpr glm::vec4 kWhite{1.0f};
+constexpr float kAmbient = 0.25f;
+
+bool valid_mesh(const scene::Scene& s, int mesh) { return mesh >= 0 && mesh < static_cast<int>(s.meshes.size()); }
+
+const scene::Material& material_of(const scene::Scene& s, int material) {
+    static const scene::Material fallback{};
+    if (material < 0 || material >= static_cast<int>(s.materials.size())) return fallback;
+    return s.materials[static_cast<size_t>(material)];
+}
+
+std::string size_str(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+// The resource behind a texture output: colour, and depth (with stencil where a technique needs it).
+ResourceDesc texture_desc(const Output& o, const gl::Caps& caps, bool stencil) {
+    ResourceDesc d;
+    d.name = o.name;
+    d.width = o.width;
+    d.height = o.height;
+    d.depth_buffer = stencil ? caps.depth_stencil_format() : caps.depth_format();
+    d.sampling = o.sampling;
+    d.wrap = o.wrap;
+    return d;
+}
+
+std::string output_name(const Output& o) {
+    if (o.window)
+        return "window " + size_str(o.width, o.height) +
+               (o.x || o.y || o.clip ? " at (" + std::to_string(o.x) + ", " + std::to_string(o.y) + ")" : "");
+    if (o.name == "camera") return "offscreen " + size_str(o.width, o.height);
+    return "texture " + o.name + " " + size_str(o.width, o.height);
+}
+
+CameraView camera_view(const scene::Scene& scene, const FrameInputs& in) {
+    const scene::Camera& cam = scene.camera;
+    CameraView v;
+    v.view = in.view ? *in.view : cam.view;
+    const float aspect =
+        cam.aspect > 0.0f ? cam.aspect : static_cast<float>(in.output.width) / static_cast<float>(in.output.height);
+    v.proj = in.projection ? *in.projection : glm::perspective(cam.yfov, aspect, cam.znear, cam.zfar);
+    v.view_proj = v.proj * v.view;
+    v.position = glm::vec3(glm::inverse(v.view)[3]);
+    return v;
+}
+
+}  // namespace
+
+// ---- inputs ------------------------------------------------------------------------------------
+
+Output Output::offscreen(int width, int height) {
+    Output o;
+    o.width = width;
+    o.height = height;
+    return o;
+}
+
+Output Output::to_window(int width, int height) {
+    Output o;
+    o.window = true;
+    o.width = width;
+    o.height = height;
+    return o;
+}
+
+Output Output::window_region(int x, int y, int width, int height) {
+    Output o = to_window(width, height);
+    o.x = x;
+    o.y = y;
+    o.clip = true;
+    return o;
+}
+
+Output Output::texture(std::string name, int width, int height, gl::Sampling sampling, gl::Wrap wrap) {
+    Output o;
+    o.name = std::move(name);
+    o.width = width;
+    o.height = height;
+    o.sampling = sampling;
+    o.wrap = wrap;
+    return o;
+}
+
+FrameInputs offscreen(int width, int height) {
+    FrameInputs in;
+    in.output = Output::offscreen(width, height);
+    return in;
+}
+
+// ---- resources and passes ----------------------------------------------------------------------
+
+std::size_t ResourceDesc::bytes() const {
+    const auto px = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    std::size_t per = 0;
+    if (color) per += static_cast<std::size_t>(gl::bytes_per_pixel(gl::TextureFormat::RGBA8));
+    if (depth_texture) per += static_cast<std::size_t>(gl::bytes_per_pixel(gl::TextureFormat::Depth));
+    if (depth_buffer) per += static_cast<std::size_t>(gl::bytes_per_pixel(*depth_buffer));
+    return px * per;
+}
+
+std::string ResourceDesc::describe() const {
+    std::string s = size_str(width, height);
+    std::string parts;
+    if (color) parts += "rgba8";
+    if (depth_texture) parts += std::string(parts.empty() ? "" : " + ") + "depth texture";
+    if (depth_buffer) parts += std::string(parts.empty() ? "" : " + ") + gl::to_string(*depth_buffer);
+    return s + " " + parts + ", " + gl::to_string(sampling) + ", " + gl::to_string(wrap);
+}
+
+bool ResourceDesc::operator==(const ResourceDesc& o) const {
+    return name == o.name && width == o.width && height == o.height && color == o.color &&
+           depth_buffer == o.depth_buffer && depth_texture == o.depth_texture && sampling == o.sampling && wrap == o.wrap;
+}
+
+std::vector<int> Pass::reads() const {
+    std::vector<int> out;
+    const auto add = [&](int r) {
+        if (r >= 0 && std::find(out.begin(), out.end(), r) == out.end()) out.push_back(r);
+    };
+    for (const Binding& b : bindings)
+        for (const TextureBinding& t : b.textures) add(t.resource);
+    for (const Draw& d : draws) add(d.image_resource);
+    return out;
+}
+
+int FramePlan::resource_index(std::string_view name) const {
+    for (size_t i = 0; i < resources.size(); ++i)
+        if (resources[i].desc.name == name) return static_cast<int>(i);
+    return -1;
+}
+
+const PlannedResource* FramePlan::resource(std::string_view name) const {
+    const int i = resource_index(name);
+    return i < 0 ? nullptr : &resources[static_cast<size_t>(i)];
+}
+
+bool FramePlan::has_pass(std::string_view name) const {
+    return std::any_of(passes.begin(), passes.end(), [&](const Pass& p) { return p.name == name; });
+}
+
+bool FramePlan::drawn(std::string_view name) const {
+    const int r = resource_index(name);
+    return r >= 0 && std::any_of(passes.begin(), passes.end(),
+                                 [&](const Pass& p) { return p.target.resource == r && !p.skipped; });
+}
+
+// ---- the context the modules plan in -----------------------------------------------------------
+
+int PlanContext::add_resource(ResourceDesc desc, std::string content, std::string purpose) {
+    if (const int i = plan.resource_index(desc.name); i >= 0) return i;
+    PlannedResource r;
+    r.reused = false;
+    if (previous && !content.empty())
+        if (const PlannedResource* before = previous->resource(desc.name))
+            r.reused = before->desc == desc && before->content == content;
+    r.desc = std::move(desc);
+    r.content = std::move(content);
+    r.purpose = std::move(purpose);
+    plan.resources.push_back(std::move(r));
+    return static_cast<int>(plan.resources.size()) - 1;
+}
+
+Pass& PlanContext::add_pass(Pass pass) {
+    if (pass.target.resource >= 0) pass.skipped = plan.resources[static_cast<size_t>(pass.target.resource)].reused;
+    plan.passes.push_back(std::move(pass));
+    return plan.passes.back();
+}
+
+Draw PlanContext::object_draw(int object) {
+    const scene::Object& o = scene.objects[static_cast<size_t>(object)];
+    Draw d;
+    d.object = object;
+    d.label = o.name;
+    d.mesh = o.mesh;
+    d.material = o.material;
+    for (const ObjectOverride& ov : inputs.objects)
+        if (ov.object == object) {
+            if (ov.mesh >= 0) d.mesh = ov.mesh;
+            if (ov.material >= 0) d.material = ov.material;
+        }
+    d.world = o.world;
+    const scene::Material& m = material_of(scene, d.material);
+    if (m.base_color_texture >= 0 && m.base_color_texture < static_cast<int>(scene.images.size()) &&
+        !scene.meshes[static_cast<size_t>(d.mesh)].uvs.empty()) {
+        d.image = m.base_color_texture;
+        for (const ImageOverride& io : inputs.images)
+            if (io.image == d.image)
+                d.image_resource = add_resource(texture_desc(io.texture, caps, false), "",
+                                                "sampled where the scene has image " + std::to_string(io.image));
+    }
+    return d;
+}
+
+LitFeatures PlanContext::base_features(const Draw& d) const {
+    LitFeatures f;
+    f.textured = d.image >= 0;
+    f.spot = light.type == scene::LightType::Spot;
+    f.visibility_aov = settings.aov == Aov::Visibility;
+    return f;
+}
+
+glm::vec4 PlanContext::light_vector() const {
+    return light.type == scene::LightType::Directional ? glm::vec4(-light.direction, 0.0f)
+                                                        : glm::vec4(light.position, 1.0f);
+}
+
+std::vector<Binding> PlanContext::lit_bindings() const {
+    std::vector<Binding> out;
+    out.push_back({"camera",
+                   {{"u_view_proj", plan.camera.view_proj},
+                    {"u_camera_pos", plan.camera.position},
+                    {"u_ambient", kAmbient},
+                    {"u_light", light_vector()},
+                    {"u_light_color", light.color}},
+                   {}});
+    if (light.type == scene::LightType::Spot)
+        out.push_back({"spot light",
+                       {{"u_spot_direction", glm::normalize(light.direction)},
+                        {"u_spot_cos", glm::vec2(std::cos(light.spot_outer_cone), std::cos(light.spot_inner_cone))}},
+                       {}});
+    return out;
+}
+
+// ---- checking and planning ---------------------------------------------------------------------
+
+scene::Bounds shadowed_bounds(const scene::Scene& scene) {
+    scene::Bounds b;
+    for (const auto& o : scene.objects)
+        if (valid_mesh(scene, o.mesh) && (o.casts_shadow || o.receives_shadow)) b.add(scene::object_bounds(scene, o));
+    return b;
+}
+
+shadow::LightFrustum fit_light_view(const scene::Scene& scene, const scene::Light& light) {
+    const scene::Bounds b = shadowed_bounds(scene);
+    return shadow::fit_light_frustum(light, scene::corners(b), b.center());
+}
+
+namespace {
+
+// Everything plan() and check() share: the context with the scene's requirements gathered.
+struct Planning {
+    FramePlan plan;
+    PlanContext ctx;
+    const Module& module;
+
+    Planning(const scene::Scene& scene, const Settings& s, const gl::Caps& caps, const FrameInputs& in,
+             const FramePlan* previous)
+        : ctx{scene, s, caps, in, previous, plan, in.light ? *in.light : scene.light, {}, {}, {}, {}, {}},
+          module(technique_module(s.technique)) {
+        plan.settings = s;
+        plan.output = output_name(in.output);
+        for (size_t i = 0; i < scene.objects.size(); ++i) {
+            const auto& o = scene.objects[i];
+            if (!valid_mesh(scene, o.mesh)) continue;
+            ctx.drawable.push_back(static_cast<int>(i));
+            if (o.casts_shadow) ctx.casters.push_back(static_cast<int>(i));
+            if (o.casts_shadow || o.receives_shadow) ctx.shadowed.add(scene::object_bounds(scene, o));
+        }
+        ctx.depth_path = {s.precision == shadow::Precision::Mediump, caps.unorm_floor};
+        plan.camera = camera_view(scene, in);
+    }
+};
+
+}  // namespace
+
+std::string check(const scene::Scene& scene, const Settings& s, const gl::Caps& caps, const FrameInputs& in) {
+    const Output& out = in.output;
+    const int max = caps.max_target_size();
+    if (!out.window && (out.width > max || out.height > max))
+        return "--size " + size_str(out.width, out.height) + ": beyond this context's maximum of " + std::to_string(max);
+    for (const ObjectOverride& ov : in.objects)
+        if (ov.object < 0 || ov.object >= static_cast<int>(scene.objects.size()) ||
+            (ov.mesh >= 0 && !valid_mesh(scene, ov.mesh)) || ov.material >= static_cast<int>(scene.materials.size()))
+            return "an object override names an object, mesh or material the scene does not have";
+    if (s.aov == Aov::LightDepth && s.technique != Technique::ShadowMap)
+        return "--aov light-depth: needs --technique shadowmap";
+    Planning p(scene, s, caps, in, nullptr);
+    return p.module.check(p.ctx);
+}
+
+FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& caps, const FrameInputs& in,
+               const FramePlan* previous) {
+    Planning p(scene, s, caps, in, previous);
+    PlanContext& c = p.ctx;
+    const Output& out = in.output;
+    const bool stencil = p.module.needs_stencil(c);
+    c.camera_target = {-1, out.width, out.height, out.x, out.y, out.clip};
+    if (!out.window)
+        c.camera_target = {c.add_resource(texture_desc(out, caps, stencil), "", "the camera's image"), out.width,
+                           out.height, 0, 0, false};
+
+    p.module.before_camera(c);
+    if (!p.module.own_view(c)) {
+        Pass cam;
+        cam.name = "camera";
+        cam.module = "frame";
+        cam.target = c.camera_target;
+        cam.clear = Clear{s.aov == Aov::Visibility ? kWhite : kBackground, true, stencil};
+        cam.bindings = c.lit_bindings();
+        std::vector<CameraItem> items;
+        const std::uint32_t all = (1u << cam.bindings.size()) - 1u;
+        for (int i : c.drawable) {
+            if (p.module.keeps_out_of_camera(c, i)) continue;
+            cam.draws.push_back(c.object_draw(i));
+            items.push_back({i, c.base_features(cam.draws.back()), all});
+        }
+        cam.detail = p.plan.output + ", " + std::to_string(cam.draws.size()) + " object(s)";
+        p.module.shade(c, cam, items);
+        for (size_t i = 0; i < items.size(); ++i) {
+            cam.draws[i].variant = lit_variant(items[i].features);
+            cam.draws[i].bindings = items[i].bindings;
+        }
+        if (s.aov == Aov::Visibility) cam.detail += ", visibility AOV";
+        c.add_pass(std::move(cam));
+    }
+    p.module.after_camera(c);
+    return std::move(p.plan);
+}
+
+}  // namespace penumbra::render

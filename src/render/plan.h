@@ -1,0 +1,216 @@
+// The frame as data. plan() turns a scene, the settings, the context's capabilities and the
+// caller's inputs (where the image goes, a view or a light to use instead of the scene's, a
+// texture to sample instead of a scene image) into a FramePlan: the resources the frame needs
+// (shadow maps, offscreen targets: described by value, allocated by the renderer's pool) and the
+// passes that fill them, each with its target, clear, pipeline state, draws (and each draw's shader
+// variant), and the uniforms and textures it binds. Renderer::execute() runs a plan; it is the only
+// code that draws a frame. No GL here: a plan is made, printed and tested without a context.
+//
+// The techniques (render/techniques/) add their passes, resources and shader features to a plan;
+// this file's plan() builds what every frame has (the camera's view and its pass) around them.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/caps.h"
+#include "gl/state.h"
+#include "render/settings.h"
+#include "render/variants.h"
+#include "scene/scene.h"
+#include "shadow/light_frustum.h"
+
+namespace penumbra::render {
+
+// ---- the caller's inputs -----------------------------------------------------------------------
+
+// Where the camera's image goes: the window (all of it, or a region: a picture in picture), or a
+// texture of the pool that later plans (or read_image) can read.
+struct Output {
+    bool window = false;
+    std::string name = "camera";  // the texture's name in the pool (window: unused)
+    int width = 512, height = 512;
+    int x = 0, y = 0;   // window: the region's lower-left corner
+    bool clip = false;  // window: keep clears inside the region
+    gl::Sampling sampling = gl::Sampling::Nearest;  // texture: how a later pass samples it
+    gl::Wrap wrap = gl::Wrap::Clamp;
+
+    static Output offscreen(int width, int height);  // the texture "camera", read back by read_image()
+    static Output to_window(int width, int height);
+    static Output window_region(int x, int y, int width, int height);  // clipped
+    static Output texture(std::string name, int width, int height, gl::Sampling sampling, gl::Wrap wrap);
+};
+
+// An object drawn with another mesh or material of the scene (-1: its own).
+struct ObjectOverride {
+    int object = -1;
+    int mesh = -1;
+    int material = -1;
+};
+
+// Wherever a material samples scene image `image`, sample the texture `texture` instead: an
+// earlier plan's Output::texture (described the same way, so both plans declare one resource).
+struct ImageOverride {
+    int image = -1;
+    Output texture;
+};
+
+struct FrameInputs {
+    Output output = Output::offscreen(512, 512);
+    std::optional<glm::mat4> view;        // the camera's view instead of the scene camera's
+    std::optional<glm::mat4> projection;  // and its projection instead of yfov/znear/zfar's
+    std::optional<scene::Light> light;    // the light instead of the scene's
+    std::vector<ObjectOverride> objects;
+    std::vector<ImageOverride> images;
+};
+
+FrameInputs offscreen(int width, int height);  // the default inputs at another size
+
+// ---- resources ---------------------------------------------------------------------------------
+
+// A render target (and the texture a later pass samples) by value; the pool keeps one per name and
+// makes it again when its description changes.
+struct ResourceDesc {
+    std::string name;  // its role: "shadow-map", "camera", "w09p2b"
+    int width = 0, height = 0;
+    bool color = true;                                      // an RGBA8 colour texture
+    std::optional<gl::RenderbufferFormat> depth_buffer;     // a depth (or depth-stencil) renderbuffer
+    bool depth_texture = false;                             // a depth texture (OES_depth_texture)
+    gl::Sampling sampling = gl::Sampling::Nearest;          // of the texture a pass samples
+    gl::Wrap wrap = gl::Wrap::Clamp;
+    std::size_t bytes() const;
+    std::string describe() const;  // "1024x1024 rgba8 + depth24, nearest, clamp"
+    bool operator==(const ResourceDesc& o) const;
+    bool operator!=(const ResourceDesc& o) const { return !(*this == o); }
+};
+
+struct PlannedResource {
+    ResourceDesc desc;
+    // What it holds, as a key of everything its passes depend on (e.g. the light's matrix and the
+    // casters' transforms). The same non-empty key as in the previous plan: its content is still
+    // there, and the passes into it are skipped. Empty: drawn every frame (or only read here).
+    std::string content;
+    bool reused = false;
+    std::string purpose;  // one line for people: "the depth seen from the light"
+};
+
+// ---- passes ------------------------------------------------------------------------------------
+
+// Where a pass draws: a resource of the plan, or the default framebuffer (the window); the
+// viewport is a region of it (the whole of it unless a region was asked for).
+struct TargetRef {
+    int resource = -1;  // index into FramePlan::resources; -1: the window
+    int width = 0, height = 0;
+    int x = 0, y = 0;
+    bool clip = false;
+};
+
+struct Clear {
+    std::optional<glm::vec4> color;
+    bool depth = false;
+    bool stencil = false;
+};
+
+using UniformValue = std::variant<int, float, glm::vec2, glm::vec3, glm::vec4, glm::mat3, glm::mat4>;
+struct Uniform {
+    std::string name;
+    UniformValue value;
+};
+struct TextureBinding {
+    int unit = 0;
+    int resource = -1;  // the resource's sampled texture
+};
+// Uniforms and textures that some draws of a pass share: "camera", "spot light", "shadow lookup".
+struct Binding {
+    std::string name;
+    std::vector<Uniform> uniforms;
+    std::vector<TextureBinding> textures;
+};
+
+// The uniforms the executor sets per draw from the object itself.
+enum class ObjectUniforms {
+    None,  // a full-screen draw
+    Mvp,   // u_mvp = pass view_proj * draw.world
+    Lit,   // u_model, u_normal_matrix and the material (colour, specular, shininess, base texture)
+};
+
+struct Draw {
+    bool fullscreen = false;  // one triangle over the viewport instead of a mesh
+    int object = -1;          // the scene object
+    std::string label;        // its name, for listings
+    int mesh = -1;            // the mesh drawn (an override may differ from the object's)
+    int material = -1;
+    glm::mat4 world{1.0f};
+    Variant variant;
+    std::uint32_t bindings = 0;  // bit i set: the pass's bindings[i] applies to this draw
+    int image = -1;              // Lit: the scene image sampled as base colour (-1: none)...
+    int image_resource = -1;     // ...or this resource's texture instead (an ImageOverride)
+};
+
+struct Pass {
+    std::string name;    // "shadow-map", "camera", "planar-stencil", ...
+    std::string module;  // who added it: "shadowmap", "planar", "frame"
+    TargetRef target;
+    std::optional<Clear> clear;
+    gl::PipelineState state;
+    ObjectUniforms object_uniforms = ObjectUniforms::Lit;
+    glm::mat4 view_proj{1.0f};  // Mvp: the matrix before each draw's world
+    std::vector<Binding> bindings;
+    std::vector<Draw> draws;
+    bool skipped = false;  // its target's content is reused: nothing is drawn
+    std::string detail;    // one line for people: "1024x1024 rgba, perspective light, 2 caster(s)"
+    std::vector<int> reads() const;  // the resources its draws sample
+};
+
+// ---- the plan ----------------------------------------------------------------------------------
+
+struct CameraView {
+    glm::mat4 view{1.0f};
+    glm::mat4 proj{1.0f};
+    glm::mat4 view_proj{1.0f};
+    glm::vec3 position{0.0f};
+};
+
+struct FramePlan {
+    Settings settings;
+    std::string output;  // "offscreen 512x512", "window 800x600", "texture w09p2b 1024x1024"
+    std::vector<PlannedResource> resources;
+    std::vector<Pass> passes;
+    std::vector<std::string> notes;  // e.g. a clamped map size
+    CameraView camera;
+    std::optional<shadow::LightFrustum> light_frustum;  // when a shadow map is drawn or read
+
+    int resource_index(std::string_view name) const;  // -1 when absent
+    const PlannedResource* resource(std::string_view name) const;
+    bool has_pass(std::string_view name) const;
+    // A pass into the resource ran in this plan (false when it was reused or is absent).
+    bool drawn(std::string_view name) const;
+
+    std::string describe() const;  // one line per pass (render -v)
+    std::string to_text() const;   // every pass and resource in full (penumbra plan)
+    std::string to_json() const;   // the same as JSON (penumbra plan --json)
+};
+
+// "" when the settings can render this scene on this context into this output, else one line
+// naming the problem.
+std::string check(const scene::Scene& scene, const Settings& settings, const gl::Caps& caps,
+                  const FrameInputs& inputs = {});
+
+// The plan of one frame. `previous`, the plan last executed on the same renderer (or null), tells
+// which resources still hold what this frame needs.
+FramePlan plan(const scene::Scene& scene, const Settings& settings, const gl::Caps& caps,
+               const FrameInputs& inputs = {}, const FramePlan* previous = nullptr);
+
+// The world bounds of every object that casts or receives shadows: what the light's view must hold.
+scene::Bounds shadowed_bounds(const scene::Scene& scene);
+// The light's frustum fitted around them (the shadow map's and exercise W09P2a's view from the
+// light).
+shadow::LightFrustum fit_light_view(const scene::Scene& scene, const scene::Light& light);
+
+}  // namespace penumbra::render

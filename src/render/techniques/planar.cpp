@@ -1,0 +1,120 @@
+// Planar projected shadows (seed 001, exercise W09P1), drawn once per pixel through the stencil
+// buffer: the ground marks its visible pixels 1, the casters flattened onto the ground plane from
+// the light turn 1 into 2 (never twice, so overlapping triangles darken once), and the ground is
+// drawn again, unlit, where the stencil is 2. The shadow is never depth-tested against the ground,
+// so there is nothing to fight.
+#include <algorithm>
+
+#include "render/techniques/technique.h"
+#include "shadow/planar.h"
+
+namespace penumbra::render {
+
+namespace {
+
+// The stencil values this technique writes into the camera target (cleared to 0 each frame).
+constexpr int kGroundVisible = 1;
+constexpr int kInShadow = 2;
+
+bool has_ground(const PlanContext& c) {
+    const int g = c.scene.ground_object;
+    return c.scene.ground_plane && g >= 0 &&
+           std::find(c.drawable.begin(), c.drawable.end(), g) != c.drawable.end();
+}
+
+class PlanarModule : public Module {
+public:
+    std::string_view name() const override { return "planar"; }
+
+    std::string check(const PlanContext& c) const override {
+        if (!has_ground(c))
+            return "--technique planar: the scene has no ground plane (a flat object named ground, floor, plane or "
+                   "table)";
+        if (!c.caps.packed_depth_stencil)
+            return "--technique planar: this context has no OES_packed_depth_stencil for the stencil buffer";
+        return {};
+    }
+
+    bool needs_stencil(const PlanContext& c) const override { return has_ground(c); }
+
+    bool keeps_out_of_camera(const PlanContext& c, int object) const override {
+        return has_ground(c) && object == c.scene.ground_object;
+    }
+
+    void after_camera(PlanContext& c) const override {
+        if (!has_ground(c)) return;
+        const int ground = c.scene.ground_object;
+
+        Pass mark;
+        mark.name = "planar-ground";
+        mark.module = "planar";
+        mark.target = c.camera_target;
+        mark.state.stencil.enabled = true;
+        mark.state.stencil.func = gl::Compare::Always;
+        mark.state.stencil.ref = kGroundVisible;
+        mark.state.stencil.pass = gl::StencilOp::Replace;
+        mark.bindings = c.lit_bindings();
+        const std::uint32_t all = (1u << mark.bindings.size()) - 1u;
+        Draw g = c.object_draw(ground);
+        g.variant = lit_variant(c.base_features(g));
+        g.bindings = all;
+        mark.draws.push_back(g);
+        mark.detail = "the ground, lit, marking its pixels " + std::to_string(kGroundVisible) + " in the stencil";
+        c.add_pass(std::move(mark));
+
+        Pass project;
+        project.name = "planar-stencil";
+        project.module = "planar";
+        project.target = c.camera_target;
+        project.state.depth_test = false;
+        project.state.depth_write = false;
+        project.state.color_write = false;
+        project.state.cull = gl::Cull::None;
+        project.state.stencil.enabled = true;
+        project.state.stencil.func = gl::Compare::Equal;
+        project.state.stencil.ref = kGroundVisible;
+        project.state.stencil.pass = gl::StencilOp::Incr;
+        project.object_uniforms = ObjectUniforms::Mvp;
+        project.view_proj = c.plan.camera.view_proj * shadow::planar_projection(*c.scene.ground_plane, c.light_vector());
+        const Variant flat = depth_variant(shadow::Encoding::DepthTex, c.depth_path);
+        for (int i : c.casters) {
+            if (i == ground) continue;
+            Draw d;
+            d.object = i;
+            d.label = c.scene.objects[static_cast<size_t>(i)].name;
+            d.mesh = c.scene.objects[static_cast<size_t>(i)].mesh;
+            d.world = c.scene.objects[static_cast<size_t>(i)].world;
+            d.variant = flat;
+            project.draws.push_back(std::move(d));
+        }
+        project.detail = std::to_string(project.draws.size()) + " caster(s) flattened onto the ground, stencil " +
+                         std::to_string(kGroundVisible) + " -> " + std::to_string(kInShadow) + ", colour and depth off";
+        c.add_pass(std::move(project));
+
+        Pass shade;
+        shade.name = "planar-shadow";
+        shade.module = "planar";
+        shade.target = c.camera_target;
+        shade.state.depth_test = false;
+        shade.state.depth_write = false;
+        shade.state.stencil.enabled = true;
+        shade.state.stencil.func = gl::Compare::Equal;
+        shade.state.stencil.ref = kInShadow;
+        shade.bindings = c.lit_bindings();
+        LitFeatures f = c.base_features(g);
+        f.in_shadow = true;
+        g.variant = lit_variant(f);
+        shade.draws.push_back(g);
+        shade.detail = "the ground again, unlit, where stencil = " + std::to_string(kInShadow);
+        c.add_pass(std::move(shade));
+    }
+};
+
+}  // namespace
+
+const Module& planar_module() {
+    static const PlanarModule m;
+    return m;
+}
+
+}  // namespace penumbra::render

@@ -1,0 +1,185 @@
+// The shadow map (exercise W09P2c): the depth seen from the light into a map of the pool, in the
+// chosen encoding, redrawn only when the light or a caster moved; the camera pass looks it up
+// with the chosen filter and bias. Also the light-depth AOV, the map scaled for viewing.
+#include <cmath>
+#include <cstdio>
+
+#include "render/techniques/technique.h"
+#include "shadow/pcf.h"
+
+namespace penumbra::render {
+
+namespace {
+
+constexpr glm::vec4 kWhite{1.0f};
+constexpr int kShadowUnit = 0;
+// Below 16 texels the one or few texels hold the nearest caster's depth for everything behind it
+// and the whole frame falls into shadow: that is no longer a shadow map.
+constexpr int kMinMap = 16;
+constexpr const char* kMap = "shadow-map";
+
+std::string number(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return b;
+}
+
+class ShadowMapModule : public Module {
+public:
+    std::string_view name() const override { return "shadowmap"; }
+
+    std::string check(const PlanContext& c) const override {
+        if (c.settings.encoding == shadow::Encoding::DepthTex && !c.caps.depth_texture)
+            return "--encoding depthtex: this context has no OES_depth_texture / WEBGL_depth_texture";
+        if (c.settings.aov == Aov::LightDepth && c.casters.empty())
+            return "--aov light-depth: the scene has no shadow casters, so there is no shadow map";
+        return {};
+    }
+
+    void before_camera(PlanContext& c) const override {
+        const Settings& s = c.settings;
+        if (c.casters.empty()) {
+            c.plan.notes.push_back("no shadow casters: no shadow pass");
+            return;
+        }
+        int size = s.map_size;
+        const int max = c.caps.max_target_size();
+        if (size > max) {
+            c.plan.notes.push_back("--map-size " + std::to_string(size) + " clamped to " + std::to_string(max) +
+                                   ", this context's maximum");
+            size = max;
+        }
+        if (size < kMinMap) {
+            c.plan.notes.push_back("--map-size " + std::to_string(size) + " raised to " + std::to_string(kMinMap) +
+                                   ", the smallest map that still resolves a shadow");
+            size = kMinMap;
+        }
+        const shadow::LightFrustum f = shadow::fit_light_frustum(c.light, scene::corners(c.shadowed), c.shadowed.center());
+        c.plan.light_frustum = f;
+
+        ResourceDesc d;
+        d.name = kMap;
+        d.width = d.height = size;
+        // Packed depths must never be interpolated: blending two packed values is meaningless.
+        d.sampling = gl::Sampling::Nearest;
+        d.wrap = gl::Wrap::Clamp;
+        const bool depthtex = s.encoding == shadow::Encoding::DepthTex;
+        d.color = !depthtex;
+        d.depth_texture = depthtex;
+        if (!depthtex) d.depth_buffer = c.caps.depth_format();
+
+        // The map depends on the light's matrix, the casters and how depth is packed.
+        ContentKey key;
+        key.add(f.view_proj());
+        for (int i : c.casters) {
+            key.add(c.scene.objects[static_cast<size_t>(i)].world);
+            key.add(c.scene.objects[static_cast<size_t>(i)].mesh);
+        }
+        key.add(s.encoding);
+        key.add(c.depth_path.mediump);
+        key.add(c.depth_path.pack_floor);
+        const int r = c.add_resource(d, key.str(), "the depth seen from the light");
+
+        Pass p;
+        p.name = kMap;
+        p.module = "shadowmap";
+        p.target = {r, size, size, 0, 0, false};
+        // White is the farthest depth in every encoding: nothing drawn there, nothing shadows.
+        p.clear = Clear{depthtex ? std::nullopt : std::optional<glm::vec4>(kWhite), true, false};
+        p.state.cull = gl::Cull::None;  // open meshes (the teapot's rim, glTF sheets) must cast from both sides
+        p.state.color_write = !depthtex;
+        p.object_uniforms = ObjectUniforms::Mvp;
+        p.view_proj = f.view_proj();
+        const Variant v = depth_variant(s.encoding, c.depth_path);
+        for (int i : c.casters) {
+            Draw dr;
+            dr.object = i;
+            dr.label = c.scene.objects[static_cast<size_t>(i)].name;
+            dr.mesh = c.scene.objects[static_cast<size_t>(i)].mesh;
+            dr.world = c.scene.objects[static_cast<size_t>(i)].world;
+            dr.variant = v;
+            p.draws.push_back(std::move(dr));
+        }
+        p.detail = std::to_string(size) + "x" + std::to_string(size) + " " + std::string(shadow::to_string(s.encoding)) +
+                   ", " + (f.perspective ? "perspective" : "orthographic") + " light, " +
+                   std::to_string(c.casters.size()) + " caster(s)";
+        c.add_pass(std::move(p));
+    }
+
+    bool own_view(PlanContext& c) const override {
+        const int r = c.plan.resource_index(kMap);
+        if (c.settings.aov != Aov::LightDepth || r < 0) return false;
+        const shadow::LightFrustum& f = *c.plan.light_frustum;
+        Pass p;
+        p.name = "light-depth view";
+        p.module = "shadowmap";
+        p.target = c.camera_target;
+        p.clear = Clear{kWhite, true, false};
+        p.state.depth_test = false;
+        p.state.depth_write = false;
+        p.state.cull = gl::Cull::None;
+        p.object_uniforms = ObjectUniforms::None;
+        p.bindings.push_back({"shadow map",
+                              {{"u_shadow_map", kShadowUnit}, {"u_near_far", glm::vec2(f.znear, f.zfar)}},
+                              {{kShadowUnit, r}}});
+        Draw d;
+        d.fullscreen = true;
+        d.variant = light_depth_variant(c.settings.encoding, f.perspective, c.depth_path);
+        d.bindings = 1u;
+        p.draws.push_back(std::move(d));
+        p.detail = c.plan.output + ", the shadow map scaled for viewing";
+        c.add_pass(std::move(p));
+        return true;
+    }
+
+    void shade(PlanContext& c, Pass& cam, std::vector<CameraItem>& items) const override {
+        const int r = c.plan.resource_index(kMap);
+        if (r < 0) {
+            cam.detail += ", no shadows";
+            return;
+        }
+        const Settings& s = c.settings;
+        const shadow::LightFrustum& f = *c.plan.light_frustum;
+        const float texel = 1.0f / static_cast<float>(c.plan.resources[static_cast<size_t>(r)].desc.width);
+        Binding b{"shadow lookup",
+                  {{"u_shadow_map", kShadowUnit},
+                   {"u_light_matrix", shadow::clip_to_texture() * f.view_proj()},
+                   {"u_texmapscale", glm::vec2(texel, texel)},
+                   {"u_bias", s.effective_bias()}},
+                  {{kShadowUnit, r}}};
+        if (s.bias_auto) {
+            // 1/P[0][0] and 1/P[1][1]: tan of the half-angles (perspective) or the half-extents
+            // (orthographic) of the light's frustum.
+            b.uniforms.push_back({"u_light_rotation", glm::mat3(f.view)});
+            b.uniforms.push_back({"u_bias_slope", glm::vec4(1.0f / f.proj[0][0], 1.0f / f.proj[1][1], f.znear, f.zfar)});
+            b.uniforms.push_back({"u_bias_kernel", glm::vec2(2.0f * texel, shadow::kernel_reach_texels(s.filter))});
+        }
+        const std::uint32_t bit = 1u << cam.bindings.size();
+        cam.bindings.push_back(std::move(b));
+        for (CameraItem& it : items) {
+            if (!c.scene.objects[static_cast<size_t>(it.object)].receives_shadow) continue;
+            LitFeatures& lf = it.features;
+            lf.shadow_map = true;
+            lf.encoding = s.encoding;
+            lf.filter = s.filter;
+            lf.bias_auto = s.bias_auto;
+            lf.light_perspective = f.perspective;
+            lf.mediump = s.precision == shadow::Precision::Mediump;
+            it.bindings |= bit;
+        }
+        cam.detail += ", shadow lookup " + std::string(shadow::to_string(s.filter)) + " " +
+                      std::string(shadow::to_string(s.encoding)) + ", bias " +
+                      (s.bias_auto ? "auto (" + number(static_cast<double>(s.effective_bias())) + " + slope)"
+                                   : number(static_cast<double>(s.effective_bias()))) +
+                      (s.precision == shadow::Precision::Mediump ? ", mediump emulated" : "");
+    }
+};
+
+}  // namespace
+
+const Module& shadow_map_module() {
+    static const ShadowMapModule m;
+    return m;
+}
+
+}  // namespace penumbra::render

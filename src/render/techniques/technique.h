@@ -1,0 +1,97 @@
+// A technique is a module of the frame plan: it adds passes, resources and shader features to a
+// plan and owns nothing else (no GL objects, no state between frames: what it needs from an
+// earlier frame, it finds in the previous plan). plan() (render/plan.cpp) calls the technique in
+// use at fixed points of every frame:
+//
+//   check         "" or why it cannot run on this scene and context
+//   before_camera passes before the camera's: the shadow map from the light
+//   own_view      an AOV of its own instead of the camera pass (the light's depth)
+//   camera pass   built by plan(); the technique keeps objects out of it (keeps_out_of_camera) and
+//                 adds its bindings and each draw's shader features (shade)
+//   after_camera  passes after it: planar shadows through the stencil buffer
+//
+// Adding a technique: a file here with a Module subclass, its entry in techniques.cpp, its value in
+// render::Technique and the option table's choices (render/options.cpp).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "render/plan.h"
+
+namespace penumbra::render {
+
+// A resource's content key: every value its passes depend on, hashed (FNV-1a, 64 bits) and
+// printed in hex. Equal keys in two plans mean the resource need not be drawn again.
+class ContentKey {
+public:
+    void add(const void* data, std::size_t bytes);
+    template <typename T>
+    void add(const T& value) {
+        add(&value, sizeof value);
+    }
+    std::string str() const;
+
+private:
+    std::uint64_t h_ = 1469598103934665603ull;
+};
+
+// One object the camera pass will draw, while the techniques add their features to it.
+struct CameraItem {
+    int object = -1;
+    LitFeatures features;
+    std::uint32_t bindings = 0;  // bits of the camera pass's bindings
+};
+
+// What a module sees of the frame being planned, and the helpers it adds with.
+struct PlanContext {
+    const scene::Scene& scene;
+    const Settings& settings;
+    const gl::Caps& caps;
+    const FrameInputs& inputs;
+    const FramePlan* previous;
+    FramePlan& plan;
+
+    scene::Light light;           // the scene's, or the inputs'
+    std::vector<int> drawable;    // objects with a mesh, in scene order
+    std::vector<int> casters;     // ... that cast shadows
+    scene::Bounds shadowed;       // the world bounds of every caster and receiver
+    DepthPath depth_path;         // how depth is packed on this context
+    TargetRef camera_target;      // where the camera pass draws
+
+    // Declares a resource (once per name) and returns its index. With a non-empty `content` key
+    // equal to the previous plan's for the same description, it is marked reused.
+    int add_resource(ResourceDesc desc, std::string content, std::string purpose);
+    // Appends a pass; a pass into a reused resource is marked skipped.
+    Pass& add_pass(Pass pass);
+    // A Lit draw of `object`: its mesh and material (after the inputs' overrides), world matrix
+    // and base-colour texture (a scene image, or the resource an ImageOverride names).
+    Draw object_draw(int object);
+    // The lit shader's features every draw has: the light's kind, the AOV, the texture.
+    LitFeatures base_features(const Draw& d) const;
+    // The light as the lit shader takes it: (position, 1) or (direction towards the light, 0).
+    glm::vec4 light_vector() const;
+    // The camera's uniforms (view, light, ambient) and the spot light's, for a Lit pass.
+    std::vector<Binding> lit_bindings() const;
+};
+
+class Module {
+public:
+    virtual ~Module() = default;
+    virtual std::string_view name() const = 0;
+    virtual std::string check(const PlanContext&) const { return {}; }
+    virtual bool needs_stencil(const PlanContext&) const { return false; }
+    virtual void before_camera(PlanContext&) const {}
+    virtual bool own_view(PlanContext&) const { return false; }
+    virtual bool keeps_out_of_camera(const PlanContext&, int /*object*/) const { return false; }
+    virtual void shade(PlanContext&, Pass& /*camera*/, std::vector<CameraItem>& /*items*/) const {}
+    virtual void after_camera(PlanContext&) const {}
+};
+
+// The module of each technique (techniques.cpp).
+const Module& technique_module(Technique t);
+
+}  // namespace penumbra::render
