@@ -1,17 +1,14 @@
 // penumbra-desktop: the course exercises W09P1, W09P2a, W09P2b and W09P2c in a desktop window
 // (GLFW, GLES 2 through EGL), with keys for the same controls the web pages have.
 //
-//   penumbra-desktop [--exercise w09p1|w09p2a|w09p2b|w09p2c] [--size WxH] [--frames N]
-//                    [--screenshot FILE.png] [--resize WxH] [--no-vsync] [-v]
-//                    [--light on|off] [--jump on|off] [--projection persp|ortho]
-//                    [--fbo-view light|camera] [--map-view on|off] [--time T]
-//                    [--encoding r8|rgba|depthtex] [--filter hard|pcf2x2|pcf4x4]
-//                    [--bias B|default|auto] [--precision highp|mediump] [--map-size N]
-//                    [--aov color|visibility]
+//   penumbra-desktop [--exercise NAME] [--size WxH] [--frames N] [--screenshot FILE.png]
+//                    [--resize WxH] [--no-vsync] [-v] [--time T] [any option the pages take]
 //
-// --frames N stops after N frames (for unattended runs), --screenshot writes the last frame as a
-// PNG (top row first), --resize asks the window for a new size halfway through, --time fixes
-// both clocks (paused). Bad input gets one line and exit status 2; a GL failure exit status 1.
+// The options the pages take (the exercises' toggles and the technique settings) come from the
+// option tables (examples/exercise_list.h, render/options.h), as does --help. --frames N stops
+// after N frames (for unattended runs), --screenshot writes the last frame as a PNG (top row
+// first), --resize asks the window for a new size halfway through, --time fixes both clocks
+// (paused). Bad input gets one line and exit status 2; a GL failure exit status 1.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -44,38 +41,36 @@ struct Args {
     std::exit(2);
 }
 
-bool parse_size(const std::string& v, int& w, int& h) {
-    const auto x = v.find('x');
-    if (x == std::string::npos) return false;
-    char* end = nullptr;
-    const long a = std::strtol(v.c_str(), &end, 10);
-    if (end != v.c_str() + x) return false;
-    const long b = std::strtol(v.c_str() + x + 1, &end, 10);
-    if (*end != '\0' || a < 1 || b < 1 || a > 16384 || b > 16384) return false;
-    w = static_cast<int>(a);
-    h = static_cast<int>(b);
-    return true;
-}
-
 void print_help() {
+    std::string options;
+    const auto line = [&](const std::string& name, const std::string& values, std::string_view help) {
+        std::string head = "  --" + name + " " + values;
+        if (head.size() < 34) head.resize(34, ' ');
+        else head += "\n" + std::string(34, ' ');
+        options += head + std::string(help) + "\n";
+    };
+    for (const auto& o : examples::toggle_table()) line(std::string(o.info.name), render::accepted_values(o.info), o.info.help);
+    for (const auto& o : render::option_table())
+        if (o.info.part == render::OptionPart::Technique && o.info.name != "technique")
+            line(std::string(o.info.name), o.info.type == render::OptionType::Choice ? render::accepted_values(o.info) : "V",
+                 o.info.help);
     std::printf(
         "penumbra-desktop: the W09 course exercises in a window (GLFW, GLES 2 through EGL)\n\n"
-        "  --exercise E        w09p1 (default), w09p2a, w09p2b, w09p2c\n"
+        "  --exercise E        %s (default w09p1)\n"
         "  --size WxH          window size (default 512x512)\n"
         "  --frames N          stop after N frames\n"
         "  --screenshot F.png  write the last frame (with --frames)\n"
         "  --resize WxH        resize the window halfway through --frames\n"
         "  --no-vsync          draw as fast as possible\n"
         "  -v, --verbose       print each frame's passes at the end\n"
-        "  --light on|off, --jump on|off, --projection persp|ortho, --fbo-view light|camera,\n"
-        "  --map-view on|off, --time T, --encoding E, --filter F, --bias B|default|auto,\n"
-        "  --precision highp|mediump, --map-size N, --aov color|visibility: as the web pages'\n"
-        "  controls and URL\n\n%s",
-        examples::CourseApp::key_help().c_str());
+        "  --time T            both clocks at T seconds, paused\n\n"
+        "as the web pages' controls and URL:\n%s\n%s",
+        examples::exercise_names().c_str(), options.c_str(), examples::CourseApp::key_help().c_str());
 }
 
 Args parse_args(int argc, char** argv) {
     Args a;
+    render::Options job;  // --size, --resize and --frames are checked as the option table checks them
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "-h" || arg == "--help") {
@@ -95,16 +90,15 @@ Args parse_args(int argc, char** argv) {
         const std::string name = arg.substr(2), value = argv[++i];
         if (name == "exercise") {
             if (!examples::parse_exercise(value, a.exercise))
-                usage_error("--exercise: unknown value '" + value + "' (w09p1, w09p2a, w09p2b, w09p2c)");
-        } else if (name == "size") {
-            if (!parse_size(value, a.width, a.height)) usage_error("--size: expected WIDTHxHEIGHT, got '" + value + "'");
-        } else if (name == "resize") {
-            if (!parse_size(value, a.resize_w, a.resize_h))
-                usage_error("--resize: expected WIDTHxHEIGHT, got '" + value + "'");
+                usage_error("--exercise: unknown value '" + value + "' (" + examples::exercise_names() + ")");
+        } else if (name == "size" || name == "resize") {
+            if (const std::string err = render::parse_option(job, "size", value); !err.empty())
+                usage_error("--" + name + err.substr(6));
+            (name == "size" ? a.width : a.resize_w) = job.job.width;
+            (name == "size" ? a.height : a.resize_h) = job.job.height;
         } else if (name == "frames") {
-            char* end = nullptr;
-            a.frames = std::strtol(value.c_str(), &end, 10);
-            if (*end != '\0' || a.frames < 1) usage_error("--frames: expected a whole number >= 1, got '" + value + "'");
+            if (const std::string err = render::parse_option(job, "frames", value); !err.empty()) usage_error(err);
+            a.frames = job.job.frames;
         } else if (name == "screenshot") {
             if (value.size() < 5 || value.substr(value.size() - 4) != ".png")
                 usage_error("--screenshot " + value + ": the file name must end in .png");
@@ -130,7 +124,7 @@ int main(int argc, char** argv) {
     platform::WindowOptions wo;
     wo.width = args.width;
     wo.height = args.height;
-    wo.title = "penumbra: " + std::string(examples::title(args.exercise));
+    wo.title = "penumbra: " + std::string(examples::exercise_info(args.exercise).title);
     wo.swap_interval = args.vsync ? 1 : 0;
     auto window = platform::create_glfw_window(wo, error);
     if (!window) {
@@ -139,7 +133,7 @@ int main(int argc, char** argv) {
     }
     int status = 0;
     try {
-        app.create_gl();
+        app.create_gl(window->api());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "penumbra-desktop: error: %s\n", e.what());
         return 1;
@@ -149,7 +143,7 @@ int main(int argc, char** argv) {
             if (const std::string err = app.set_option(name, value); !err.empty()) usage_error("--" + err);
 
     std::printf("%s\n%s\n%s\n%s", window->description().c_str(), app.caps()->summary().c_str(),
-                std::string(examples::title(app.exercise())).c_str(), examples::CourseApp::key_help().c_str());
+                std::string(examples::exercise_info(app.exercise()).title).c_str(), examples::CourseApp::key_help().c_str());
     std::fflush(stdout);
 
     bool quit = false;
@@ -191,7 +185,7 @@ int main(int argc, char** argv) {
             last_title = f.time_s;
             char title[256];
             std::snprintf(title, sizeof title, "penumbra: %s | %.2f ms/frame | %s",
-                          std::string(examples::title(app.exercise())).c_str(), app.median_ms(),
+                          std::string(examples::exercise_info(app.exercise()).title).c_str(), app.median_ms(),
                           app.query().c_str());
             window->set_title(title);
         }

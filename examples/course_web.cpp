@@ -14,6 +14,7 @@
 
 #include "exercises.h"
 #include "gl/check.h"
+#include "render/json.h"
 #include "platform/platform.h"
 #include "shadow/encoding.h"
 
@@ -35,26 +36,6 @@ struct WebApp {
     std::string text;  // the last string handed to JavaScript
 };
 WebApp* g = nullptr;
-
-std::string json_escape(const std::string& s) {
-    std::string o;
-    for (char c : s) {
-        switch (c) {
-            case '"': o += "\\\""; break;
-            case '\\': o += "\\\\"; break;
-            case '\n': o += "\\n"; break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
-                    o += buf;
-                } else {
-                    o += c;
-                }
-        }
-    }
-    return o;
-}
 
 // Draws one frame; a failure is shown in the status line and printed once to stderr (the page
 // routes stderr to console.error).
@@ -100,7 +81,7 @@ void on_context(platform::ContextEvent e) {
     while (gl::take_error() != 0) {
     }
     try {
-        g->app->create_gl();
+        g->app->create_gl(g->platform->api());
         g->lost = false;
         g->status = "WebGL context restored: renderer and GL objects made again (generation " +
                     std::to_string(g->app->gl_generation()) + ")";
@@ -137,38 +118,39 @@ const char* penumbra_query() { return hand(g && g->app ? g->app->query() : ""); 
 // Everything the page shows, as JSON.
 const char* penumbra_state() {
     if (!g || !g->app) return hand("{}");
+    using render::json_bool;
+    using render::json_number;
+    using render::json_quote;
     const auto& a = *g->app;
     const auto& s = a.settings();
     std::string j = "{";
-    j += "\"exercise\":\"" + std::string(examples::to_string(a.exercise())) + "\"";
-    j += ",\"title\":\"" + json_escape(std::string(examples::title(a.exercise()))) + "\"";
-    j += ",\"query\":\"" + json_escape(a.query()) + "\"";
+    j += "\"exercise\":" + json_quote(examples::exercise_info(a.exercise()).name);
+    j += ",\"title\":" + json_quote(examples::exercise_info(a.exercise()).title);
+    j += ",\"query\":" + json_quote(a.query());
     j += ",\"options\":{";
     bool first = true;
     for (const auto& [k, v] : a.options()) {
-        j += (first ? "\"" : ",\"") + json_escape(k) + "\":\"" + json_escape(v) + "\"";
+        j += (first ? "" : ",") + json_quote(k) + ":" + json_quote(v);
         first = false;
     }
     j += "}";
-    char num[160];
-    std::snprintf(num, sizeof num,
-                  ",\"bias\":%.9g,\"defaultBias\":%.9g,\"mapSize\":%d,\"ms\":%.4f,\"frames\":%ld,\"lightTime\":%.6f,"
-                  "\"jumpTime\":%.6f",
-                  static_cast<double>(a.bias()), static_cast<double>(a.default_bias()), s.map_size, a.median_ms(),
-                  a.frames_drawn(), a.light_time(), a.jump_time());
-    j += num;
+    j += ",\"bias\":" + json_number(static_cast<double>(a.bias()));
+    j += ",\"defaultBias\":" + json_number(static_cast<double>(a.default_bias()));
     // bias=auto's constant part for the chosen encoding and precision (the page's bias control says it).
-    std::snprintf(num, sizeof num, ",\"autoBias\":%.9g",
-                  static_cast<double>(shadow::auto_bias_constant(s.encoding, s.precision)));
-    j += num;
-    j += std::string(",\"paused\":") + (a.paused() ? "true" : "false");
-    j += std::string(",\"lost\":") + (g->lost ? "true" : "false");
+    j += ",\"autoBias\":" + json_number(static_cast<double>(shadow::auto_bias_constant(s.encoding, s.precision)));
+    j += ",\"mapSize\":" + std::to_string(s.map_size);
+    j += ",\"ms\":" + json_number(a.median_ms());
+    j += ",\"frames\":" + std::to_string(a.frames_drawn());
+    j += ",\"lightTime\":" + json_number(a.light_time());
+    j += ",\"jumpTime\":" + json_number(a.jump_time());
+    j += ",\"paused\":" + json_bool(a.paused());
+    j += ",\"lost\":" + json_bool(g->lost);
     j += ",\"generation\":" + std::to_string(a.gl_generation());
     const gl::Caps* caps = a.caps();
-    j += std::string(",\"depthTexture\":") + (caps && caps->depth_texture ? "true" : "false");
+    j += ",\"depthTexture\":" + json_bool(caps && caps->depth_texture);
     j += ",\"maxMapSize\":" + std::to_string(caps ? caps->max_target_size() : 0);
-    j += ",\"renderer\":\"" + json_escape(caps ? caps->renderer : "") + "\"";
-    j += ",\"status\":\"" + json_escape(g->status) + "\"";
+    j += ",\"renderer\":" + json_quote(caps ? caps->renderer : "");
+    j += ",\"status\":" + json_quote(g->status);
     j += ",\"width\":" + std::to_string(g->width) + ",\"height\":" + std::to_string(g->height);
     j += "}";
     return hand(j);
@@ -225,7 +207,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     try {
-        g->app->create_gl();
+        g->app->create_gl(g->platform->api());
     } catch (const std::exception& e) {
         g->status = std::string("error: ") + e.what();
         std::fprintf(stderr, "penumbra: %s\n", e.what());

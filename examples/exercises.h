@@ -8,10 +8,11 @@
 //   W09P2c  shadow mapping: depth encoding, 4x4 PCF, bias (fixed, the encoding's default or auto),
 //           precision (highp or emulated mediump), map size, and the shadow map shown scaled for
 //           viewing in a corner.
+// Each frame is one or two plans whose inputs carry what an exercise changes (a view from the
+// light, a texture on the ground, a region of the window); the scene itself is never edited.
 // No GL here: the renderer and the gl layer do the drawing; the platform owns the context.
 #pragma once
 
-#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -19,29 +20,14 @@
 #include <utility>
 #include <vector>
 
+#include "exercise_list.h"
 #include "gl/caps.h"
-#include "gl/objects.h"
+#include "render/plan.h"
 #include "render/renderer.h"
 #include "render/settings.h"
 #include "scene/course_scene.h"
 
 namespace penumbra::examples {
-
-enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c };
-inline constexpr Exercise kAllExercises[] = {Exercise::W09P1, Exercise::W09P2a, Exercise::W09P2b, Exercise::W09P2c};
-
-std::string_view to_string(Exercise e);  // "w09p1", as in the page names and --exercise
-std::string_view title(Exercise e);      // "W09P1: jumping teapot on a marble table top"
-bool parse_exercise(std::string_view name, Exercise& out);
-
-// What the controls set besides render::Settings, with their URL/command-line names.
-struct Toggles {
-    bool light = true;       // light=on|off: the light circles the table
-    bool jump = true;        // jump=on|off: the teapot jumps
-    bool ortho = false;      // projection=persp|ortho (W09P2a): ortho makes the light directional
-    bool fbo_light = true;   // fbo-view=light|camera (W09P2b): what is rendered into the FBO
-    bool map_view = true;    // map-view=on|off (W09P2c): the shadow map in the top right corner
-};
 
 class CourseApp {
 public:
@@ -53,9 +39,9 @@ public:
     Exercise exercise() const { return exercise_; }
     void set_exercise(Exercise e) { exercise_ = e; }
 
-    // One option by its URL / command-line name: a render::Settings option (parsed by
-    // render::parse_option), a toggle above, or time=T (both clocks to T, paused). Returns "" or
-    // one line naming the problem; nothing changes on a problem.
+    // One option by its URL / command-line name: a technique setting (render's option table), a
+    // toggle (exercise_list.h), or time=T (both clocks to T, paused). Returns "" or one line naming
+    // the problem; nothing changes on a problem.
     std::string set_option(std::string_view name, std::string_view value);
     // The options this exercise shows, plus any other setting that differs from its default, as
     // name/value pairs that set_option reads back; time=T only while paused.
@@ -71,7 +57,7 @@ public:
     // The GL side's life. create_gl: the context is current and new (first made, or restored
     // after a loss): make the renderer and every GL object. drop_gl: the context is gone; forget
     // what was made on it.
-    void create_gl();
+    void create_gl(platform::Api api);
     void drop_gl();
     bool has_gl() const { return renderer_ != nullptr; }
     const gl::Caps* caps() const;
@@ -87,15 +73,15 @@ public:
     double jump_time() const { return jump_time_; }
 
     // Draws one frame of the current exercise into the default framebuffer (width x height) and
-    // waits for it (a one-pixel readback) so the frame's time is measured. Throws gl::Error on a GL failure and
-    // std::runtime_error when the settings cannot render on this context.
+    // waits for it (a one-pixel readback) so the frame's time is measured. Throws gl::Error on a
+    // GL failure and std::invalid_argument when the settings cannot render on this context.
     void draw(int width, int height);
     // The default framebuffer's pixels, RGBA8, top row first.
     std::vector<std::uint8_t> read_pixels(int width, int height);
     // Median ms/frame over the last 60 frames (draw + wait), 0 before the first.
     double median_ms() const;
     long frames_drawn() const { return frames_drawn_; }
-    // The passes of the last frame (each render call's plan), for --verbose.
+    // The passes of the last frame (each plan's), for --verbose and the pages.
     std::string last_plan() const;
 
     // Desktop keys: the help text, and one key's action. Returns a line saying what changed,
@@ -104,17 +90,12 @@ public:
     std::string on_key(int key, bool shift);
 
 private:
-    void draw_w09p1(const gl::Target& window);
-    void draw_w09p2a(const gl::Target& window);
-    void draw_w09p2b(const gl::Target& window);
-    void draw_w09p2c(const gl::Target& window);
-    void ensure_fbo(int size);
-    void render_checked(const scene::Scene& scene, const render::Settings& s, const gl::Target& target);
-    // The scene seen from the light (camera and, with ortho, a directional light), rendered with
-    // the settings given; restores the scene afterwards.
-    void render_light_view(const render::Settings& s, const gl::Target& target, bool ortho);
-
-    struct Fbo;
+    void render(render::Settings s, const render::FrameInputs& in);
+    // The inputs that show the scene from the light: its fitted view and projection and, with
+    // `ortho`, a directional light along the point light's line of sight.
+    render::FrameInputs light_view(render::Output output, bool ortho) const;
+    // The values key `option` steps through on this exercise.
+    std::vector<std::string> key_values(std::string_view option) const;
 
     Exercise exercise_;
     render::Settings settings_;
@@ -124,7 +105,6 @@ private:
     int fbo_material_ = -1;  // white, textured with the placeholder image the FBO replaces
     int fbo_image_ = -1;
     std::unique_ptr<render::Renderer> renderer_;
-    std::unique_ptr<Fbo> fbo_;
     std::size_t generation_ = 0;
     double light_time_ = 0.0;
     double jump_time_ = 0.0;

@@ -3,7 +3,8 @@
 // (history.replaceState), shows ms/frame and the status (context lost / restored, errors), and
 // offers a small test hook, window.penumbra.
 //
-// Controls carry data-option="NAME" (the option names of `penumbra render` and the URL):
+// The controls are generated with the page (web/pages.py, from examples/exercise_list.cpp and the
+// option table); each carries data-option="NAME" (the option names of `penumbra render` and the URL):
 //   <select data-option>                          the selected value
 //   <button data-option aria-pressed>             on / off
 //   <input type=checkbox data-option data-on data-off>  data-on when checked, data-off otherwise
@@ -85,8 +86,9 @@
     const enc = document.querySelector('select[data-option="encoding"]');
     if (enc) {
       const opt = enc.querySelector('option[value="depthtex"]');
+      opt.dataset.label = opt.dataset.label || opt.textContent;
       opt.disabled = !s.depthTexture;
-      opt.textContent = s.depthTexture ? 'depth texture (depthtex)' : 'depth texture (needs WEBGL_depth_texture)';
+      opt.textContent = s.depthTexture ? opt.dataset.label : 'depth texture (needs WEBGL_depth_texture)';
     }
     const bias = document.getElementById('bias');
     if (bias) {

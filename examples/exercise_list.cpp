@@ -1,0 +1,147 @@
+#include "exercise_list.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+
+namespace penumbra::examples {
+
+using render::Choice;
+using render::OptionInfo;
+using render::OptionPart;
+using render::OptionType;
+
+namespace {
+
+OptionInfo toggle(std::string_view name, std::string_view help, std::string_view label, std::vector<Choice> choices) {
+    OptionInfo o;
+    o.name = name;
+    o.part = OptionPart::Technique;
+    o.type = OptionType::Choice;
+    o.help = help;
+    o.label = label;
+    o.choices = std::move(choices);
+    return o;
+}
+
+const std::vector<Choice> kOnOff = {{"on", "on"}, {"off", "off"}};
+
+std::vector<render::Option<Toggles>> make_toggles() {
+    std::vector<render::Option<Toggles>> t;
+    t.push_back({toggle("light", "the light circles the table", "Light circulation", kOnOff),
+                 [](Toggles& g, std::string_view v) { g.light = v == "on"; },
+                 [](const Toggles& g) { return std::string(g.light ? "on" : "off"); }});
+    t.push_back({toggle("jump", "the teapot jumps", "Teapot jump", kOnOff),
+                 [](Toggles& g, std::string_view v) { g.jump = v == "on"; },
+                 [](const Toggles& g) { return std::string(g.jump ? "on" : "off"); }});
+    t.push_back({toggle("projection", "W09P2a: the light's projection", "Light projection",
+                        {{"persp", "perspective (point light)"}, {"ortho", "orthographic (directional light)"}}),
+                 [](Toggles& g, std::string_view v) { g.ortho = v == "ortho"; },
+                 [](const Toggles& g) { return std::string(g.ortho ? "ortho" : "persp"); }});
+    t.push_back({toggle("fbo-view", "W09P2b: what is rendered into the off-screen buffer", "Rendered into it",
+                        {{"light", "the view from the light"}, {"camera", "the camera's view"}}),
+                 [](Toggles& g, std::string_view v) { g.fbo_light = v == "light"; },
+                 [](const Toggles& g) { return std::string(g.fbo_light ? "light" : "camera"); }});
+    t.push_back({toggle("map-view", "W09P2c: the shadow map, scaled for viewing, in the top right corner",
+                        "the shadow map, scaled for viewing", kOnOff),
+                 [](Toggles& g, std::string_view v) { g.map_view = v == "on"; },
+                 [](const Toggles& g) { return std::string(g.map_view ? "on" : "off"); }});
+    return t;
+}
+
+using K = ControlKind;
+
+std::vector<ExerciseInfo> make_list() {
+    const Control light{"light", "Animation", K::Toggle};
+    const Control jump{"jump", "Animation", K::Toggle};
+    return {
+        {Exercise::W09P1, "w09p1", "W09P1: Jumping teapot on a marble table top",
+         "The Newell teapot jumps on a marble table top under a point light circling above it. The teapot and the "
+         "ground are drawn with different shader programs (the ground textured with the marble); the teapot casts its "
+         "planar projected shadow on the table, counted once per pixel in the stencil buffer.",
+         "The teapot and the ground drawn with different shader programs; the teapot's planar projected shadow; "
+         "buttons for the light's circulation and the teapot's jump.",
+         "The teapot on the marble table with its planar projected shadow", render::Technique::Planar, {light, jump}},
+        {Exercise::W09P2a, "w09p2a", "W09P2a: Rendering from the point of view of the light source",
+         "The scene drawn with the light's own projection and view matrices, the view volume a tight bound around the "
+         "table and the teapot: a perspective projection for the point light, an orthographic one for a directional "
+         "light along the same line of sight.",
+         "The light's own projection and view matrices fitted tightly around the scene: perspective for the point "
+         "light, orthographic for a directional one.",
+         "The scene seen from the light", render::Technique::None,
+         {light, jump, {"projection", "Light projection", K::Radio}}},
+        {Exercise::W09P2b, "w09p2b", "W09P2b: Drawing to an off-screen buffer",
+         "Each frame the scene is first rendered into a framebuffer object (a colour texture with a depth "
+         "renderbuffer), then drawn from the camera with that texture applied to the ground quad.",
+         "The scene rendered into a framebuffer object, and that texture applied to the ground quad.",
+         "The scene with the off-screen buffer's picture on the ground quad", render::Technique::None,
+         {light, jump, {"fbo-view", "Off-screen buffer", K::Select},
+          {"map-size", "Off-screen buffer", K::Select, {"256", "512", "1024", "2048"}, "Texture size"}}},
+        {Exercise::W09P2c, "w09p2c", "W09P2c: Shadow mapping in the fragment shader",
+         "Two passes: the depth seen from the light into a shadow map, then the scene from the camera, each fragment "
+         "compared with the map at its light-space position. The map is shown scaled for visualisation in the top "
+         "right corner.",
+         "The depth encodings (8-bit red, bit-shift RGBA, depth texture), 4x4 PCF, the bias and the map size, with the "
+         "shadow map shown scaled for visualisation.",
+         "The teapot on the table, shadowed by a shadow map, with the shadow map in the corner",
+         render::Technique::ShadowMap,
+         {light, jump, {"encoding", "Shadow map", K::Select},
+          {"filter", "Shadow map", K::Checkbox, {"pcf4x4", "hard"}, "4x4 PCF (percentage-closer filtering)"},
+          {"bias", "Shadow map", K::Number, {}, {}, "a depth offset"},
+          {"precision", "Shadow map", K::Select, {}, {}, "mediump rounds the depth path to 11 bits, as a phone's GPU does"},
+          {"map-size", "Shadow map", K::Select},
+          {"aov", "View", K::Select, {"color", "visibility"}},
+          {"map-view", "View", K::Checkbox, {"on", "off"}}}},
+    };
+}
+
+}  // namespace
+
+const std::vector<render::Option<Toggles>>& toggle_table() {
+    static const auto table = make_toggles();
+    return table;
+}
+
+const std::vector<ExerciseInfo>& exercise_list() {
+    static const auto list = make_list();
+    return list;
+}
+
+const ExerciseInfo& exercise_info(Exercise e) {
+    for (const auto& x : exercise_list())
+        if (x.id == e) return x;
+    throw std::logic_error("exercise_info: unknown exercise");
+}
+
+bool parse_exercise(std::string_view name, Exercise& out) {
+    for (const auto& x : exercise_list())
+        if (x.name == name) {
+            out = x.id;
+            return true;
+        }
+    return false;
+}
+
+std::string exercise_names() {
+    std::string s;
+    for (const auto& x : exercise_list()) s += (s.empty() ? "" : ", ") + std::string(x.name);
+    return s;
+}
+
+const std::vector<KeyBinding>& key_bindings() {
+    static const std::vector<KeyBinding> keys = {
+        {'L', "light", "light circulation on/off"},
+        {'J', "jump", "the teapot's jump on/off"},
+        {'O', "projection", "W09P2a: light projection perspective (point light) / orthographic (directional)"},
+        {'V', "fbo-view", "W09P2b: the FBO holds the view from the light / from the camera"},
+        {'E', "encoding", "W09P2c: next depth encoding (r8, rgba, depthtex where the context has it)"},
+        {'F', "filter", "W09P2c: 4x4 PCF on/off"},
+        {'R', "precision", "W09P2c: precision highp / emulated mediump (fp16 along the depth path, as on a phone)"},
+        {'M', "map-size", "shadow map size (W09P2b: FBO size), Shift+M backwards"},
+        {'A', "aov", "W09P2c: view colour / visibility"},
+        {'S', "map-view", "W09P2c: shadow map view on/off"},
+    };
+    return keys;
+}
+
+}  // namespace penumbra::examples

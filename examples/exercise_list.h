@@ -1,0 +1,72 @@
+// The course exercises, in one place: each exercise's name, title, text, technique and the
+// controls its page, its URL and the desktop app offer; the options only the exercises have (the
+// light's and the teapot's motion, the light's projection, what the off-screen buffer shows, the
+// shadow map's view), declared with the option table's types (render/options.h). No GL here: the
+// pages are generated from this list at build time (web/CMakeLists.txt, catalog_main.cpp), and
+// course_desktop.cpp and exercises.cpp read it at run time.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "render/options.h"
+
+namespace penumbra::examples {
+
+enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c };
+
+// What the controls set besides render::Settings.
+struct Toggles {
+    bool light = true;      // light=on|off: the light circles the table
+    bool jump = true;       // jump=on|off: the teapot jumps
+    bool ortho = false;     // projection=persp|ortho (W09P2a): ortho makes the light directional
+    bool fbo_light = true;  // fbo-view=light|camera (W09P2b): what is rendered into the FBO
+    bool map_view = true;   // map-view=on|off (W09P2c): the shadow map in the top right corner
+};
+const std::vector<render::Option<Toggles>>& toggle_table();
+
+// How a page shows an option.
+enum class ControlKind {
+    Toggle,    // a button that switches on/off
+    Radio,     // one radio button per choice
+    Select,    // a drop-down list of the choices (or an integer's presets)
+    Checkbox,  // ticked: values[0], unticked: values[1]
+    Number,    // a number-or-word option: a radio per word, one for a number, and the number box
+};
+
+struct Control {
+    std::string_view option;  // a render option or a toggle
+    std::string_view group;   // the fieldset it sits in
+    ControlKind kind = ControlKind::Select;
+    std::vector<std::string_view> values = {};  // Select: the choices offered (empty: all); Checkbox: on, off
+    std::string_view label = {};                // instead of the option's own label
+    std::string_view hint = {};                 // a short note beside it
+};
+
+struct ExerciseInfo {
+    Exercise id;
+    std::string_view name;    // "w09p1": the page (w09p1.html) and --exercise
+    std::string_view title;   // "W09P1: Jumping teapot on a marble table top"
+    std::string_view text;    // the page's paragraph under the title
+    std::string_view brief;   // one line for the index page
+    std::string_view canvas;  // the canvas's accessible label
+    render::Technique technique;
+    std::vector<Control> controls;
+};
+
+const std::vector<ExerciseInfo>& exercise_list();
+const ExerciseInfo& exercise_info(Exercise e);
+bool parse_exercise(std::string_view name, Exercise& out);
+std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c"
+
+// A desktop key bound to an option: pressing it steps the option to its next value (Shift: the
+// previous one) among the values `exercise`'s control offers, or all of them.
+struct KeyBinding {
+    int key;
+    std::string_view option;
+    std::string_view help;
+};
+const std::vector<KeyBinding>& key_bindings();
+
+}  // namespace penumbra::examples

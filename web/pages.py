@@ -1,0 +1,120 @@
+#!/usr/bin/env python3
+"""Generate the exercise pages from one template: each exercise of the catalogue (the JSON that
+examples/catalog_main.cpp prints from examples/exercise_list.cpp) becomes NAME.html from
+page.html.in, its controls written from the option table's types, labels and choices; index.html
+lists them from index.html.in. The page script (penumbra-page.js) binds any control that carries
+data-option, so nothing here is specific to one exercise or one option.
+
+usage: pages.py CATALOG.json WEB_DIR OUT_DIR
+"""
+import html
+import json
+import pathlib
+import string
+import sys
+
+
+def esc(s: str) -> str:
+    return html.escape(s, quote=True)
+
+
+def choices_of(option: dict, control: dict) -> list:
+    """The (value, label) pairs a select or radio group offers."""
+    pool = option["choices"] or option["presets"]
+    labels = {c["value"]: c["label"] for c in pool}
+    values = control["values"] or [c["value"] for c in pool]
+    return [(v, labels.get(v, v)) for v in values]
+
+
+def control_html(option: dict, control: dict) -> str:
+    name = option["name"]
+    label = control["label"] or option["label"]
+    kind = control["kind"]
+    hint_id = f"{name}-hint"
+    hint = f'\n        <span class="hint" id="{hint_id}">{esc(control["hint"])}</span>' if control["hint"] else ""
+    described = f' aria-describedby="{hint_id}"' if control["hint"] else ""
+    if kind == "toggle":
+        on = option["default"] == "on"
+        return (f'<button type="button" id="{name}" data-option="{name}" aria-pressed="{str(on).lower()}">'
+                f'{esc(label)}: <span class="state">{"on" if on else "off"}</span></button>')
+    if kind == "radio":
+        return "\n".join(f'<div class="row"><label><input type="radio" name="{name}" data-option="{name}" '
+                         f'value="{esc(v)}"> {esc(text)}</label></div>' for v, text in choices_of(option, control))
+    if kind == "select":
+        items = "".join(f'\n          <option value="{esc(v)}">{esc(text)}</option>' for v, text in choices_of(option, control))
+        return (f'<div class="row"><label for="{name}">{esc(label)}</label>\n'
+                f'        <select id="{name}" data-option="{name}"{described}>{items}\n        </select>{hint}</div>')
+    if kind == "checkbox":
+        on, off = control["values"] if control["values"] else ("on", "off")
+        return (f'<div class="row"><label><input type="checkbox" id="{name}" data-option="{name}" '
+                f'data-on="{esc(on)}" data-off="{esc(off)}"> {esc(label)}</label>{hint}</div>')
+    if kind == "number":
+        # A radio per word (its value shown beside it by the page script), one for a number of
+        # the user's, and the number box; the script sends the word or the number.
+        rows = [f'<div class="row"><label><input type="radio" name="{name}-mode" id="{name}-{esc(c["value"])}" '
+                f'value="{esc(c["value"])}"> {esc(c["label"])} (<span id="{name}-{esc(c["value"])}-value"></span>)'
+                f'</label></div>' for c in option["choices"]]
+        limits = "".join(f' {k}="{option[k]:g}"' for k in ("min", "max") if option[k] is not None)
+        step = f' step="{option["step"]:g}"' if option["step"] else ""
+        rows.append(f'<div class="row"><label><input type="radio" name="{name}-mode" id="{name}-fixed" value="fixed"> '
+                    f'fixed:</label>\n          <input type="number" id="{name}"{limits}{step} inputmode="decimal">\n'
+                    f'          <label for="{name}" class="hint">{esc(control["hint"])}</label></div>')
+        inner = "\n        ".join(rows)
+        return (f'<fieldset class="choices" id="{name}-mode">\n        <legend>{esc(label)}</legend>\n'
+                f'        {inner}\n      </fieldset>')
+    sys.exit(f"pages.py: control kind '{kind}' of '{name}' is not known")
+
+
+def controls_html(exercise: dict, options: dict) -> str:
+    """The controls in fieldsets, one per group, in the catalogue's order; buttons share a row."""
+    out, group, body = [], None, []
+
+    def close():
+        if group is not None:
+            out.append(f'    <fieldset>\n      <legend>{esc(group)}</legend>\n      ' + "\n      ".join(body) +
+                       "\n    </fieldset>")
+
+    buttons = []
+    for c in exercise["controls"]:
+        if c["group"] != group:
+            if buttons:
+                body.append('<div class="row">\n        ' + "\n        ".join(buttons) + "\n      </div>")
+                buttons = []
+            close()
+            group, body = c["group"], []
+        piece = control_html(options[c["option"]], c)
+        if c["kind"] == "toggle":
+            buttons.append(piece)
+            continue
+        if buttons:
+            body.append('<div class="row">\n        ' + "\n        ".join(buttons) + "\n      </div>")
+            buttons = []
+        body.append(piece)
+    if buttons:
+        body.append('<div class="row">\n        ' + "\n        ".join(buttons) + "\n      </div>")
+    close()
+    return "\n".join(out)
+
+
+def write_if_changed(path: pathlib.Path, text: str) -> None:
+    if not path.exists() or path.read_text() != text:
+        path.write_text(text)
+
+
+def main() -> None:
+    catalog = json.loads(pathlib.Path(sys.argv[1]).read_text())
+    web, out = pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
+    out.mkdir(parents=True, exist_ok=True)
+    page = string.Template((web / "page.html.in").read_text())
+    index = string.Template((web / "index.html.in").read_text())
+    items = []
+    for ex in catalog["exercises"]:
+        write_if_changed(out / f'{ex["name"]}.html', page.substitute(
+            name=ex["name"], title=esc(ex["title"]), text=esc(ex["text"]), canvas=esc(ex["canvas"]),
+            controls=controls_html(ex, catalog["options"])))
+        items.append(f'  <li><a href="{ex["name"]}.html">{esc(ex["title"])}</a>\n    <p>{esc(ex["brief"])}</p></li>')
+    write_if_changed(out / "index.html", index.substitute(exercises="\n".join(items)))
+
+
+if __name__ == "__main__":
+    main()
