@@ -1,8 +1,10 @@
 // penumbra: the headless renderer's command line. Subcommands:
 //   render   one scene, one set of settings, a PNG (or a timing with --frames)
+//   plan     the frame plan of those settings: every pass and resource (text or --json)
 //   gallery  the course scene in every encoding x filter, colour + visibility + light depth
 //   shaders  write every shader variant's GLSL ES 1.00 source (for glslangValidator)
 //   caps     what the headless context can do
+// Their options come from the option table (render/options.h) through cli_options.h.
 // Bad input gets one line naming the problem, a non-zero exit, and no output file.
 #include <algorithm>
 #include <chrono>
@@ -23,9 +25,10 @@
 #ifdef PENUMBRA_HAVE_TRUTH
 #include "bias_sweep.h"
 #endif
+#include "cli_options.h"
 #include "png_io.h"
+#include "render/options.h"
 #include "render/renderer.h"
-#include "render/settings.h"
 #include "render/shader_library.h"
 #include "scene/scene_source.h"
 #include "measure.h"
@@ -49,89 +52,107 @@ std::unique_ptr<platform::Platform> make_context() {
 
 int channels_for(render::Aov aov) { return aov == render::Aov::Color ? 3 : 1; }
 
-void write_image(render::Renderer& r, const render::Settings& s, const std::string& path) {
-    const auto px = tools::from_rgba(r.read_image(), s.width, s.height, channels_for(s.aov));
+void write_image(render::Renderer& r, const render::Options& o, const std::string& path) {
+    const auto px = tools::from_rgba(r.read_image(), o.job.width, o.job.height, channels_for(o.settings.aov));
     const std::string err = tools::write_png(path, px);
     if (!err.empty()) throw Failure{err};
 }
 
+// ---- render, plan ---------------------------------------------------------------------------
 
-// ---- render ---------------------------------------------------------------------------------
-
-int run_render(const render::Settings& s, bool verbose) {
-    if (!s.out.empty()) {
-        const fs::path out(s.out);
-        if (out.extension() != ".png") throw Failure{"--out " + s.out + ": the file name must end in .png", 2};
+int run_render(const render::Options& o, bool verbose) {
+    const render::Job& job = o.job;
+    if (!job.out.empty()) {
+        const fs::path out(job.out);
+        if (out.extension() != ".png") throw Failure{"--out " + job.out + ": the file name must end in .png", 2};
         std::error_code ec;
         if (out.has_parent_path() && !fs::is_directory(out.parent_path(), ec))
-            throw Failure{"--out " + s.out + ": folder " + out.parent_path().string() + " does not exist", 2};
+            throw Failure{"--out " + job.out + ": folder " + out.parent_path().string() + " does not exist", 2};
     }
-    scene::SceneSource src = open_scene(s.scene);
+    scene::SceneSource src = open_scene(job.scene);
     auto ctx = make_context();
-    render::Renderer r(gl::probe_caps());
+    render::Renderer r(gl::probe_caps(ctx->api()));
+    const render::FrameInputs in = render::offscreen(job.width, job.height);
     if (verbose)
         std::cerr << ctx->description() << "\n"
                   << r.caps().summary() << "\nfloat -> unorm8 conversion: " << shadow::to_string(r.unorm_rounding())
-                  << " (probed; the packing is compiled for it)\nsettings: " << render::to_args(s) << "\n";
-    if (const std::string problem = r.check(src.at(s.time), s); !problem.empty()) throw Failure{problem, 2};
+                  << " (probed; the packing is compiled for it)\nsettings: " << render::to_args(o) << "\n";
+    if (const std::string problem = r.check(src.at(job.time), o.settings, in); !problem.empty()) throw Failure{problem, 2};
 
     std::vector<double> ms;
-    for (int i = 0; i < s.frames; ++i) {
-        const double t = s.time + static_cast<double>(i) / 60.0;
+    for (int i = 0; i < job.frames; ++i) {
+        const double t = job.time + static_cast<double>(i) / 60.0;
         const auto start = std::chrono::steady_clock::now();
-        const render::FramePlan& plan = r.render(src.at(t), s);
+        const render::FramePlan& plan = r.render(src.at(t), o.settings, in);
         r.finish();
         const auto end = std::chrono::steady_clock::now();
         ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
         if (i == 0)
             for (const auto& n : plan.notes) std::cerr << "penumbra: note: " << n << "\n";
-        if (verbose && (i == 0 || i == s.frames - 1))
+        if (verbose && (i == 0 || i == job.frames - 1))
             std::cerr << "frame " << i << " (t = " << t << "):\n" << plan.describe();
     }
-    if (s.frames > 1) {
+    if (job.frames > 1) {
         std::vector<double> sorted = ms;
         std::sort(sorted.begin(), sorted.end());
         const size_t n = sorted.size();
         const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
         std::printf("%d frames, median %.3f ms/frame (min %.3f, max %.3f), each finished with glFinish; %s\n",
-                    s.frames, median, sorted.front(), sorted.back(), render::to_args(s).c_str());
+                    job.frames, median, sorted.front(), sorted.back(), render::to_args(o).c_str());
     }
-    if (!s.out.empty()) {
-        write_image(r, s, s.out);
-        if (verbose) std::cerr << "wrote " << s.out << "\n";
+    if (!job.out.empty()) {
+        write_image(r, o, job.out);
+        if (verbose) std::cerr << "wrote " << job.out << "\n";
     }
+    return 0;
+}
+
+// The plan of frame --frames (1: the first; the frames before it are rendered, so a later frame
+// shows what it reuses), as text or JSON, on the headless context's real capabilities.
+int run_plan(const render::Options& o, bool json) {
+    const render::Job& job = o.job;
+    scene::SceneSource src = open_scene(job.scene);
+    auto ctx = make_context();
+    render::Renderer r(gl::probe_caps(ctx->api()));
+    const render::FrameInputs in = render::offscreen(job.width, job.height);
+    if (const std::string problem = r.check(src.at(job.time), o.settings, in); !problem.empty()) throw Failure{problem, 2};
+    for (int i = 0; i + 1 < job.frames; ++i) r.render(src.at(job.time + static_cast<double>(i) / 60.0), o.settings, in);
+    const render::FramePlan plan = r.plan(src.at(job.time + static_cast<double>(job.frames - 1) / 60.0), o.settings, in);
+    std::printf("%s%s", json ? plan.to_json().c_str() : plan.to_text().c_str(), json ? "\n" : "");
     return 0;
 }
 
 // ---- gallery --------------------------------------------------------------------------------
 
-int run_gallery(const std::string& dir, render::Settings base) {
+int run_gallery(const std::string& dir, const render::Options& base) {
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec) throw Failure{"--out-dir " + dir + ": cannot create (" + ec.message() + ")", 2};
-    scene::SceneSource src = open_scene(base.scene);
+    scene::SceneSource src = open_scene(base.job.scene);
+    const scene::Scene& frame = src.at(base.job.time);
+    const render::FrameInputs in = render::offscreen(base.job.width, base.job.height);
     auto ctx = make_context();
-    render::Renderer r(gl::probe_caps());
+    render::Renderer r(gl::probe_caps(ctx->api()));
 
     struct Row {
         std::string label;
-        render::Settings s;
+        render::Options o;
     };
     std::vector<Row> rows;
     const render::Aov aovs[] = {render::Aov::Color, render::Aov::Visibility, render::Aov::LightDepth};
     for (auto e : shadow::kAllEncodings)
         for (auto f : shadow::kAllFilters) {
             if (e == shadow::Encoding::DepthTex && !r.caps().depth_texture) continue;
-            render::Settings s = base;
-            s.technique = render::Technique::ShadowMap;
-            s.encoding = e;
-            s.filter = f;
-            rows.push_back({std::string(shadow::to_string(e)) + "-" + std::string(shadow::to_string(f)), s});
+            render::Options o = base;
+            o.settings.technique = render::Technique::ShadowMap;
+            o.settings.encoding = e;
+            o.settings.filter = f;
+            rows.push_back({std::string(shadow::to_string(e)) + "-" + std::string(shadow::to_string(f)), o});
         }
     for (auto t : {render::Technique::Planar, render::Technique::None}) {
-        render::Settings s = base;
-        s.technique = t;
-        rows.push_back({std::string(render::to_string(t)), s});
+        render::Options o = base;
+        o.settings.technique = t;
+        rows.push_back({std::string(render::to_string(t)), o});
     }
 
     std::ofstream html;
@@ -142,27 +163,27 @@ int run_gallery(const std::string& dir, render::Settings base) {
     for (const auto& row : rows) {
         body += "<tr><th>" + row.label + "</th>";
         for (auto aov : aovs) {
-            render::Settings s = row.s;
-            s.aov = aov;
+            render::Options o = row.o;
+            o.settings.aov = aov;
             const std::string name = row.label + "-" + std::string(render::to_string(aov)) + ".png";
             ++done;
-            if (aov == render::Aov::LightDepth && s.technique != render::Technique::ShadowMap) {
+            if (aov == render::Aov::LightDepth && o.settings.technique != render::Technique::ShadowMap) {
                 body += "<td>(no shadow map)</td>";
                 continue;
             }
-            if (const std::string problem = r.check(src.at(s.time), s); !problem.empty()) throw Failure{problem, 2};
+            if (const std::string problem = r.check(frame, o.settings, in); !problem.empty()) throw Failure{problem, 2};
             std::fprintf(stderr, "[%2zu/%zu] %s\n", done, total, name.c_str());
-            r.render(src.at(s.time), s);
-            write_image(r, s, (fs::path(dir) / name).string());
+            r.render(frame, o.settings, in);
+            write_image(r, o, (fs::path(dir) / name).string());
             ++written;
-            body += "<td><img src=\"" + name + "\" width=\"256\" title=\"" + render::to_args(s) + "\"></td>";
+            body += "<td><img src=\"" + name + "\" width=\"256\" title=\"" + render::to_args(o) + "\"></td>";
         }
         body += "</tr>\n";
     }
     const std::string page =
         "<!doctype html><meta charset=\"utf-8\"><title>penumbra gallery</title>\n"
         "<style>body{font-family:sans-serif;background:#222;color:#eee}td,th{padding:4px}</style>\n"
-        "<h1>The course scene at t = " + std::to_string(base.time) + "</h1>\n<p>" + r.caps().renderer +
+        "<h1>The course scene at t = " + std::to_string(base.job.time) + "</h1>\n<p>" + r.caps().renderer +
         "; hover an image for its exact settings.</p>\n<table><tr><th></th><th>colour</th><th>visibility</th>"
         "<th>light depth</th></tr>\n" + body + "</table>\n";
     std::ofstream f(index);
@@ -187,8 +208,7 @@ int run_shaders(const std::string& dir) {
     };
     // Each file as it is (no defines), then each variant; the extension tells the stage.
     for (const auto& v : render::all_variants()) {
-        std::string tag;
-        for (const auto& d : v.defines) tag += "_" + d;
+        const std::string tag = v.defines.empty() ? std::string() : "_" + v.tag();
         const auto stem = [](const std::string& f) { return f.substr(0, f.find('.')); };
         write(stem(v.vertex) + "_plain.vert", render::variant_source(v.vertex, {}));
         write(stem(v.fragment) + "_plain.frag", render::variant_source(v.fragment, {}));
@@ -201,7 +221,7 @@ int run_shaders(const std::string& dir) {
 
 int run_caps() {
     auto ctx = make_context();
-    std::printf("%s\n%s\n", ctx->description().c_str(), gl::probe_caps().summary().c_str());
+    std::printf("%s\n%s\n", ctx->description().c_str(), gl::probe_caps(ctx->api()).summary().c_str());
     return 0;
 }
 
@@ -211,35 +231,26 @@ int main(int argc, char** argv) {
     CLI::App app{"penumbra: shadow mapping on GLES2, headless (EGL)"};
     app.require_subcommand(1);
 
-    // render: every Settings option, parsed by the one Settings parser.
+    // render and plan: every option of the table, parsed by the table.
     auto* render_cmd = app.add_subcommand("render", "render one frame (or time --frames N) to a PNG");
-    std::map<std::string, std::string> raw;
-    const std::map<std::string, std::string> help = {
-        {"scene", "teapot (the course scene) or FILE.gltf / FILE.glb"},
-        {"time", "seconds; the animation is a pure function of t"},
-        {"size", "WxH of the image (default 512x512)"},
-        {"encoding", "r8 | rgba | depthtex (default rgba)"},
-        {"filter", "hard | pcf2x2 | pcf4x4 (default hard)"},
-        {"map-size", "shadow map width = height (default 1024)"},
-        {"bias", "depth offset, 'default' (r8 0.005, rgba and depthtex 0.0015) or 'auto' (quantum + receiver slope)"},
-        {"precision", "highp | mediump (emulated fp16 along the depth path, as a phone computes it)"},
-        {"aov", "color | visibility | light-depth"},
-        {"technique", "shadowmap | planar | none (default shadowmap)"},
-        {"out", "FILE.png (top row first); none: write nothing"},
-        {"frames", "render N frames, t advancing 1/60 s, and print the median ms/frame"}};
-    for (auto name : render::option_names()) {
-        const std::string n(name);
-        const auto h = help.find(n);
-        render_cmd->add_option("--" + n, raw[n], h == help.end() ? "" : h->second);
-    }
+    const tools::TableOptions render_options(render_cmd);
     bool verbose = false;
     render_cmd->add_flag("-v,--verbose", verbose, "list the context, the settings and each frame's passes");
 
+    auto* plan_cmd = app.add_subcommand("plan", "print the frame plan: every pass (target, state, variants, draws) and resource");
+    std::vector<std::string> plan_names;
+    for (const auto& o : render::option_table())
+        if (o.info.name != "out") plan_names.emplace_back(o.info.name);
+    const tools::TableOptions plan_options(plan_cmd, plan_names);
+    bool plan_json = false;
+    plan_cmd->add_flag("--json", plan_json, "as JSON (passes, resources, uniforms, variants)");
+
     auto* gallery_cmd = app.add_subcommand("gallery", "the course scene in every encoding x filter, with an index.html");
     std::string gallery_dir = "out/gallery";
-    std::map<std::string, std::string> graw = {{"time", "0.6"}, {"size", "512x512"}, {"map-size", "1024"}};
     gallery_cmd->add_option("--out-dir", gallery_dir, "folder for the images (default out/gallery)");
-    for (const char* n : {"scene", "time", "size", "map-size"}) gallery_cmd->add_option(std::string("--") + n, graw[n]);
+    render::Options gallery_defaults;  // the course at t = 0.6
+    gallery_defaults.job.time = 0.6;
+    const tools::TableOptions gallery_options(gallery_cmd, {"scene", "time", "size", "map-size"}, gallery_defaults);
 
     auto* shaders_cmd = app.add_subcommand("shaders", "write every shader variant's source to a folder");
     std::string shader_dir;
@@ -271,17 +282,9 @@ int main(int argc, char** argv) {
     }
 
     try {
-        const auto settings_from = [](CLI::App* cmd, const std::map<std::string, std::string>& values,
-                                      render::Settings s) {
-            for (const auto& [name, value] : values) {
-                const bool given = cmd->get_option("--" + name)->count() > 0;
-                if (!given && value.empty()) continue;
-                if (const std::string err = render::parse_option(s, name, value); !err.empty()) throw Failure{err, 2};
-            }
-            return s;
-        };
-        if (*render_cmd) return run_render(settings_from(render_cmd, raw, render::Settings{}), verbose);
-        if (*gallery_cmd) return run_gallery(gallery_dir, settings_from(gallery_cmd, graw, render::Settings{}));
+        if (*render_cmd) return run_render(render_options.parse(), verbose);
+        if (*plan_cmd) return run_plan(plan_options.parse(), plan_json);
+        if (*gallery_cmd) return run_gallery(gallery_dir, gallery_options.parse());
         if (*shaders_cmd) return run_shaders(shader_dir);
         if (*caps_cmd) return run_caps();
         if (const int rc = tools::run_measure_commands(*measure); rc >= 0) return rc;

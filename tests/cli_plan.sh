@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# `penumbra plan`: for each technique (and the light-depth AOV) the plan prints as JSON that parses,
+# lists its passes and resources, and names the same passes, in the same order, as
+# `penumbra render -v` prints for the frame it renders; --frames 2 shows the map reused.
+# usage: cli_plan.sh PENUMBRA WORKDIR
+set -uo pipefail
+penumbra=$1 work=$2 data=$(cd "$(dirname "$0")/data" && pwd)
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+fail=0
+check() {  # check NAME ARGS...: the plan's passes (JSON) equal render -v's
+  local name=$1; shift
+  if ! "$penumbra" plan "$@" --json > "$name.json" 2> "$name.err"; then
+    echo "FAIL $name: penumbra plan exited non-zero: $(cat "$name.err")"; fail=1; return
+  fi
+  local planned rendered
+  planned=$(python3 -c '
+import json, sys
+p = json.load(open(sys.argv[1]))
+assert p["passes"] and p["resources"], "no passes or no resources"
+for r in p["resources"]:
+    assert r["bytes"] == r["width"] * r["height"] * ((4 if r["color"] else 0) + (4 if r["depth_texture"] else 0)
+        + {None: 0, "depth16": 2, "depth24": 4, "depth24-stencil8": 4, "depth-stencil": 4}[r["depth_buffer"]]), r
+for q in p["passes"]:
+    assert q["target"]["resource"] == "window" or any(r["name"] == q["target"]["resource"] for r in p["resources"])
+    assert q["draws"], q["name"] + " draws nothing"
+print(" ".join(q["name"].replace(" ", "_") for q in p["passes"]))' "$name.json") || { echo "FAIL $name: bad plan JSON"; fail=1; return; }
+  rendered=$("$penumbra" render -v "$@" 2>&1 >/dev/null | sed -n 's/^[0-9]*\. \([^:]*\):.*/\1/p' | tr ' ' '_' | tr '\n' ' ' | sed 's/ $//')
+  if [ "$planned" != "$rendered" ]; then
+    echo "FAIL $name: plan '$planned', render -v '$rendered'"; fail=1
+  else
+    echo "ok $name: $planned"
+  fi
+}
+check shadowmap --technique shadowmap --size 64x64 --map-size 256
+check planar --technique planar --size 64x64
+check none --technique none --size 64x64
+check light-depth --aov light-depth --size 64x64 --map-size 256
+check gltf --scene "$data/sphere_over_plane.gltf" --size 64x64 --filter pcf4x4 --bias auto
+
+# The second frame of a still scene reuses the map: its pass is skipped, its resource marked reused.
+"$penumbra" plan --scene "$data/sphere_over_plane.gltf" --frames 2 --size 64x64 --json > still.json &&
+  python3 -c '
+import json, sys
+p = json.load(open(sys.argv[1]))
+m = next(r for r in p["resources"] if r["name"] == "shadow-map")
+assert m["reused"] and p["passes"][0]["skipped"], "the still second frame redraws its map"' still.json \
+  && echo "ok still: the map is reused" || { echo "FAIL still: the map of a still second frame is not reused"; fail=1; }
+# The text form names every pass too, and bad input is refused as render refuses it.
+"$penumbra" plan --technique planar --size 64x64 | grep -q "planar-stencil (planar)" || { echo "FAIL text"; fail=1; }
+if "$penumbra" plan --technique volume 2>/dev/null; then echo "FAIL: a bad technique was planned"; fail=1; fi
+exit $fail
