@@ -17,7 +17,7 @@ expect() {  # expect PATTERN ARGS...
   fi
 }
 expect "unknown value 'w10'" --exercise w10
-expect "expected on or off" --light maybe
+expect "unknown value 'maybe' (on, off)" --light maybe
 expect "unknown value 'r16'" --encoding r16
 expect "unknown value 'lowp'" --precision lowp
 expect "or 'default', 'auto'" --bias often

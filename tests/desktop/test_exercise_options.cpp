@@ -6,7 +6,7 @@
 
 using penumbra::examples::CourseApp;
 using penumbra::examples::Exercise;
-using penumbra::examples::kAllExercises;
+using penumbra::examples::exercise_list;
 
 TEST(ExerciseOptions, DefaultsOfEachPage) {
     EXPECT_EQ(CourseApp(Exercise::W09P1).query(), "light=on&jump=on");
@@ -22,7 +22,8 @@ TEST(ExerciseOptions, EveryChangeReadsBack) {
         {"light", "off"}, {"jump", "off"},   {"projection", "ortho"}, {"fbo-view", "camera"}, {"map-view", "off"},
         {"encoding", "r8"}, {"filter", "pcf4x4"}, {"bias", "0.003"},   {"map-size", "2048"},     {"aov", "visibility"},
         {"precision", "mediump"}};
-    for (Exercise e : kAllExercises) {
+    for (const auto& x : exercise_list()) {
+        const Exercise e = x.id;
         CourseApp a(e);
         for (const auto& [k, v] : changes) ASSERT_EQ(a.set_option(k, v), "") << k;
         CourseApp b(e);
@@ -143,4 +144,40 @@ TEST(ExerciseOptions, Keys) {
     EXPECT_NE(help.find("  U  "), std::string::npos) << help;
     EXPECT_NE(help.find("  R  "), std::string::npos) << help;
     EXPECT_EQ(a.on_key('Q', false), "");
+    // Keys step through what the exercise's control offers: W09P2c shows colour and visibility.
+    EXPECT_EQ(a.on_key('A', false), "aov = visibility");
+    EXPECT_EQ(a.on_key('A', false), "aov = color");
+    // W09P2b offers textures up to 2048: from 2048, M wraps to 256.
+    a.on_key('3', false);
+    ASSERT_EQ(a.set_option("map-size", "2048"), "");
+    EXPECT_EQ(a.on_key('M', false), "map-size = 256");
+}
+
+// The list of exercises is the one place the pages, the desktop and the keys read: every control
+// names an option of a table, and every value a control offers is one that option accepts.
+TEST(ExerciseList, EveryControlNamesAnOptionAndOffersValidValues) {
+    using namespace penumbra;
+    ASSERT_EQ(exercise_list().size(), 4u);
+    for (const auto& x : exercise_list()) {
+        Exercise parsed{};
+        ASSERT_TRUE(examples::parse_exercise(x.name, parsed));
+        EXPECT_EQ(parsed, x.id);
+        EXPECT_FALSE(x.title.empty());
+        EXPECT_EQ(x.title.substr(0, 5), "W09P" + std::string(1, x.name[4])) << x.title;
+        for (const auto& c : x.controls) {
+            const render::OptionInfo* info = nullptr;
+            if (const auto* t = render::find_option(examples::toggle_table(), c.option)) info = &t->info;
+            else if (const auto* r = render::find_option(render::option_table(), c.option)) info = &r->info;
+            ASSERT_NE(info, nullptr) << x.name << ": " << c.option;
+            EXPECT_EQ(info->part, render::OptionPart::Technique) << c.option << ": a page sets no job option";
+            for (std::string_view v : c.values) EXPECT_EQ(render::check_value(*info, v), "") << c.option << "=" << v;
+            CourseApp a(x.id);
+            EXPECT_NE(a.query().find(std::string(c.option) + "="), std::string::npos) << x.name << ": " << c.option;
+        }
+    }
+    for (const auto& k : examples::key_bindings()) {
+        const bool known = render::find_option(examples::toggle_table(), k.option) ||
+                           render::find_option(render::option_table(), k.option);
+        EXPECT_TRUE(known) << k.option;
+    }
 }

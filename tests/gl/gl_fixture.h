@@ -21,7 +21,7 @@ platform::Platform& context();
 struct GlTest : ::testing::Test {
     void SetUp() override {
         context();
-        renderer = std::make_unique<render::Renderer>(gl::probe_caps());
+        renderer = std::make_unique<render::Renderer>(gl::probe_caps(context().api()));
     }
     void TearDown() override {
         renderer.reset();

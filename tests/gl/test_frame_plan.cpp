@@ -1,9 +1,11 @@
 // "Model only what the scene requires": passes, targets and variants exist only when the scene
-// and the settings call for them, and an unchanged shadow map is reused.
+// and the settings call for them, and an unchanged shadow map is reused; the plan a renderer
+// prints is the plan it runs, and its pool holds only what the last plan declared.
 #include "gl_fixture.h"
 
 #include <algorithm>
 
+#include "render/options.h"
 #include "scene/course_scene.h"
 #include "scene/scene_source.h"
 
@@ -13,19 +15,17 @@ namespace {
 
 class RendererGl : public test::GlTest {};
 
-bool has_pass(const render::FramePlan& p, const std::string& name) {
-    return std::any_of(p.passes.begin(), p.passes.end(), [&](const render::PassInfo& i) { return i.name == name; });
-}
+const render::FrameInputs kSmall = render::offscreen(64, 64);
+const render::FrameInputs kMedium = render::offscreen(96, 96);
 
 TEST_F(RendererGl, NoShadowPassWithoutCasters) {
     auto course = scene::make_course_scene(4);
     for (auto& o : course.scene.objects) o.casts_shadow = false;
     render::Settings s;
-    s.width = s.height = 64;
-    const auto& plan = renderer->render(course.scene, s);
-    EXPECT_FALSE(plan.shadow_map);
-    EXPECT_FALSE(has_pass(plan, "shadow-map"));
-    EXPECT_EQ(renderer->shadow_map_bytes(), 0u);
+    const auto& plan = renderer->render(course.scene, s, kSmall);
+    EXPECT_EQ(plan.resource("shadow-map"), nullptr);
+    EXPECT_FALSE(plan.has_pass("shadow-map"));
+    EXPECT_FALSE(renderer->pool().has("shadow-map"));
     ASSERT_EQ(plan.passes.size(), 1u);
     EXPECT_NE(plan.passes[0].detail.find("no shadows"), std::string::npos);
 }
@@ -33,38 +33,39 @@ TEST_F(RendererGl, NoShadowPassWithoutCasters) {
 TEST_F(RendererGl, ShadowMapIsReusedUntilTheLightOrACasterMoves) {
     auto course = scene::make_course_scene(4);
     render::Settings s;
-    s.width = s.height = 64;
     s.map_size = 256;
+    const auto redrawn = [&] { return renderer->render(course.scene, s, kSmall).drawn("shadow-map"); };
     scene::animate_course(course, 1.0, 1.0);
-    EXPECT_TRUE(renderer->render(course.scene, s).shadow_redrawn);
+    EXPECT_TRUE(redrawn());
     // Same light, same casters: reused.
-    const auto& again = renderer->render(course.scene, s);
-    EXPECT_TRUE(again.shadow_map);
-    EXPECT_FALSE(again.shadow_redrawn);
-    EXPECT_NE(again.passes[0].detail.find("reused"), std::string::npos);
+    const auto& again = renderer->render(course.scene, s, kSmall);
+    ASSERT_NE(again.resource("shadow-map"), nullptr);
+    EXPECT_TRUE(again.resource("shadow-map")->reused);
+    EXPECT_FALSE(again.drawn("shadow-map"));
+    EXPECT_TRUE(again.passes[0].skipped);
+    EXPECT_NE(again.describe().find("1. shadow-map: reused"), std::string::npos) << again.describe();
     // The teapot jumps, the light stays: redrawn.
     scene::animate_course(course, 1.0, 1.2);
-    EXPECT_TRUE(renderer->render(course.scene, s).shadow_redrawn);
+    EXPECT_TRUE(redrawn());
     // The light moves, the teapot stays: redrawn.
     scene::animate_course(course, 2.0, 1.2);
-    EXPECT_TRUE(renderer->render(course.scene, s).shadow_redrawn);
+    EXPECT_TRUE(redrawn());
     // A different encoding needs a different map.
     s.encoding = shadow::Encoding::R8;
-    EXPECT_TRUE(renderer->render(course.scene, s).shadow_redrawn);
+    EXPECT_TRUE(redrawn());
     // Changing only the camera-side settings keeps it.
     s.filter = shadow::Filter::PCF4x4;
     s.bias = 0.01f;
-    EXPECT_FALSE(renderer->render(course.scene, s).shadow_redrawn);
+    EXPECT_FALSE(redrawn());
 }
 
 TEST_F(RendererGl, ReusedMapGivesTheSameImage) {
     auto course = scene::make_course_scene(4);
     render::Settings s;
-    s.width = s.height = 96;
     s.map_size = 256;
-    renderer->render(course.scene, s);
+    renderer->render(course.scene, s, kMedium);
     const auto first = renderer->read_image();
-    ASSERT_FALSE(renderer->render(course.scene, s).shadow_redrawn);
+    ASSERT_FALSE(renderer->render(course.scene, s, kMedium).drawn("shadow-map"));
     EXPECT_EQ(renderer->read_image(), first);
 }
 
@@ -73,58 +74,55 @@ TEST_F(RendererGl, ASecondSceneWithAsManyMeshesIsUploadedAnew) {
     auto course = scene::make_course_scene(4);
     auto other = scene::make_course_scene(6);
     render::Settings s;
-    s.width = s.height = 96;
     s.map_size = 256;
-    renderer->render(course.scene, s);
-    renderer->render(other.scene, s);
+    renderer->render(course.scene, s, kMedium);
+    renderer->render(other.scene, s, kMedium);
     const auto reused = renderer->read_image();
     render::Renderer fresh(renderer->caps());
-    fresh.render(other.scene, s);
+    fresh.render(other.scene, s, kMedium);
     EXPECT_EQ(reused, fresh.read_image());
 }
 
 TEST_F(RendererGl, EachTechniqueRunsOnlyItsPasses) {
     auto course = scene::make_course_scene(4);
     render::Settings s;
-    s.width = s.height = 64;
     s.technique = render::Technique::None;
-    auto plan = renderer->render(course.scene, s);
+    auto plan = renderer->render(course.scene, s, kSmall);
     EXPECT_EQ(plan.passes.size(), 1u);
-    EXPECT_FALSE(plan.shadow_map);
+    EXPECT_EQ(plan.resource("shadow-map"), nullptr);
 
     s.technique = render::Technique::Planar;
-    plan = renderer->render(course.scene, s);
-    EXPECT_TRUE(has_pass(plan, "planar-stencil"));
-    EXPECT_TRUE(has_pass(plan, "planar-shadow"));
-    EXPECT_FALSE(has_pass(plan, "shadow-map"));
+    plan = renderer->render(course.scene, s, kSmall);
+    EXPECT_TRUE(plan.has_pass("planar-stencil"));
+    EXPECT_TRUE(plan.has_pass("planar-shadow"));
+    EXPECT_FALSE(plan.has_pass("shadow-map"));
 
     s.technique = render::Technique::ShadowMap;
-    plan = renderer->render(course.scene, s);
-    EXPECT_TRUE(has_pass(plan, "shadow-map"));
-    EXPECT_FALSE(has_pass(plan, "planar-stencil"));
+    plan = renderer->render(course.scene, s, kSmall);
+    EXPECT_TRUE(plan.has_pass("shadow-map"));
+    EXPECT_FALSE(plan.has_pass("planar-stencil"));
 }
 
 TEST_F(RendererGl, OnlyTheVariantsInUseAreCompiled) {
     auto course = scene::make_course_scene(4);
     render::Settings s;
-    s.width = s.height = 64;
     s.encoding = shadow::Encoding::R8;
     s.filter = shadow::Filter::Hard;
-    renderer->render(course.scene, s);
+    renderer->render(course.scene, s, kSmall);
     // The start-up probe, the depth pass, the textured table and the untextured teapot.
     EXPECT_EQ(renderer->shaders().compiled(), 4u);
     s.technique = render::Technique::None;
-    renderer->render(course.scene, s);
+    renderer->render(course.scene, s, kSmall);
     EXPECT_EQ(renderer->shaders().compiled(), 6u);  // + the two lit variants without SHADOW_MAP
 }
 
 TEST_F(RendererGl, MapSizeBeyondTheContextIsClampedWithANote) {
     auto course = scene::make_course_scene(2);
     render::Settings s;
-    s.width = s.height = 32;
     s.map_size = renderer->caps().max_target_size() * 2;
-    const auto& plan = renderer->render(course.scene, s);
-    EXPECT_EQ(plan.map_size, renderer->caps().max_target_size());
+    const auto& plan = renderer->render(course.scene, s, render::offscreen(32, 32));
+    ASSERT_NE(plan.resource("shadow-map"), nullptr);
+    EXPECT_EQ(plan.resource("shadow-map")->desc.width, renderer->caps().max_target_size());
     ASSERT_FALSE(plan.notes.empty());
     EXPECT_NE(plan.notes[0].find("clamped"), std::string::npos);
 }
@@ -132,9 +130,9 @@ TEST_F(RendererGl, MapSizeBeyondTheContextIsClampedWithANote) {
 TEST_F(RendererGl, ChecksNameTheProblem) {
     auto course = scene::make_course_scene(2);
     render::Settings s;
-    s.width = renderer->caps().max_target_size() + 1;
-    EXPECT_NE(renderer->check(course.scene, s).find("maximum"), std::string::npos);
-    s = render::Settings{};
+    const int too_wide = renderer->caps().max_target_size() + 1;
+    EXPECT_NE(renderer->check(course.scene, s, render::offscreen(too_wide, 8)).find("maximum"), std::string::npos);
+    EXPECT_THROW(renderer->render(course.scene, s, render::offscreen(too_wide, 8)), std::invalid_argument);
     s.technique = render::Technique::Planar;
     scene::Scene no_ground = course.scene;
     no_ground.ground_plane.reset();
@@ -149,8 +147,8 @@ TEST_F(RendererGl, EveryCombinationRendersWithoutGlErrors) {
     std::vector<std::string> warnings;
     ASSERT_TRUE(src.open("teapot", error, warnings));
     render::Settings s;
-    s.width = s.height = 48;
     s.map_size = 128;
+    const render::FrameInputs in = render::offscreen(48, 48);
     for (auto t : {render::Technique::ShadowMap, render::Technique::Planar, render::Technique::None})
         for (auto e : shadow::kAllEncodings)
             for (auto f : shadow::kAllFilters)
@@ -159,9 +157,9 @@ TEST_F(RendererGl, EveryCombinationRendersWithoutGlErrors) {
                     s.encoding = e;
                     s.filter = f;
                     s.aov = a;
-                    if (!renderer->check(src.at(0.3), s).empty()) continue;
+                    if (!renderer->check(src.at(0.3), s, in).empty()) continue;
                     // Each pass ends with a glGetError check that throws naming the pass.
-                    EXPECT_NO_THROW(renderer->render(src.at(0.3), s)) << render::to_args(s);
+                    EXPECT_NO_THROW(renderer->render(src.at(0.3), s, in)) << render::to_args(s);
                     EXPECT_NO_THROW(gl::check_errors("after the frame")) << render::to_args(s);
                 }
 }
@@ -202,14 +200,111 @@ TEST_F(RendererGl, GltfSceneRendersWithAShadow) {
     std::vector<std::string> warnings;
     ASSERT_TRUE(src.open(std::string(PENUMBRA_TEST_DATA) + "/sphere_over_plane.gltf", error, warnings)) << error;
     render::Settings s;
-    s.width = s.height = 128;
     s.aov = render::Aov::Visibility;
-    const auto& plan = renderer->render(src.at(0.0), s);
-    EXPECT_TRUE(plan.shadow_map);
+    const auto& plan = renderer->render(src.at(0.0), s, render::offscreen(128, 128));
+    EXPECT_TRUE(plan.drawn("shadow-map"));
     const auto px = renderer->read_image();
     size_t dark = 0;
     for (size_t i = 0; i < px.size(); i += 4) dark += px[i] < 128;
     EXPECT_GT(dark, 100u) << "the sphere casts a shadow on the plane";
+}
+
+TEST_F(RendererGl, ThePrintedPlanIsThePlanThatRuns) {
+    auto course = scene::make_course_scene(4);
+    render::Settings s;
+    s.map_size = 256;
+    for (auto t : render::kAllTechniques) {
+        s.technique = t;
+        const render::FramePlan planned = renderer->plan(course.scene, s, kSmall);
+        const render::FramePlan& ran = renderer->render(course.scene, s, kSmall);
+        EXPECT_EQ(planned.to_json(), ran.to_json()) << render::to_string(t);
+        // Planned again now, the same frame reuses what the first one drew.
+        const render::FramePlan next = renderer->plan(course.scene, s, kSmall);
+        if (t == render::Technique::ShadowMap) {
+            EXPECT_TRUE(next.passes[0].skipped);
+        }
+    }
+}
+
+TEST_F(RendererGl, ThePoolHoldsOnlyWhatTheLastPlanDeclared) {
+    auto course = scene::make_course_scene(4);
+    render::Settings s;
+    s.map_size = 512;
+    renderer->render(course.scene, s, kSmall);
+    EXPECT_TRUE(renderer->pool().has("shadow-map"));
+    EXPECT_TRUE(renderer->pool().has("camera"));
+    EXPECT_EQ(renderer->pool().bytes(), renderer->last_plan()->resource("shadow-map")->desc.bytes() +
+                                            renderer->last_plan()->resource("camera")->desc.bytes());
+    // 512 x 512 RGBA8 + a 24-bit depth buffer (4 bytes a texel as the GPU stores it).
+    EXPECT_EQ(renderer->last_plan()->resource("shadow-map")->desc.bytes(), 512u * 512u * 8u);
+    s.technique = render::Technique::None;
+    renderer->render(course.scene, s, kSmall);
+    EXPECT_FALSE(renderer->pool().has("shadow-map"));
+    EXPECT_EQ(renderer->pool().count(), 1u);
+    // Two maps under two names are two resources; a bigger map replaces the smaller one.
+    s.technique = render::Technique::ShadowMap;
+    renderer->render(course.scene, s, kSmall);
+    s.map_size = 1024;
+    renderer->render(course.scene, s, kSmall);
+    EXPECT_EQ(renderer->pool().count(), 2u);
+    EXPECT_EQ(renderer->last_plan()->resource("shadow-map")->desc.width, 1024);
+    EXPECT_TRUE(renderer->last_plan()->drawn("shadow-map"));
+}
+
+// W09P2b's pattern: one plan renders into a texture of the pool, the next samples it where the
+// scene has an image, and the scene itself is not edited.
+TEST_F(RendererGl, ATextureOutputIsSampledByTheNextPlan) {
+    auto course = scene::make_course_scene(4);
+    scene::Scene& sc = course.scene;
+    const int image = static_cast<int>(sc.images.size());
+    sc.images.push_back(scene::Image{1, 1, {0, 0, 0, 255}});  // a black placeholder
+    scene::Material m;
+    m.base_color_texture = image;
+    sc.materials.push_back(m);
+    const int material = static_cast<int>(sc.materials.size()) - 1;
+    const int table_material = sc.objects[static_cast<size_t>(course.table)].material;
+    render::Settings s;
+    s.technique = render::Technique::None;
+    s.aov = render::Aov::Color;
+    const render::Output tex = render::Output::texture("picture", 64, 64, gl::Sampling::Linear, gl::Wrap::Clamp);
+    render::FrameInputs into;
+    into.output = tex;
+    renderer->render(sc, s, into);
+    // The table drawn with the textured material: it shows the picture instead of black.
+    render::FrameInputs in = kSmall;
+    in.objects.push_back({course.table, -1, material});
+    in.images.push_back({image, tex});
+    const auto& plan = renderer->render(sc, s, in);
+    EXPECT_TRUE(renderer->pool().has("picture"));
+    ASSERT_EQ(plan.passes.size(), 1u);
+    EXPECT_EQ(plan.passes[0].reads().size(), 1u);
+    const auto with_picture = renderer->read_image();
+    in.images.clear();
+    renderer->render(sc, s, in);
+    EXPECT_NE(renderer->read_image(), with_picture);
+    EXPECT_EQ(sc.objects[static_cast<size_t>(course.table)].material, table_material);  // the scene is not edited
+}
+
+TEST_F(RendererGl, AMisspeltUniformFailsInDebugBuilds) {
+    if (!gl::kStrictUniforms) GTEST_SKIP() << "release build: unknown uniforms are ignored";
+    gl::Device device;
+    const gl::Program& p = renderer->shaders().get(render::probe_variant());
+    device.use(p);
+    EXPECT_NO_THROW(p.set("u_value", glm::vec4(0.0f)));
+    try {
+        p.set("u_valeu", glm::vec4(0.0f));
+        FAIL() << "a misspelt uniform was set silently";
+    } catch (const gl::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("u_valeu"), std::string::npos) << e.what();
+    }
+    // A uniform of a feature the variant lacks is no better than a misspelt one.
+    render::LitFeatures f;
+    const gl::Program& lit = renderer->shaders().get(render::lit_variant(f));
+    EXPECT_THROW(lit.set("u_shadow_map", 0), gl::Error);
+    f.shadow_map = true;
+    const gl::Program& shadowed = renderer->shaders().get(render::lit_variant(f));
+    device.use(shadowed);
+    EXPECT_NO_THROW(shadowed.set("u_shadow_map", 0));
 }
 
 }  // namespace

@@ -30,10 +30,9 @@ class Golden : public test::GlTest, public ::testing::WithParamInterface<Case> {
 
 TEST_P(Golden, CourseSceneMatches) {
     const Case c = GetParam();
+    constexpr double kTime = 0.6;
+    constexpr int kSize = 256;
     render::Settings s;
-    s.time = 0.6;
-    s.width = 256;
-    s.height = 256;
     s.map_size = 512;
     s.technique = c.technique;
     s.encoding = c.encoding;
@@ -43,10 +42,11 @@ TEST_P(Golden, CourseSceneMatches) {
     std::string error;
     std::vector<std::string> warnings;
     ASSERT_TRUE(src.open("teapot", error, warnings)) << error;
-    ASSERT_EQ(renderer->check(src.at(s.time), s), "");
-    renderer->render(src.at(s.time), s);
+    const render::FrameInputs in = render::offscreen(kSize, kSize);
+    ASSERT_EQ(renderer->check(src.at(kTime), s, in), "");
+    renderer->render(src.at(kTime), s, in);
     const int channels = c.aov == render::Aov::Color ? 3 : 1;
-    test::expect_matches_golden(c.name, tools::from_rgba(renderer->read_image(), s.width, s.height, channels),
+    test::expect_matches_golden(c.name, tools::from_rgba(renderer->read_image(), kSize, kSize, channels),
                                 kMaxThreshold, kMeanThreshold);
 }
 

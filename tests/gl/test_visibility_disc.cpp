@@ -2,6 +2,7 @@
 // lit by a directional light straight down, shadows exactly the disc of radius r below it.
 // Every plane pixel (found by casting the pixel's ray on the CPU) must agree on >= 99% of them.
 #include "gl_fixture.h"
+#include "render/options.h"
 
 #include "scene/probe_scenes.h"
 
@@ -69,17 +70,18 @@ class VisibilityDisc : public test::GlTest, public ::testing::WithParamInterface
 TEST_P(VisibilityDisc, MatchesTheAnalyticDisc) {
     const auto c = GetParam();
     const scene::Scene s = sphere_over_plane();
+    constexpr int kSize = 256;
     render::Settings set;
-    set.width = set.height = 256;
     set.map_size = 1024;
     set.technique = c.technique;
     set.encoding = c.encoding;
     set.filter = c.filter;
     set.aov = render::Aov::Visibility;
-    ASSERT_EQ(renderer->check(s, set), "");
-    renderer->render(s, set);
-    const Tally t = score(s, renderer->camera_view_proj(), renderer->read_image(), set.width, set.height);
-    ASSERT_GT(t.plane_pixels, set.width * set.height / 3) << "the plane should fill much of the view";
+    const render::FrameInputs in = render::offscreen(kSize, kSize);
+    ASSERT_EQ(renderer->check(s, set, in), "");
+    const render::FramePlan& plan = renderer->render(s, set, in);
+    const Tally t = score(s, plan.camera.view_proj, renderer->read_image(), kSize, kSize);
+    ASSERT_GT(t.plane_pixels, kSize * kSize / 3) << "the plane should fill much of the view";
     ASSERT_GT(t.shadow_expected, 500) << "the disc should cover a real area";
     const double rate = static_cast<double>(t.agree) / t.plane_pixels;
     EXPECT_GE(rate, 0.99) << render::to_args(set) << ": " << t.agree << " of " << t.plane_pixels
@@ -106,11 +108,10 @@ class VisibilityDiscControl : public test::GlTest {};
 TEST_F(VisibilityDiscControl, FailsWithoutShadows) {
     const scene::Scene s = sphere_over_plane();
     render::Settings set;
-    set.width = set.height = 256;
     set.technique = render::Technique::None;
     set.aov = render::Aov::Visibility;
-    renderer->render(s, set);
-    const Tally t = score(s, renderer->camera_view_proj(), renderer->read_image(), set.width, set.height);
+    const render::FramePlan& plan = renderer->render(s, set, render::offscreen(256, 256));
+    const Tally t = score(s, plan.camera.view_proj, renderer->read_image(), 256, 256);
     EXPECT_LT(static_cast<double>(t.agree) / t.plane_pixels, 0.99);
 }
 

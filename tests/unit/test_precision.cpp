@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "shadow/encoding.h"
+#include "shadow/pcf.h"
 
 using namespace penumbra::shadow;
 

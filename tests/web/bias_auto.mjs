@@ -45,7 +45,7 @@ await runTest('web.bias_auto', async ({ server, browser }) => {
   check(/quantum/.test(label) && /slope/.test(label), `the auto choice does not say what it does: '${label}'`);
   const results = {};
   for (const filter of ['hard', 'pcf4x4']) {
-    await page.setChecked('#pcf', filter === 'pcf4x4');
+    await page.setChecked('#filter', filter === 'pcf4x4');
     await page.check('#bias-default');
     const byDefault = await frameAt(page, T);
     await page.check('#bias-auto');

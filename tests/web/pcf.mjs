@@ -62,9 +62,9 @@ await runTest('web.pcf', async ({ server, browser }) => {
           }
     }
   await page.selectOption('#aov', 'visibility');
-  check(!(await page.isChecked('#pcf')), 'PCF starts checked');
+  check(!(await page.isChecked('#filter')), 'PCF starts checked');
   const hard = await frameAt(page, T);
-  await page.check('#pcf');
+  await page.check('#filter');
   check(new URL(page.url()).searchParams.get('filter') === 'pcf4x4', `the URL does not say filter=pcf4x4: ${page.url()}`);
   const pcf = await frameAt(page, T);
 
@@ -92,7 +92,7 @@ await runTest('web.pcf', async ({ server, browser }) => {
   check(far === 0, `${far} pixels changed farther than ${EDGE_RADIUS} px from any shadow edge (farthest ${maxDist})`);
 
   // And back: unchecking restores the hard image exactly.
-  await page.uncheck('#pcf');
+  await page.uncheck('#filter');
   const again = await frameAt(page, T);
   check(compare(hard, again).differing === 0, 'unchecking PCF does not give the hard image back');
   check(problems.length === 0, problems.join('; '));

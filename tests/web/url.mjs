@@ -14,7 +14,7 @@ await runTest('web.url', async ({ server, browser }) => {
   {
     const { page, problems } = await openPage(browser, `${server.url}/w09p2c.html`);
     await page.selectOption('#encoding', 'r8');
-    await page.check('#pcf');
+    await page.check('#filter');
     await page.check('#bias-fixed');
     await page.fill('#bias', '0.003');
     await page.dispatchEvent('#bias', 'change');
@@ -29,7 +29,7 @@ await runTest('web.url', async ({ server, browser }) => {
     const s = await reloadAndRead(page);
     for (const [k, v] of Object.entries(want)) check(s.options[k] === v, `after reload ${k} = ${s.options[k]}, not ${v}`);
     check((await page.inputValue('#encoding')) === 'r8', 'the encoding select lost r8');
-    check(await page.isChecked('#pcf'), 'the PCF box lost its tick');
+    check(await page.isChecked('#filter'), 'the PCF box lost its tick');
     check(!(await page.isChecked('#bias-default')) && (await page.inputValue('#bias')) === '0.003', 'the bias field lost 0.003');
     check((await page.inputValue('#map-size')) === '2048', 'the map size select lost 2048');
     check((await page.inputValue('#aov')) === 'visibility', 'the view select lost visibility');

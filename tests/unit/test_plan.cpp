@@ -1,0 +1,257 @@
+// Planning frames without a GL context: which passes, resources, states, bindings and variants a
+// frame of each technique has, when a resource is reused, and that the printed plan (text and
+// JSON) holds all of it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "render/plan.h"
+#include "scene/course_scene.h"
+#include "shadow/pcf.h"
+
+using namespace penumbra;
+using render::FramePlan;
+
+namespace {
+
+// A context as headless Mesa reports it: everything the techniques use is there.
+gl::Caps full_caps() {
+    gl::Caps c;
+    c.depth_texture = c.packed_depth_stencil = c.depth24 = c.element_index_uint = true;
+    c.max_texture_size = c.max_renderbuffer_size = c.max_viewport_width = c.max_viewport_height = 4096;
+    return c;
+}
+
+const render::FrameInputs kIn = render::offscreen(64, 64);
+
+std::vector<std::string> pass_names(const FramePlan& p) {
+    std::vector<std::string> n;
+    for (const auto& pass : p.passes) n.push_back(pass.name);
+    return n;
+}
+
+bool has_define(const render::Draw& d, const std::string& name) {
+    for (const auto& def : d.variant.defines)
+        if (def.substr(0, def.find(' ')) == name) return true;
+    return false;
+}
+
+struct PlanTest : ::testing::Test {
+    scene::CourseScene course = scene::make_course_scene(4);
+    gl::Caps caps = full_caps();
+    render::Settings s;
+    FramePlan make(const FramePlan* previous = nullptr) { return render::plan(course.scene, s, caps, kIn, previous); }
+};
+
+TEST_F(PlanTest, TheShadowMapIsAPassIntoAResourceTheCameraPassReads) {
+    const FramePlan p = make();
+    EXPECT_EQ(pass_names(p), (std::vector<std::string>{"shadow-map", "camera"}));
+    const int map = p.resource_index("shadow-map");
+    const int camera = p.resource_index("camera");
+    ASSERT_GE(map, 0);
+    ASSERT_GE(camera, 0);
+    const auto& sm = p.passes[0];
+    EXPECT_EQ(sm.target.resource, map);
+    EXPECT_EQ(sm.target.width, 1024);
+    EXPECT_EQ(sm.state.cull, gl::Cull::None) << "open meshes cast from both sides";
+    EXPECT_TRUE(sm.state.color_write);
+    EXPECT_EQ(sm.object_uniforms, render::ObjectUniforms::Mvp);
+    EXPECT_EQ(sm.draws.size(), 2u);  // the teapot and the table cast
+    EXPECT_EQ(p.resources[static_cast<size_t>(map)].desc.sampling, gl::Sampling::Nearest);
+    const auto& cam = p.passes[1];
+    EXPECT_EQ(cam.target.resource, camera);
+    EXPECT_EQ(cam.reads(), std::vector<int>{map});
+    ASSERT_TRUE(cam.clear);
+    EXPECT_FALSE(cam.clear->stencil) << "no stencil without planar shadows";
+    for (const auto& d : cam.draws) {
+        EXPECT_TRUE(has_define(d, "SHADOW_MAP")) << d.label;
+        EXPECT_TRUE(has_define(d, "PCF_TAPS")) << d.label;
+    }
+    // The lookup's uniforms hold the map's size and the bias.
+    const auto lookup = std::find_if(cam.bindings.begin(), cam.bindings.end(),
+                                     [](const render::Binding& b) { return b.name == "shadow lookup"; });
+    ASSERT_NE(lookup, cam.bindings.end());
+    for (const auto& u : lookup->uniforms) {
+        if (u.name == "u_texmapscale") {
+            EXPECT_EQ(std::get<glm::vec2>(u.value), glm::vec2(1.0f / 1024.0f));
+        }
+        if (u.name == "u_bias") {
+            EXPECT_FLOAT_EQ(std::get<float>(u.value), 0.0015f);
+        }
+    }
+    ASSERT_TRUE(p.light_frustum);
+    EXPECT_TRUE(p.light_frustum->perspective);
+}
+
+TEST_F(PlanTest, ADepthTextureMapHasNoColour) {
+    s.encoding = shadow::Encoding::DepthTex;
+    const FramePlan p = make();
+    const auto& d = p.resource("shadow-map")->desc;
+    EXPECT_FALSE(d.color);
+    EXPECT_TRUE(d.depth_texture);
+    EXPECT_FALSE(p.passes[0].state.color_write);
+    EXPECT_FALSE(p.passes[0].clear->color);
+    caps.depth_texture = false;
+    EXPECT_NE(render::check(course.scene, s, caps, kIn).find("OES_depth_texture"), std::string::npos);
+}
+
+TEST_F(PlanTest, ObjectsThatReceiveNoShadowLookNothingUp) {
+    course.scene.objects[static_cast<size_t>(course.teapot)].receives_shadow = false;
+    const FramePlan p = make();
+    for (const auto& d : p.passes.back().draws)
+        EXPECT_EQ(has_define(d, "SHADOW_MAP"), d.object != course.teapot) << d.label;
+}
+
+TEST_F(PlanTest, NoCastersNoShadowPass) {
+    for (auto& o : course.scene.objects) o.casts_shadow = false;
+    const FramePlan p = make();
+    EXPECT_EQ(pass_names(p), std::vector<std::string>{"camera"});
+    EXPECT_EQ(p.resource("shadow-map"), nullptr);
+    ASSERT_FALSE(p.notes.empty());
+    EXPECT_NE(p.passes[0].detail.find("no shadows"), std::string::npos);
+}
+
+TEST_F(PlanTest, AnUnchangedMapIsReusedAndAMovedOneIsNot) {
+    const FramePlan first = make();
+    EXPECT_FALSE(first.passes[0].skipped);
+    const FramePlan second = make(&first);
+    EXPECT_TRUE(second.resource("shadow-map")->reused);
+    EXPECT_TRUE(second.passes[0].skipped);
+    EXPECT_FALSE(second.drawn("shadow-map"));
+    // The camera's side of the settings does not touch the map.
+    s.filter = shadow::Filter::PCF4x4;
+    s.bias = 0.01f;
+    EXPECT_TRUE(make(&second).passes[0].skipped);
+    // The light, a caster, the encoding or the map size do.
+    scene::animate_course(course, 1.0, 0.0);
+    const FramePlan moved = make(&second);
+    EXPECT_FALSE(moved.passes[0].skipped);
+    s.encoding = shadow::Encoding::R8;
+    EXPECT_FALSE(make(&moved).passes[0].skipped);
+    s.encoding = shadow::Encoding::RGBA;
+    s.map_size = 512;
+    EXPECT_FALSE(make(&moved).passes[0].skipped);
+}
+
+TEST_F(PlanTest, PlanarShadowsTakeTheGroundOutOfTheCameraPass) {
+    s.technique = render::Technique::Planar;
+    const FramePlan p = make();
+    EXPECT_EQ(pass_names(p), (std::vector<std::string>{"camera", "planar-ground", "planar-stencil", "planar-shadow"}));
+    EXPECT_TRUE(p.passes[0].clear->stencil);
+    ASSERT_TRUE(p.resource("camera")->desc.depth_buffer);
+    EXPECT_EQ(*p.resource("camera")->desc.depth_buffer, gl::RenderbufferFormat::Depth24Stencil8);
+    for (const auto& d : p.passes[0].draws) EXPECT_NE(d.object, course.scene.ground_object);
+    const auto& mark = p.passes[1].state.stencil;
+    EXPECT_TRUE(mark.enabled);
+    EXPECT_EQ(mark.pass, gl::StencilOp::Replace);
+    const auto& project = p.passes[2];
+    EXPECT_FALSE(project.state.color_write);
+    EXPECT_EQ(project.state.stencil.func, gl::Compare::Equal);
+    EXPECT_EQ(project.state.stencil.ref, mark.ref);
+    EXPECT_EQ(p.passes[3].state.stencil.ref, mark.ref + 1);
+    EXPECT_TRUE(has_define(p.passes[3].draws[0], "IN_SHADOW"));
+    // WebGL 1 spells the depth-stencil buffer its own way.
+    caps.api = platform::Api::WebGL1;
+    EXPECT_EQ(*make().resource("camera")->desc.depth_buffer, gl::RenderbufferFormat::DepthStencil);
+    scene::Scene flat = course.scene;
+    flat.ground_plane.reset();
+    EXPECT_NE(render::check(flat, s, caps, kIn).find("ground plane"), std::string::npos);
+}
+
+TEST_F(PlanTest, TheLightDepthViewReplacesTheCameraPass) {
+    s.aov = render::Aov::LightDepth;
+    const FramePlan p = make();
+    EXPECT_EQ(pass_names(p), (std::vector<std::string>{"shadow-map", "light-depth view"}));
+    EXPECT_TRUE(p.passes[1].draws[0].fullscreen);
+    EXPECT_EQ(p.passes[1].reads(), std::vector<int>{p.resource_index("shadow-map")});
+    s.technique = render::Technique::None;
+    EXPECT_NE(render::check(course.scene, s, caps, kIn), "");
+}
+
+TEST_F(PlanTest, MapSizesAreClampedWithANote) {
+    caps.max_texture_size = 512;
+    s.map_size = 4096;
+    FramePlan p = make();
+    EXPECT_EQ(p.resource("shadow-map")->desc.width, 512);
+    ASSERT_FALSE(p.notes.empty());
+    EXPECT_NE(p.notes[0].find("clamped to 512"), std::string::npos);
+    s.map_size = 4;
+    p = make();
+    EXPECT_EQ(p.resource("shadow-map")->desc.width, 16);
+}
+
+TEST_F(PlanTest, InputsOverrideTheViewTheLightAndTheOutput) {
+    render::FrameInputs in;
+    in.output = render::Output::window_region(10, 20, 30, 40);
+    in.view = glm::mat4(2.0f);
+    scene::Light sun;
+    sun.type = scene::LightType::Directional;
+    in.light = sun;
+    const FramePlan p = render::plan(course.scene, s, caps, in);
+    EXPECT_EQ(p.resource("camera"), nullptr) << "a window needs no offscreen target";
+    const auto& t = p.passes.back().target;
+    EXPECT_EQ(t.resource, -1);
+    EXPECT_EQ(t.x, 10);
+    EXPECT_TRUE(t.clip);
+    EXPECT_EQ(p.camera.view, glm::mat4(2.0f));
+    EXPECT_FALSE(p.light_frustum->perspective) << "the input's directional light";
+    EXPECT_EQ(course.scene.light.type, scene::LightType::Point) << "the scene is not edited";
+}
+
+TEST_F(PlanTest, ThePlanPrintsAsJsonWithEveryPassAndResource) {
+    for (auto t : render::kAllTechniques) {
+        s.technique = t;
+        const FramePlan p = make();
+        const auto j = nlohmann::json::parse(p.to_json());
+        ASSERT_EQ(j["passes"].size(), p.passes.size()) << render::to_string(t);
+        ASSERT_EQ(j["resources"].size(), p.resources.size());
+        for (size_t i = 0; i < p.passes.size(); ++i) {
+            const auto& jp = j["passes"][i];
+            EXPECT_EQ(jp["name"], p.passes[i].name);
+            EXPECT_EQ(jp["draws"].size(), p.passes[i].draws.size());
+            EXPECT_TRUE(jp["state"].contains("depth_test"));
+            EXPECT_EQ(jp["state"]["text"], gl::to_string(p.passes[i].state));
+        }
+        EXPECT_EQ(j["settings"]["technique"], std::string(render::to_string(t)));
+        std::size_t bytes = 0;
+        for (const auto& r : j["resources"]) bytes += r["bytes"].get<std::size_t>();
+        EXPECT_EQ(j["bytes"].get<std::size_t>(), bytes);
+        // One line per pass for -v, and the long form names every pass and resource.
+        const std::string lines = p.describe();
+        EXPECT_EQ(static_cast<size_t>(std::count(lines.begin(), lines.end(), '\n')), p.passes.size());
+        const std::string text = p.to_text();
+        for (const auto& pass : p.passes) EXPECT_NE(text.find(pass.name), std::string::npos);
+        for (const auto& r : p.resources) EXPECT_NE(text.find(r.desc.name + ": "), std::string::npos);
+    }
+    s.technique = render::Technique::ShadowMap;
+    const auto j = nlohmann::json::parse(make().to_json());
+    EXPECT_EQ(j["passes"][0]["target"]["resource"], "shadow-map");
+    EXPECT_EQ(j["passes"][1]["reads"][0], "shadow-map");
+    EXPECT_FLOAT_EQ(static_cast<float>(j["passes"][1]["bindings"][1]["uniforms"]["u_bias"].get<double>()), 0.0015f);
+}
+
+TEST(PcfKernel, TheShaderAndTheCpuMirrorShareTheTaps) {
+    for (auto f : shadow::kAllFilters) {
+        const auto taps = shadow::pcf_offsets(f);
+        const auto defines = render::pcf_kernel_defines(f);
+        ASSERT_EQ(defines.size(), 2u);
+        EXPECT_EQ(defines[0], "PCF_TAPS " + std::to_string(taps.size()));
+        size_t calls = 0;
+        for (size_t at = defines[1].find("F(vec2"); at != std::string::npos; at = defines[1].find("F(vec2", at + 1)) ++calls;
+        EXPECT_EQ(calls, taps.size()) << defines[1];
+        for (const auto& t : taps) {
+            char tap[48];
+            std::snprintf(tap, sizeof tap, "vec2(%.1f, %.1f)", static_cast<double>(t.x), static_cast<double>(t.y));
+            EXPECT_NE(defines[1].find(tap), std::string::npos) << tap;
+        }
+    }
+    // The mirror: a step in the stored depth halfway across the 4x4 kernel lights half the taps.
+    const auto step = [](glm::vec2 uv) { return uv.x < 0.5f ? 0.2f : 1.0f; };
+    const glm::vec2 texel(1.0f / 64.0f);
+    EXPECT_FLOAT_EQ(shadow::pcf_visibility(shadow::Filter::PCF4x4, glm::vec2(0.5f), 0.6f, 0.001f, texel, step), 0.5f);
+    EXPECT_FLOAT_EQ(shadow::pcf_visibility(shadow::Filter::Hard, glm::vec2(0.25f), 0.6f, 0.001f, texel, step), 0.0f);
+    EXPECT_FLOAT_EQ(shadow::kernel_reach_texels(shadow::Filter::PCF4x4), 2.5f);
+}
+
+}  // namespace
