@@ -46,7 +46,7 @@ TEST_P(Golden, CourseSceneMatches) {
     ASSERT_EQ(renderer->check(src.at(s.time), s), "");
     renderer->render(src.at(s.time), s);
     const int channels = c.aov == render::Aov::Color ? 3 : 1;
-    test::expect_matches_golden(c.name, tools::from_rgba(renderer->read_image(), s.width, s.height, channels),
+    test::expect_matches_golden(c.name, measure::from_rgba(renderer->read_image(), s.width, s.height, channels),
                                 kMaxThreshold, kMeanThreshold);
 }
 

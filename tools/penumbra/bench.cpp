@@ -24,18 +24,22 @@
 #include "gl/caps.h"
 #include "gl/check.h"
 #include "measure.h"
-#include "metrics/metrics.h"
+#include "measure/metrics.h"
 #include "platform/platform.h"
 #include "plot.h"
-#include "png_io.h"
+#include "measure/image_io.h"
 #include "render/renderer.h"
 #include "render/settings.h"
 #include "scene/scene_source.h"
-#include "truth/ray_tracer.h"
+#include "measure/ray_tracer.h"
 
 namespace fs = std::filesystem;
 
 namespace penumbra::tools {
+
+using measure::Pixels;
+using measure::read_png;
+using measure::write_png;
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -110,17 +114,17 @@ void write_or_throw(const std::string& path, const Pixels& px) {
 Pixels grey_image(int w, int h, std::vector<std::uint8_t> data) { return Pixels{w, h, 1, std::move(data)}; }
 
 // The truth as a picture: lit white, shadowed black; pixels left out of the comparison in colour.
-Pixels classes_image(const truth::TruthImage& t) {
+Pixels classes_image(const measure::TruthImage& t) {
     Pixels px{t.width, t.height, 3, std::vector<std::uint8_t>(t.lit.size() * 3)};
     for (size_t i = 0; i < t.lit.size(); ++i) {
         std::uint8_t r = 0, g = 0, b = 0;
-        switch (static_cast<truth::PixelClass>(t.pixel_class[i])) {
-            case truth::PixelClass::Valid: r = g = b = t.lit[i] ? 255 : 0; break;
-            case truth::PixelClass::Background: r = 30, g = 40, b = 70; break;
-            case truth::PixelClass::Silhouette: r = 230, g = 60, b = 200; break;
-            case truth::PixelClass::NotReceiver: r = 120, g = 90, b = 40; break;
-            case truth::PixelClass::FacingAway: r = 70, g = 110, b = 140; break;
-            case truth::PixelClass::OutsideCone: r = 90, g = 70, b = 110; break;
+        switch (static_cast<measure::PixelClass>(t.pixel_class[i])) {
+            case measure::PixelClass::Valid: r = g = b = t.lit[i] ? 255 : 0; break;
+            case measure::PixelClass::Background: r = 30, g = 40, b = 70; break;
+            case measure::PixelClass::Silhouette: r = 230, g = 60, b = 200; break;
+            case measure::PixelClass::NotReceiver: r = 120, g = 90, b = 40; break;
+            case measure::PixelClass::FacingAway: r = 70, g = 110, b = 140; break;
+            case measure::PixelClass::OutsideCone: r = 90, g = 70, b = 110; break;
         }
         px.data[3 * i] = r;
         px.data[3 * i + 1] = g;
@@ -130,8 +134,8 @@ Pixels classes_image(const truth::TruthImage& t) {
 }
 
 // A rendered visibility against the truth: agreement in greys, false shadow red, false lit blue.
-Pixels error_image(const std::vector<std::uint8_t>& rendered, const truth::TruthImage& t) {
-    const auto cls = metrics::classify(rendered, t.lit, t.valid_mask());
+Pixels error_image(const std::vector<std::uint8_t>& rendered, const measure::TruthImage& t) {
+    const auto cls = measure::classify(rendered, t.lit, t.valid_mask());
     Pixels px{t.width, t.height, 3, std::vector<std::uint8_t>(cls.size() * 3)};
     for (size_t i = 0; i < cls.size(); ++i) {
         std::uint8_t r, g, b;
@@ -148,7 +152,7 @@ Pixels error_image(const std::vector<std::uint8_t>& rendered, const truth::Truth
     return px;
 }
 
-std::string score_line(const metrics::Score& s) {
+std::string score_line(const measure::Score& s) {
     std::string line = "valid " + std::to_string(s.valid) + " px, false shadow " + fixed(s.false_shadow_pct, 3) +
                        " %, false lit " + fixed(s.false_lit_pct, 3) + " %, error " + fixed(s.error_pct, 3) +
                        " %, mean abs error " + fixed(s.mae_pct, 3) + " %";
@@ -156,12 +160,12 @@ std::string score_line(const metrics::Score& s) {
     return line;
 }
 
-std::string class_summary(const truth::TruthImage& t) {
+std::string class_summary(const measure::TruthImage& t) {
     const double n = static_cast<double>(t.lit.size());
     std::string out;
-    for (int c = 0; c < truth::kPixelClassCount; ++c) {
-        const auto pc = static_cast<truth::PixelClass>(c);
-        out += (c ? ", " : "") + std::string(truth::to_string(pc)) + " " + fixed(100.0 * static_cast<double>(t.count(pc)) / n, 1) + " %";
+    for (int c = 0; c < measure::kPixelClassCount; ++c) {
+        const auto pc = static_cast<measure::PixelClass>(c);
+        out += (c ? ", " : "") + std::string(measure::to_string(pc)) + " " + fixed(100.0 * static_cast<double>(t.count(pc)) / n, 1) + " %";
     }
     return out;
 }
@@ -186,7 +190,7 @@ struct Row {
     std::string encoding, filter;
     int map = 0;
     std::string settings;   // render::to_args
-    metrics::Score score;
+    measure::Score score;
     double ms_moving = 0.0, ms_still = 0.0;
     double ms_shadow = 0.0, ms_camera = 0.0;
     int redrawn_moving = 0, redrawn_still = 0, frames = 0;
@@ -302,7 +306,7 @@ Timing time_frames(render::Renderer& r, const render::Settings& s, int warmup, i
             t.redrawn += plan.shadow_redrawn ? 1 : 0;
         }
     }
-    t.median_ms = metrics::median(ms);
+    t.median_ms = measure::median(ms);
     return t;
 }
 
@@ -377,13 +381,13 @@ void run_sweep(Sweep& w) {
 
         // The truth for this frame, once for every technique.
         const auto tt = Clock::now();
-        truth::TruthOptions to;
+        measure::TruthOptions to;
         to.width = w.width;
         to.height = w.height;
         to.view_proj = renderer_view_proj(r, still, w.width, w.height);
         to.soft_samples = o.soft_samples;
         to.light_radius = default_light_radius(still);
-        const truth::TruthImage truth = truth::RayTracer(still).render(to);
+        const measure::TruthImage truth = measure::RayTracer(still).render(to);
         std::fprintf(stderr, "truth %s: %s in %.1f s (%s)\n", spec.label.c_str(),
                      o.soft_samples > 0 ? ("hard + " + std::to_string(o.soft_samples) + " area-light samples").c_str() : "hard",
                      seconds_since(tt), class_summary(truth).c_str());
@@ -424,7 +428,7 @@ void run_sweep(Sweep& w) {
                                   std::to_string(plan.map_size));
             }
             const auto vis = red_channel(r.read_image());
-            row.score = metrics::score(vis, truth.lit, valid, o.soft_samples > 0 ? &truth.soft : nullptr);
+            row.score = measure::score(vis, truth.lit, valid, o.soft_samples > 0 ? &truth.soft : nullptr);
             row.bytes = s.technique == render::Technique::ShadowMap ? r.shadow_map_bytes() : 0;
             if (pictures && (s.map_size == 1024 || s.technique != render::Technique::ShadowMap)) {
                 std::string name = spec.label + "-" + row.technique + (row.map ? "-" + std::to_string(row.map) : "") + "-errors.png";
@@ -479,8 +483,8 @@ void run_sweep(Sweep& w) {
     for (auto& stp : states)
         for (Pending& p : stp->pending) {
             Row& row = p.row;
-            row.ms_moving = metrics::median(p.moving);
-            row.ms_still = metrics::median(p.still);
+            row.ms_moving = measure::median(p.moving);
+            row.ms_still = measure::median(p.still);
             // The still scene reuses the map, so its frame is the camera pass alone; what the
             // moving frame costs beyond it is the shadow pass.
             const bool has_map = p.s.technique == render::Technique::ShadowMap;
@@ -620,7 +624,7 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
                "hover (SVG) for the exact", "settings of each point"};
     // The front is over the shadow-map techniques: planar shadows need a flat ground and cast no
     // shadow on anything else, and none is no answer; both are drawn as references.
-    std::vector<metrics::Point2> pts;
+    std::vector<measure::Point2> pts;
     std::vector<Key> order;
     for (const Key& k : keys) {
         const Mean& m = means.at(k);
@@ -641,7 +645,7 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
         pts.push_back({k.map ? m.moving : NAN, pt.y});
         order.push_back(k);
     }
-    p.front = metrics::pareto_front(pts, 0.01);  // the tables' precision
+    p.front = measure::pareto_front(pts, 0.01);  // the tables' precision
     if (front_keys)
         for (size_t i : p.front) front_keys->push_back(order[i]);
     return p;
@@ -934,14 +938,14 @@ void run_truth(const TruthCommandOptions& o) {
     const scene::Scene s = src.at(o.time);
     auto ctx = make_context();
     render::Renderer r(gl::probe_caps());
-    truth::TruthOptions to;
+    measure::TruthOptions to;
     to.width = size.width;
     to.height = size.height;
     to.view_proj = renderer_view_proj(r, s, size.width, size.height);
     to.soft_samples = o.soft_samples;
     to.light_radius = o.light_radius >= 0.0f ? o.light_radius : default_light_radius(s);
     const auto t0 = Clock::now();
-    const truth::TruthImage t = truth::RayTracer(s).render(to);
+    const measure::TruthImage t = measure::RayTracer(s).render(to);
     const double secs = seconds_since(t0);
 
     const fs::path dir(o.out_dir);
@@ -965,7 +969,7 @@ void run_truth(const TruthCommandOptions& o) {
         std::vector<std::uint8_t> rendered(t.lit.size());
         const size_t ch = static_cast<size_t>(scored->channels);
         for (size_t i = 0; i < rendered.size(); ++i) rendered[i] = scored->data[i * ch];
-        const metrics::Score sc = metrics::score(rendered, t.lit, t.valid_mask(), t.soft.empty() ? nullptr : &t.soft);
+        const measure::Score sc = measure::score(rendered, t.lit, t.valid_mask(), t.soft.empty() ? nullptr : &t.soft);
         write_or_throw((dir / "errors.png").string(), error_image(rendered, t));
         std::printf("score of %s: %s; wrote errors.png\n", o.score.c_str(), score_line(sc).c_str());
     }

@@ -23,7 +23,7 @@
 #ifdef PENUMBRA_HAVE_TRUTH
 #include "bias_sweep.h"
 #endif
-#include "png_io.h"
+#include "measure/image_io.h"
 #include "render/renderer.h"
 #include "render/settings.h"
 #include "render/shader_library.h"
@@ -50,8 +50,8 @@ std::unique_ptr<platform::Platform> make_context() {
 int channels_for(render::Aov aov) { return aov == render::Aov::Color ? 3 : 1; }
 
 void write_image(render::Renderer& r, const render::Settings& s, const std::string& path) {
-    const auto px = tools::from_rgba(r.read_image(), s.width, s.height, channels_for(s.aov));
-    const std::string err = tools::write_png(path, px);
+    const auto px = measure::from_rgba(r.read_image(), s.width, s.height, channels_for(s.aov));
+    const std::string err = measure::write_png(path, px);
     if (!err.empty()) throw Failure{err};
 }
 

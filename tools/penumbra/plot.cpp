@@ -9,6 +9,8 @@
 #include <stb_easy_font.h>
 
 namespace penumbra::tools {
+
+using measure::Pixels;
 namespace {
 
 struct Vec {

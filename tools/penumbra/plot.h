@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "png_io.h"
+#include "measure/image_io.h"
 
 namespace penumbra::tools {
 
@@ -40,6 +40,6 @@ struct Plot {
 // The plot as an SVG document of width x height user units.
 std::string plot_svg(const Plot& plot, int width, int height);
 // The same plot rasterised (RGB), anti-aliased by 3x3 supersampling.
-Pixels plot_png(const Plot& plot, int width, int height);
+measure::Pixels plot_png(const Plot& plot, int width, int height);
 
 }  // namespace penumbra::tools
