@@ -7,13 +7,17 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bench.h"
 #include "measure/metrics.h"
+#include "measure/score_columns.h"
 #include "plot.h"
 #include "render/settings.h"
 
@@ -40,42 +44,35 @@ void write_text(const fs::path& path, const std::string& text) {
     if (ec) throw CommandError{path.string() + ": cannot write (" + ec.message() + ")", 1};
 }
 
+// One row per scene frame and technique; the score's columns are the score table's
+// (measure/score_columns.h), between the frame's and the time's.
 std::string csv(const Sweep& w) {
     std::ostringstream o;
-    o << "scene,time,width,height,technique,encoding,filter,map_size,valid_pixels,truth_shadowed_pct,false_shadow_pct,"
-         "false_lit_pct,error_pct,mae_pct,mae_area_light_pct,ms_moving,ms_still,ms_shadow_pass,ms_camera_pass,"
-         "frames,redrawn_moving,redrawn_still,shadow_map_bytes,settings\n";
+    o << "scene,time,width,height,technique,encoding,filter,map_size," << measure::score_csv_header()
+      << ",ms_moving,ms_still,ms_shadow_pass,ms_camera_pass,frames,redrawn_moving,redrawn_still,shadow_map_bytes,settings\n";
     for (const Row& r : w.rows) {
-        const double shadowed = r.score.valid ? 100.0 * static_cast<double>(r.score.truth_shadowed) / static_cast<double>(r.score.valid) : 0.0;
         o << r.scene << "," << fixed(r.time, 3) << "," << w.width << "," << w.height << "," << r.technique << "," << r.encoding << ","
-          << r.filter << "," << r.map << "," << r.score.valid << "," << fixed(shadowed, 3) << "," << fixed(r.score.false_shadow_pct, 4)
-          << "," << fixed(r.score.false_lit_pct, 4) << "," << fixed(r.score.error_pct, 4) << "," << fixed(r.score.mae_pct, 4) << ","
-          << (r.score.mae_soft_pct >= 0.0 ? fixed(r.score.mae_soft_pct, 4) : "") << "," << fixed(r.ms_moving, 3) << ","
+          << r.filter << "," << r.map << "," << measure::score_csv_cells(r.score) << "," << fixed(r.ms_moving, 3) << ","
           << fixed(r.ms_still, 3) << "," << fixed(r.ms_shadow, 3) << "," << fixed(r.ms_camera, 3) << "," << r.frames << ","
           << r.redrawn_moving << "," << r.redrawn_still << "," << r.bytes << ",\"" << r.settings << "\"\n";
     }
     return o.str();
 }
 
-// Means over a set of rows (one technique and map size over several scenes).
+// Means over a set of rows (one technique and map size over several scenes): each score column's
+// mean (measure::mean_score), the times' means, the largest memory.
 struct Mean {
-    double fs = 0, fl = 0, err = 0, mae = 0, soft = 0, moving = 0, still = 0, shadow = 0, camera = 0;
+    measure::Score score;
+    double moving = 0, still = 0, shadow = 0, camera = 0;
     std::size_t bytes = 0;
     int n = 0;
-    bool has_soft = false;
 };
 
 Mean mean_of(const std::vector<const Row*>& rows) {
     Mean m;
+    std::vector<const measure::Score*> scores;
     for (const Row* r : rows) {
-        m.fs += r->score.false_shadow_pct;
-        m.fl += r->score.false_lit_pct;
-        m.err += r->score.error_pct;
-        m.mae += r->score.mae_pct;
-        if (r->score.mae_soft_pct >= 0.0) {
-            m.soft += r->score.mae_soft_pct;
-            m.has_soft = true;
-        }
+        scores.push_back(&r->score);
         m.moving += r->ms_moving;
         m.still += r->ms_still;
         m.shadow += r->ms_shadow;
@@ -83,9 +80,10 @@ Mean mean_of(const std::vector<const Row*>& rows) {
         m.bytes = std::max(m.bytes, r->bytes);
         ++m.n;
     }
+    m.score = measure::mean_score(scores);
     if (m.n) {
         const double n = m.n;
-        m.fs /= n, m.fl /= n, m.err /= n, m.mae /= n, m.soft /= n, m.moving /= n, m.still /= n, m.shadow /= n, m.camera /= n;
+        m.moving /= n, m.still /= n, m.shadow /= n, m.camera /= n;
     }
     return m;
 }
@@ -147,7 +145,7 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
         const Mean& m = means.at(k);
         tools::PlotPoint pt;
         pt.x = m.moving;
-        pt.y = mae ? m.mae : m.err;
+        pt.y = mae ? m.score.mae_pct : m.score.error_pct;
         const std::string enc = k.technique.substr(0, k.technique.find(' '));
         const std::string fil = k.technique.find(' ') == std::string::npos ? "" : k.technique.substr(k.technique.find(' ') + 1);
         pt.color = enc == "r8" ? 0 : enc == "rgba" ? 1 : enc == "depthtex" ? 2 : known(enc) ? 3 : 4;
@@ -155,9 +153,9 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
                     : enc == "planar" ? Marker::Diamond : Marker::Cross;
         pt.radius = k.map ? 3.0 + 1.1 * std::log2(static_cast<double>(k.map) / 256.0) : 5.0;
         pt.label = key_label(k);
-        pt.tooltip = key_label(k) + ": error " + fixed(m.err, 2) + " % (false shadow " + fixed(m.fs, 2) + ", false lit " +
-                     fixed(m.fl, 2) + "), mean abs error " + fixed(m.mae, 2) + " %, " + fixed(m.moving, 2) + " ms/frame moving, " +
-                     fixed(m.still, 2) + " still, " + bytes_str(m.bytes);
+        pt.tooltip = key_label(k) + ": error " + fixed(m.score.error_pct, 2) + " % (false shadow " + fixed(m.score.false_shadow_pct, 2) +
+                     ", false lit " + fixed(m.score.false_lit_pct, 2) + "), mean abs error " + fixed(m.score.mae_pct, 2) + " %, " +
+                     fixed(m.moving, 2) + " ms/frame moving, " + fixed(m.still, 2) + " still, " + bytes_str(m.bytes);
         p.points.push_back(pt);
         pts.push_back({k.map ? m.moving : NAN, pt.y});
         order.push_back(k);
@@ -201,14 +199,13 @@ std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& fro
     if (w.o.quick) o << "**Quick mode: small frames and few of them; the timings mean nothing.**\n\n";
 
     o << "## All scenes (mean over the " << w.scenes.size() << " scene frames)\n\n"
-      << "| technique | map | false shadow % | false lit % | error % | mean abs error % | vs area light % | ms/frame moving | "
+      << "| technique | map | " << measure::score_table_headings() << " | ms/frame moving | "
          "ms/frame still | shadow pass ms | camera pass ms | shadow memory | Pareto |\n"
-      << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
+      << "|---|---:|" << measure::score_table_rule() << "---:|---:|---:|---:|---:|:-:|\n";
     for (const Key& k : keys) {
         const Mean& m = means.at(k);
-        o << "| " << k.technique << " | " << (k.map ? std::to_string(k.map) : "-") << " | " << fixed(m.fs, 2) << " | " << fixed(m.fl, 2)
-          << " | " << fixed(m.err, 2) << " | " << fixed(m.mae, 2) << " | " << (m.has_soft ? fixed(m.soft, 2) : "-") << " | "
-          << fixed(m.moving, 2) << " | " << fixed(m.still, 2) << " | " << fixed(m.shadow, 2) << " | " << fixed(m.camera, 2) << " | "
+        o << "| " << k.technique << " | " << (k.map ? std::to_string(k.map) : "-") << " | " << measure::score_table_cells(m.score)
+          << " | " << fixed(m.moving, 2) << " | " << fixed(m.still, 2) << " | " << fixed(m.shadow, 2) << " | " << fixed(m.camera, 2) << " | "
           << bytes_str(m.bytes) << " | " << (on_front.count(k) ? "yes" : k.map ? "" : "ref.") << " |\n";
     }
 
@@ -228,12 +225,11 @@ std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& fro
             if (sel.empty()) continue;
             const auto cm = means_by_key(sel);
             o << "\n## The course scene, map " << map << " (mean over t = " << tlist << " s)\n\n"
-              << "| technique | false shadow % | false lit % | error % | mean abs error % | vs area light % | ms/frame moving | "
-                 "ms/frame still | shadow memory |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+              << "| technique | " << measure::score_table_headings() << " | ms/frame moving | ms/frame still | shadow memory |\n"
+              << "|---|" << measure::score_table_rule() << "---:|---:|---:|\n";
             for (const Key& k : keys_in_order(sel)) {
                 const Mean& m = cm.at(k);
-                o << "| " << k.technique << " | " << fixed(m.fs, 2) << " | " << fixed(m.fl, 2) << " | " << fixed(m.err, 2) << " | "
-                  << fixed(m.mae, 2) << " | " << (m.has_soft ? fixed(m.soft, 2) : "-") << " | " << fixed(m.moving, 2) << " | "
+                o << "| " << k.technique << " | " << measure::score_table_cells(m.score) << " | " << fixed(m.moving, 2) << " | "
                   << fixed(m.still, 2) << " | " << bytes_str(m.bytes) << " |\n";
             }
         }
@@ -272,7 +268,7 @@ std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& fro
             o << "| " << t << " |";
             for (int m : w.o.maps) {
                 const auto it = means.find({t, m});
-                o << " " << (it == means.end() ? "-" : fixed(table == 0 ? it->second.err : it->second.moving, 2)) << " |";
+                o << " " << (it == means.end() ? "-" : fixed(table == 0 ? it->second.score.error_pct : it->second.moving, 2)) << " |";
             }
             o << "\n";
         }
@@ -335,8 +331,11 @@ void read_csv(Sweep& w, const std::string& path) {
     const auto header = csv_fields(line);
     std::map<std::string, size_t> col;
     for (size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
-    for (const char* need : {"scene", "time", "width", "height", "technique", "map_size", "valid_pixels", "false_shadow_pct",
-                             "false_lit_pct", "error_pct", "mae_pct", "ms_moving", "ms_still"})
+    std::vector<std::string> needed = {"scene", "time", "width", "height", "technique", "map_size"};
+    for (const auto& key : measure::missing_required_columns([&](std::string_view k) { return col.count(std::string(k)) > 0; }))
+        needed.push_back(key);
+    needed.insert(needed.end(), {"ms_moving", "ms_still"});
+    for (const auto& need : needed)
         if (!col.count(need)) throw CommandError{"--from-csv " + path + ": no column '" + need + "'", 2};
     size_t line_no = 1;
     std::vector<std::string> labels;
@@ -368,13 +367,15 @@ void read_csv(Sweep& w, const std::string& path) {
         r.filter = get("filter");
         r.map = static_cast<int>(num("map_size", 0));
         r.settings = get("settings");
-        r.score.valid = static_cast<std::size_t>(num("valid_pixels", 0));
-        r.score.truth_shadowed = static_cast<std::size_t>(num("truth_shadowed_pct", 0) / 100.0 * static_cast<double>(r.score.valid) + 0.5);
-        r.score.false_shadow_pct = num("false_shadow_pct", 0);
-        r.score.false_lit_pct = num("false_lit_pct", 0);
-        r.score.error_pct = num("error_pct", 0);
-        r.score.mae_pct = num("mae_pct", 0);
-        r.score.mae_soft_pct = num("mae_area_light_pct", -1.0);
+        try {
+            r.score = measure::score_from_cells([&](std::string_view key) -> std::optional<std::string> {
+                const auto it = col.find(std::string(key));
+                if (it == col.end()) return std::nullopt;
+                return it->second < v.size() ? v[it->second] : std::string();
+            });
+        } catch (const std::invalid_argument& e) {
+            throw CommandError{"--from-csv " + path + ":" + std::to_string(line_no) + ": " + e.what(), 2};
+        }
         r.ms_moving = num("ms_moving", 0);
         r.ms_still = num("ms_still", 0);
         r.ms_shadow = num("ms_shadow_pass", std::max(0.0, r.ms_moving - r.ms_still));

@@ -38,6 +38,11 @@ std::shared_ptr<MeasureCommands> add_measure_commands(CLI::App& app) {
     m->truth_cmd->add_option("--light-radius", t.light_radius,
                              "area light radius: world units (point, spot) or radians (directional); default as bench");
     m->truth_cmd->add_option("--score", t.score, "a visibility PNG of the same frame and size to score against the truth");
+    m->truth_cmd->add_flag("--json", t.json,
+                           "with --score: print one JSON object (scene, time, width, height and one key per score column, "
+                           "null where absent) on stdout instead of the prose lines");
+    m->truth_cmd->add_flag("--score-columns", t.score_columns,
+                           "print the score columns (key, heading, digits, meaning, ...) as JSON and trace nothing");
 
     m->bench_cmd = app.add_subcommand("bench", "the sweep: error against the ray-traced truth, ms/frame and memory of every technique");
     auto& b = m->bench_options;

@@ -7,11 +7,14 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "bench.h"
 #include "gl/caps.h"
 #include "measure/image_io.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
+#include "measure/score_columns.h"
 #include "platform/platform.h"
 #include "render/renderer.h"
 #include "render/settings.h"
@@ -123,6 +126,11 @@ std::string score_line(const measure::Score& s) {
 }  // namespace
 
 void run_truth(const TruthCommandOptions& o) {
+    if (o.score_columns) {
+        std::printf("%s\n", measure::score_columns_json().dump(2).c_str());
+        return;
+    }
+    if (o.json && o.score.empty()) throw CommandError{"--json: needs --score (it prints the score)", 2};
     render::Settings size;
     if (const std::string err = render::parse_option(size, "size", o.size); !err.empty()) throw CommandError{err, 2};
     if (o.soft_samples < 0) throw CommandError{"--soft-samples: must be 0 or more", 2};
@@ -167,16 +175,23 @@ void run_truth(const TruthCommandOptions& o) {
         for (size_t i = 0; i < soft.size(); ++i) soft[i] = static_cast<std::uint8_t>(std::lround(255.0f * t.soft[i]));
         write_or_throw((dir / "area_light.png").string(), grey_image(t.width, t.height, soft));
     }
-    std::printf("truth of %s at t = %g, %dx%d, in %.2f s: %s; wrote visibility.png, mask.png, classes.png%s to %s\n", o.scene.c_str(),
-                o.time, t.width, t.height, secs, class_summary(t).c_str(), t.soft.empty() ? "" : ", area_light.png",
-                o.out_dir.c_str());
+    // With --json, stdout holds the JSON object alone; this line goes to stderr.
+    std::fprintf(o.json ? stderr : stdout, "truth of %s at t = %g, %dx%d, in %.2f s: %s; wrote visibility.png, mask.png, classes.png%s to %s\n",
+                 o.scene.c_str(), o.time, t.width, t.height, secs, class_summary(t).c_str(), t.soft.empty() ? "" : ", area_light.png",
+                 o.out_dir.c_str());
     if (scored) {
         std::vector<std::uint8_t> rendered(t.lit.size());
         const size_t ch = static_cast<size_t>(scored->channels);
         for (size_t i = 0; i < rendered.size(); ++i) rendered[i] = scored->data[i * ch];
         const measure::Score sc = measure::score(rendered, t.lit, t.valid_mask(), t.soft.empty() ? nullptr : &t.soft);
         write_or_throw((dir / "errors.png").string(), error_image(rendered, t));
-        std::printf("score of %s: %s; wrote errors.png\n", o.score.c_str(), score_line(sc).c_str());
+        if (o.json) {
+            nlohmann::ordered_json j = {{"scene", o.scene}, {"time", o.time}, {"width", t.width}, {"height", t.height}};
+            j.update(measure::score_json(sc));
+            std::printf("%s\n", j.dump().c_str());
+        } else {
+            std::printf("score of %s: %s; wrote errors.png\n", o.score.c_str(), score_line(sc).c_str());
+        }
     }
 }
 
