@@ -70,6 +70,7 @@ int run_measure_commands(MeasureCommands& m) {
             run_export(m.export_options);
             return 0;
         }
+#ifdef PENUMBRA_HAVE_TRUTH  // truth and bench exist only with the Embree ground truth
         if (m.truth_cmd && *m.truth_cmd) {
             run_truth(m.truth_options);
             return 0;
@@ -78,6 +79,7 @@ int run_measure_commands(MeasureCommands& m) {
             run_bench(m.bench_options);
             return 0;
         }
+#endif
     } catch (const CommandError& e) {
         std::fprintf(stderr, "penumbra: error: %s\n", e.message.c_str());
         return e.code;
