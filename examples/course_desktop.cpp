@@ -19,7 +19,7 @@
 #include "exercises.h"
 #include "gl/check.h"
 #include "platform/platform.h"
-#include "png_io.h"
+#include "measure/image_io.h"
 
 using namespace penumbra;
 
@@ -196,7 +196,7 @@ int main(int argc, char** argv) {
             if (!args.screenshot.empty()) {
                 const auto rgba = app.read_pixels(f.width, f.height);
                 const std::string err =
-                    tools::write_png(args.screenshot, tools::from_rgba(rgba, f.width, f.height, 3));
+                    measure::write_png(args.screenshot, measure::from_rgba(rgba, f.width, f.height, 3));
                 if (!err.empty()) {
                     std::fprintf(stderr, "penumbra-desktop: error: %s\n", err.c_str());
                     status = 1;

@@ -11,6 +11,7 @@ packages=(
   libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libcli11-dev  # maths, scenes, PNG, CLI
   libgtest-dev libbenchmark-dev glslang-tools    # tests and shader validation
   libembree-dev                                  # the ray-traced ground truth (penumbra bench / truth)
+  librsvg2-dev fonts-dejavu-core                 # the bench plots' PNGs: the SVG rendered by librsvg, in DejaVu Sans
   libglfw3-dev xvfb xauth                        # the desktop app, and its test on a virtual X server
   emscripten chromium nodejs                     # the web pages, and their tests in headless Chromium
 )

@@ -2,7 +2,9 @@
 # `penumbra bench --quick` end to end: it must finish and write a well-formed CSV (every row, every
 # number parses, percentages in range, each run labelled with its settings), a Markdown table, an
 # SVG that parses as XML and a PNG of the plot; never a timing check. Then `penumbra export` and
-# `penumbra truth --score` on the exported file, and their bad-input errors.
+# `penumbra truth --score` (prose and --json) on the exported file; that the CSV header, the
+# Markdown headings and the JSON keys are the score table's (`truth --score-columns`); and the
+# bad-input errors.
 # usage: bench_quick.sh PENUMBRA WORKDIR SOURCE_DIR
 set -uo pipefail
 penumbra=$1 work=$2 src=$3
@@ -52,6 +54,40 @@ if "$penumbra" render --scene "$work/course.gltf" --size 96x96 --aov visibility 
    out=$("$penumbra" truth --scene "$work/course.gltf" --size 96x96 --out-dir "$work/truth" --score "$work/vis.png") &&
    grep -q "score of .*error [0-9.]* %" <<<"$out" && [ -s "$work/truth/errors.png" ] && [ -s "$work/truth/mask.png" ]; then ok
 else bad "truth --score on the exported scene: $out"; fi
+if "$penumbra" truth --score-columns >"$work/columns.json" &&
+   "$penumbra" truth --scene "$work/course.gltf" --size 96x96 --out-dir "$work/truth" --score "$work/vis.png" --json \
+     >"$work/score.json" 2>"$work/score.err"; then ok
+else bad "truth --score-columns / --score --json failed: $(cat "$work/score.err")"; fi
+python3 - "$work" <<'PY' && ok || bad "the CSV, the Markdown or the JSON do not follow the score table"
+import json, sys
+d = sys.argv[1]
+cols = json.load(open(d + "/columns.json"))
+keys = [c["key"] for c in cols]
+assert keys[:3] == ["valid_pixels", "truth_shadowed_pct", "false_shadow_pct"], keys
+# the JSON: one object, the frame then one key per column in the table's order, null only where optional
+text = open(d + "/score.json").read()
+assert text.count("\n") == 1, "stdout holds more than the JSON object"
+j = json.loads(text)
+assert list(j) == ["scene", "time", "width", "height"] + keys, list(j)
+assert j["scene"].endswith("course.gltf") and j["width"] == 96 and j["height"] == 96
+for c in cols:
+    v = j[c["key"]]
+    assert v is not None or c["optional"], c["key"]
+    if v is not None and c["key"].endswith("_pct"): assert 0.0 <= v <= 100.0, (c["key"], v)
+assert isinstance(j["valid_pixels"], int) and j["valid_pixels"] > 0
+assert j["mae_area_light_pct"] is None  # no --soft-samples
+assert abs(j["false_shadow_pct"] + j["false_lit_pct"] - j["error_pct"]) < 1e-3
+# the CSV: the score columns, contiguous and in order, between map_size and ms_moving
+header = open(d + "/bench/results.csv").readline().strip().split(",")
+i = header.index("map_size")
+assert header[i + 1:i + 1 + len(keys)] == keys and header[i + 1 + len(keys)] == "ms_moving", header
+# the Markdown: every table's score headings, in order
+md = open(d + "/bench/results.md").read()
+headings = " | ".join(c["heading"] for c in cols if c["table_digits"] >= 0)
+assert "| technique | map | " + headings + " | ms/frame moving |" in md
+assert "| technique | " + headings + " | ms/frame moving |" in md
+print("score columns:", ", ".join(keys))
+PY
 
 # Bad input: one line, exit 2, no file.
 expect_error() {
@@ -65,6 +101,7 @@ expect_error "export, missing scene" export --scene "$work/none.gltf" --out "$wo
 expect_error "bench, unknown encoding" bench --quick --encodings r16 --out-dir "$work/b2"
 expect_error "bench, bad scene time" bench --quick --scenes teapot@soon --out-dir "$work/b2"
 expect_error "truth, bad size" truth --size 0x5 --out-dir "$work/t2"
+expect_error "truth, --json without --score" truth --json --out-dir "$work/t2"
 [ ! -e "$work/x.gltf" ] && [ ! -e "$work/x.png" ] && ok || bad "a failed export left a file"
 
 echo "$pass passed, $fail failed"

@@ -8,10 +8,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "metrics/metrics.h"
+#include "measure/metrics.h"
 #include "scene/course_scene.h"
 #include "scene/probe_scenes.h"
-#include "truth/ray_tracer.h"
+#include "measure/ray_tracer.h"
 
 using namespace penumbra;
 
@@ -28,7 +28,7 @@ class Extremes : public test::GlTest {
 protected:
     // Renders `sc` with `s` (visibility AOV), scores it against the truth, checks the invariants
     // and returns the score.
-    metrics::Score run(const scene::Scene& sc, render::Settings s, const char* label) {
+    measure::Score run(const scene::Scene& sc, render::Settings s, const char* label) {
         s.aov = render::Aov::Visibility;
         if (s.width == 512 && s.height == 512) s.width = s.height = 256;
         EXPECT_EQ(renderer->check(sc, s), "");
@@ -43,18 +43,18 @@ protected:
         std::vector<std::uint8_t> vis(rgba.size() / 4);
         for (size_t i = 0; i < vis.size(); ++i) vis[i] = rgba[i * 4];
 
-        truth::TruthOptions to;
+        measure::TruthOptions to;
         to.width = s.width;
         to.height = s.height;
         to.view_proj = renderer->camera_view_proj();
-        const truth::TruthImage t = truth::RayTracer(sc).render(to);
-        const metrics::Score score = metrics::score(vis, t.lit, t.valid_mask());
+        const measure::TruthImage t = measure::RayTracer(sc).render(to);
+        const measure::Score score = measure::score(vis, t.lit, t.valid_mask());
         EXPECT_GT(score.valid, static_cast<size_t>(s.width * s.height / 10)) << label << ": too few valid pixels";
         // Neither all shadow nor all light where the truth has both.
         size_t dark = 0, truth_dark = 0;
         for (size_t i = 0; i < vis.size(); ++i)
             if (t.valid(i)) {
-                dark += vis[i] < metrics::kDarkBelow;
+                dark += vis[i] < measure::kDarkBelow;
                 truth_dark += t.lit[i] == 0;
             }
         if (truth_dark > 0 && truth_dark < score.valid) {

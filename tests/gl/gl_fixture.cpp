@@ -18,7 +18,7 @@ platform::Platform& context() {
     return *ctx;
 }
 
-ImageDiff compare(const tools::Pixels& a, const tools::Pixels& b) {
+ImageDiff compare(const measure::Pixels& a, const measure::Pixels& b) {
     ImageDiff d;
     double sum = 0.0;
     for (size_t i = 0; i < a.data.size(); ++i) {
@@ -30,7 +30,7 @@ ImageDiff compare(const tools::Pixels& a, const tools::Pixels& b) {
     return d;
 }
 
-void expect_matches_golden(const std::string& name, const tools::Pixels& actual, int max_threshold,
+void expect_matches_golden(const std::string& name, const measure::Pixels& actual, int max_threshold,
                            double mean_threshold) {
     namespace fs = std::filesystem;
     const std::string golden_path = std::string(PENUMBRA_GOLDEN_DIR) + "/" + name + ".png";
@@ -41,20 +41,20 @@ void expect_matches_golden(const std::string& name, const tools::Pixels& actual,
     fs::remove(actual_path);
     fs::remove(diff_path);
 
-    tools::Pixels golden;
+    measure::Pixels golden;
     if (!fs::exists(golden_path)) {
-        ASSERT_EQ(tools::write_png(actual_path, actual), "");
+        ASSERT_EQ(measure::write_png(actual_path, actual), "");
         FAIL() << "no golden " << golden_path << ": look at " << actual_path
                << ", then approve it with tools/approve_goldens.sh";
     }
-    ASSERT_EQ(tools::read_png(golden_path, golden, actual.channels), "");
+    ASSERT_EQ(measure::read_png(golden_path, golden, actual.channels), "");
     ASSERT_EQ(golden.width, actual.width) << golden_path;
     ASSERT_EQ(golden.height, actual.height) << golden_path;
     const ImageDiff d = compare(actual, golden);
     if (d.max <= max_threshold && d.mean <= mean_threshold) return;
 
     // The diff image: per pixel the largest channel difference, amplified x4, as grey.
-    tools::Pixels diff;
+    measure::Pixels diff;
     diff.width = actual.width;
     diff.height = actual.height;
     diff.channels = 1;
@@ -68,8 +68,8 @@ void expect_matches_golden(const std::string& name, const tools::Pixels& actual,
         }
         diff.data[p] = static_cast<std::uint8_t>(std::min(255, m * 4));
     }
-    EXPECT_EQ(tools::write_png(actual_path, actual), "");
-    EXPECT_EQ(tools::write_png(diff_path, diff), "");
+    EXPECT_EQ(measure::write_png(actual_path, actual), "");
+    EXPECT_EQ(measure::write_png(diff_path, diff), "");
     ADD_FAILURE() << name << ": max difference " << d.max << " (threshold " << max_threshold << "), mean " << d.mean
                   << " (threshold " << mean_threshold << ")\n  actual: " << actual_path << "\n  diff:   " << diff_path
                   << "\n  look at both; if the change is right, run tools/approve_goldens.sh";

@@ -10,7 +10,7 @@
 #include "gl/caps.h"
 #include "gl/check.h"
 #include "platform/platform.h"
-#include "png_io.h"
+#include "measure/image_io.h"
 #include "render/renderer.h"
 
 namespace penumbra::test {
@@ -35,11 +35,11 @@ struct ImageDiff {
     double mean = 0.0;  // mean per-channel difference over all pixels
 };
 
-ImageDiff compare(const tools::Pixels& a, const tools::Pixels& b);
+ImageDiff compare(const measure::Pixels& a, const measure::Pixels& b);
 
 // Compares `actual` with tests/golden/NAME.png. On a mismatch (or a missing golden) writes
 // NAME.actual.png and NAME.diff.png under build/test-output/golden and fails with their paths.
-void expect_matches_golden(const std::string& name, const tools::Pixels& actual, int max_threshold,
+void expect_matches_golden(const std::string& name, const measure::Pixels& actual, int max_threshold,
                            double mean_threshold);
 
 }  // namespace penumbra::test

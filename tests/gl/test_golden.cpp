@@ -46,7 +46,7 @@ TEST_P(Golden, CourseSceneMatches) {
     ASSERT_EQ(renderer->check(src.at(kTime), s, in), "");
     renderer->render(src.at(kTime), s, in);
     const int channels = c.aov == render::Aov::Color ? 3 : 1;
-    test::expect_matches_golden(c.name, tools::from_rgba(renderer->read_image(), kSize, kSize, channels),
+    test::expect_matches_golden(c.name, measure::from_rgba(renderer->read_image(), kSize, kSize, channels),
                                 kMaxThreshold, kMeanThreshold);
 }
 

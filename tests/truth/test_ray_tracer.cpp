@@ -13,10 +13,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/primitives.h"
-#include "truth/ray_tracer.h"
+#include "measure/ray_tracer.h"
 
 using namespace penumbra;
-using truth::PixelClass;
+using measure::PixelClass;
 
 namespace {
 
@@ -49,9 +49,9 @@ scene::Scene sphere_over_plane() {
 // The renderer's camera matrix for a square viewport.
 glm::mat4 view_proj(const scene::Camera& c) { return glm::perspective(c.yfov, 1.0f, c.znear, c.zfar) * c.view; }
 
-truth::TruthImage trace(const scene::Scene& s, int soft_samples = 0, float light_radius = 0.0f) {
-    truth::RayTracer rt(s);
-    truth::TruthOptions o;
+measure::TruthImage trace(const scene::Scene& s, int soft_samples = 0, float light_radius = 0.0f) {
+    measure::RayTracer rt(s);
+    measure::TruthOptions o;
     o.width = o.height = kSize;
     o.view_proj = view_proj(s.camera);
     o.soft_samples = soft_samples;
@@ -59,10 +59,10 @@ truth::TruthImage trace(const scene::Scene& s, int soft_samples = 0, float light
     return rt.render(o);
 }
 
-bool is(const truth::TruthImage& t, size_t i, PixelClass c) { return t.pixel_class[i] == static_cast<std::uint8_t>(c); }
+bool is(const measure::TruthImage& t, size_t i, PixelClass c) { return t.pixel_class[i] == static_cast<std::uint8_t>(c); }
 
 // Every pixel with a 4-neighbour on another object (or the background) is in the silhouette band.
-void expect_band_around_objects(const truth::TruthImage& t) {
+void expect_band_around_objects(const measure::TruthImage& t) {
     const size_t w = static_cast<size_t>(t.width), h = static_cast<size_t>(t.height);
     size_t missing = 0;
     for (size_t y = 0; y < h; ++y)
@@ -81,7 +81,7 @@ void expect_band_around_objects(const truth::TruthImage& t) {
 
 // Plane pixels: the shadow must be exactly `inside(p)`, away from a `margin` around its edge.
 template <typename Inside, typename Distance>
-void expect_plane_shadow(const truth::TruthImage& t, Inside inside, Distance edge_distance, float margin,
+void expect_plane_shadow(const measure::TruthImage& t, Inside inside, Distance edge_distance, float margin,
                          int min_shadowed) {
     int checked = 0, shadowed = 0, wrong = 0;
     for (size_t i = 0; i < t.lit.size(); ++i) {
@@ -101,7 +101,7 @@ void expect_plane_shadow(const truth::TruthImage& t, Inside inside, Distance edg
 
 TEST(Truth, SphereOverPlaneDirectionalDisc) {
     const scene::Scene s = sphere_over_plane();
-    const truth::TruthImage t = trace(s);
+    const measure::TruthImage t = trace(s);
     ASSERT_EQ(t.lit.size(), static_cast<size_t>(kSize * kSize));
     // The tessellated sphere's outline lies between r cos(pi/96) and r: a 2% margin holds it.
     expect_plane_shadow(
@@ -133,7 +133,7 @@ TEST(Truth, SphereOverPlanePointLightOverhead) {
     s.light.type = scene::LightType::Point;
     constexpr float kLightY = 6.0f;
     s.light.position = glm::vec3(0.0f, kLightY, 0.0f);
-    const truth::TruthImage t = trace(s);
+    const measure::TruthImage t = trace(s);
     // The tangent cone from the light: sin(theta) = r / (H - h); on the plane R = H tan(theta).
     const float theta = std::asin(kRadius / (kLightY - kHeight));
     const float shadow_radius = kLightY * std::tan(theta);
@@ -148,7 +148,7 @@ TEST(Truth, SpotLightConeBoundsTheValidPixels) {
     s.light.position = glm::vec3(0.0f, 6.0f, 0.0f);
     s.light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
     s.light.spot_outer_cone = 0.5f;
-    const truth::TruthImage t = trace(s);
+    const measure::TruthImage t = trace(s);
     int inside = 0, outside = 0;
     for (size_t i = 0; i < t.lit.size(); ++i) {
         if (t.object[i] != 0 || is(t, i, PixelClass::Silhouette)) continue;
@@ -228,7 +228,7 @@ TEST(Truth, BoxUnderTiltedDirectionalLight) {
     s.camera.yfov = glm::radians(50.0f);
     s.camera.znear = 0.5f;
     s.camera.zfar = 40.0f;
-    const truth::TruthImage t = trace(s);
+    const measure::TruthImage t = trace(s);
 
     // The shadow polygon: every corner of the box slid along the light onto y = 0.
     std::vector<glm::vec2> projected;
@@ -262,7 +262,7 @@ TEST(Truth, BoxUnderTiltedDirectionalLight) {
 TEST(Truth, AreaLightUmbraAndLitRegion) {
     const scene::Scene s = sphere_over_plane();
     constexpr float kAngle = 0.12f;  // the light's angular radius, radians
-    const truth::TruthImage t = trace(s, 64, kAngle);
+    const measure::TruthImage t = trace(s, 64, kAngle);
     ASSERT_EQ(t.soft.size(), t.lit.size());
     int umbra = 0, lit = 0, penumbra = 0;
     for (size_t i = 0; i < t.soft.size(); ++i) {
@@ -291,7 +291,7 @@ TEST(Truth, AreaLightUmbraAndLitRegion) {
 TEST(Truth, NonCastersDoNotShadowAndNonReceiversAreNotValid) {
     scene::Scene s = sphere_over_plane();
     s.objects[1].casts_shadow = false;
-    truth::TruthImage t = trace(s);
+    measure::TruthImage t = trace(s);
     for (size_t i = 0; i < t.lit.size(); ++i) {
         if (t.object[i] == 0 && t.valid(i)) {
             EXPECT_EQ(t.lit[i], 1);
@@ -312,28 +312,28 @@ TEST(Truth, BackFacesAreCulledLikeTheRenderer) {
     scene::Scene s = sphere_over_plane();
     s.objects.resize(1);  // the plane alone, seen from below
     s.camera.view = glm::lookAt(glm::vec3(0.0f, -5.0f, 0.1f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-    const truth::TruthImage t = trace(s);
+    const measure::TruthImage t = trace(s);
     EXPECT_EQ(t.count(PixelClass::Background), t.lit.size());
 }
 
 TEST(Truth, ValidMaskAndEpsilon) {
     const scene::Scene s = sphere_over_plane();
-    truth::RayTracer rt(s);
+    measure::RayTracer rt(s);
     // 1e-4 of the scene's diagonal (10 x 3 x 10 box).
     EXPECT_NEAR(rt.epsilon(), 1e-4f * std::sqrt(10.0f * 10.0f + 3.0f * 3.0f + 10.0f * 10.0f), 1e-7f);
-    truth::TruthOptions o;
+    measure::TruthOptions o;
     o.width = 40;
     o.height = 30;
     o.view_proj = glm::perspective(s.camera.yfov, 4.0f / 3.0f, s.camera.znear, s.camera.zfar) * s.camera.view;
-    const truth::TruthImage t = rt.render(o);
+    const measure::TruthImage t = rt.render(o);
     const auto mask = t.valid_mask();
     ASSERT_EQ(mask.size(), 1200u);
     size_t total = 0;
-    for (int c = 0; c < truth::kPixelClassCount; ++c) total += t.count(static_cast<PixelClass>(c));
+    for (int c = 0; c < measure::kPixelClassCount; ++c) total += t.count(static_cast<PixelClass>(c));
     EXPECT_EQ(total, mask.size());
     for (size_t i = 0; i < mask.size(); ++i) EXPECT_EQ(mask[i] != 0, t.valid(i));
     EXPECT_TRUE(t.soft.empty());
-    EXPECT_THROW(rt.render(truth::TruthOptions{0, 10}), std::invalid_argument);
+    EXPECT_THROW(rt.render(measure::TruthOptions{0, 10}), std::invalid_argument);
 }
 
 }  // namespace

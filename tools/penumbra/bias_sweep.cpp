@@ -10,12 +10,12 @@
 #include <vector>
 
 #include "gl/caps.h"
-#include "metrics/metrics.h"
+#include "measure/metrics.h"
 #include "platform/platform.h"
 #include "render/renderer.h"
 #include "scene/course_scene.h"
 #include "scene/probe_scenes.h"
-#include "truth/ray_tracer.h"
+#include "measure/ray_tracer.h"
 
 namespace penumbra::tools {
 
@@ -30,7 +30,7 @@ struct Row {
     shadow::Precision precision = shadow::Precision::Highp;
     std::string bias_label;  // a number, "default" or "auto"
     float bias = 0.0f;       // the constant part that was used
-    metrics::Score score;
+    measure::Score score;
 };
 
 // The scene with its light at `elevation`: the box on the plane under a directional light, or
@@ -158,11 +158,11 @@ int run_bias_sweep(const BiasSweepOptions& o) {
             s.aov = render::Aov::Visibility;
             renderer.load(sc);
             renderer.render(sc, s);  // for the camera's matrix at this size
-            truth::TruthOptions to;
+            measure::TruthOptions to;
             to.width = to.height = o.size;
             to.view_proj = renderer.camera_view_proj();
-            const truth::RayTracer tracer(sc);
-            const truth::TruthImage truth_image = tracer.render(to);
+            const measure::RayTracer tracer(sc);
+            const measure::TruthImage truth_image = tracer.render(to);
             const auto valid = truth_image.valid_mask();
             for (auto e : shadow::kAllEncodings)
                 for (auto p : precisions)
@@ -182,7 +182,7 @@ int run_bias_sweep(const BiasSweepOptions& o) {
                         r.precision = p;
                         r.bias_label = b;
                         r.bias = s.effective_bias();
-                        r.score = metrics::score(vis, truth_image.lit, valid);
+                        r.score = measure::score(vis, truth_image.lit, valid);
                         rows.push_back(r);
                     }
         }

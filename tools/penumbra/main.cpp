@@ -26,7 +26,7 @@
 #include "bias_sweep.h"
 #endif
 #include "cli_options.h"
-#include "png_io.h"
+#include "measure/image_io.h"
 #include "render/options.h"
 #include "render/renderer.h"
 #include "render/shader_library.h"
@@ -53,8 +53,8 @@ std::unique_ptr<platform::Platform> make_context() {
 int channels_for(render::Aov aov) { return aov == render::Aov::Color ? 3 : 1; }
 
 void write_image(render::Renderer& r, const render::Options& o, const std::string& path) {
-    const auto px = tools::from_rgba(r.read_image(), o.job.width, o.job.height, channels_for(o.settings.aov));
-    const std::string err = tools::write_png(path, px);
+    const auto px = measure::from_rgba(r.read_image(), o.job.width, o.job.height, channels_for(o.settings.aov));
+    const std::string err = measure::write_png(path, px);
     if (!err.empty()) throw Failure{err};
 }
 

@@ -34,6 +34,8 @@ struct TruthCommandOptions {
     int soft_samples = 0;
     float light_radius = -1.0f;  // < 0: the bench's default for the scene
     std::string score;           // a visibility PNG (red channel) to compare with the truth
+    bool json = false;           // with score: one JSON object on stdout (the score columns' keys)
+    bool score_columns = false;  // print the score table as JSON and trace nothing
 };
 void run_truth(const TruthCommandOptions& o);
 

@@ -38,6 +38,11 @@ std::shared_ptr<MeasureCommands> add_measure_commands(CLI::App& app) {
     m->truth_cmd->add_option("--light-radius", t.light_radius,
                              "area light radius: world units (point, spot) or radians (directional); default as bench");
     m->truth_cmd->add_option("--score", t.score, "a visibility PNG of the same frame and size to score against the truth");
+    m->truth_cmd->add_flag("--json", t.json,
+                           "with --score: print one JSON object (scene, time, width, height and one key per score column, "
+                           "null where absent) on stdout instead of the prose lines");
+    m->truth_cmd->add_flag("--score-columns", t.score_columns,
+                           "print the score columns (key, heading, digits, meaning, ...) as JSON and trace nothing");
 
     m->bench_cmd = app.add_subcommand("bench", "the sweep: error against the ray-traced truth, ms/frame and memory of every technique");
     auto& b = m->bench_options;
@@ -65,6 +70,7 @@ int run_measure_commands(MeasureCommands& m) {
             run_export(m.export_options);
             return 0;
         }
+#ifdef PENUMBRA_HAVE_TRUTH  // truth and bench exist only with the Embree ground truth
         if (m.truth_cmd && *m.truth_cmd) {
             run_truth(m.truth_options);
             return 0;
@@ -73,6 +79,7 @@ int run_measure_commands(MeasureCommands& m) {
             run_bench(m.bench_options);
             return 0;
         }
+#endif
     } catch (const CommandError& e) {
         std::fprintf(stderr, "penumbra: error: %s\n", e.message.c_str());
         return e.code;

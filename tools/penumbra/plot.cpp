@@ -4,31 +4,25 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <sstream>
+#include <stdexcept>
 
-#include <stb_easy_font.h>
+#include <cairo.h>
+#include <librsvg/rsvg.h>
 
 namespace penumbra::tools {
+
+using measure::Pixels;
 namespace {
 
 struct Vec {
     double x = 0.0, y = 0.0;
 };
 
-struct Rgb {
-    std::uint8_t r = 0, g = 0, b = 0;
-};
-
-Rgb parse_color(const std::string& hex) {
-    unsigned v = 0;
-    if (hex.size() == 7 && hex[0] == '#') std::sscanf(hex.c_str() + 1, "%6x", &v);
-    return {static_cast<std::uint8_t>(v >> 16), static_cast<std::uint8_t>((v >> 8) & 0xFF),
-            static_cast<std::uint8_t>(v & 0xFF)};
-}
-
 enum class Anchor { Start, Middle, End };
 
-// One thing to draw, in plot units (the SVG's user space; the PNG scales it).
+// One thing to draw, in the SVG's user units.
 struct Item {
     enum Kind { Polyline, Polygon, Circle, Text } kind = Polyline;
     std::vector<Vec> pts;   // Polyline, Polygon; Circle: the centre; Text: the baseline start
@@ -44,7 +38,7 @@ struct Item {
     std::string tooltip;
 };
 
-// The layout, shared by both outputs.
+// The layout: the display list the SVG writer emits.
 class Layout {
 public:
     Layout(const Plot& p, int w, int h) : p_(p), w_(w), h_(h) {}
@@ -353,172 +347,6 @@ std::string num(double v) {
     return s;
 }
 
-// ---- rasteriser ------------------------------------------------------------------------------
-
-class Canvas {
-public:
-    Canvas(int w, int h, double scale) : w_(w), h_(h), s_(scale), px_(static_cast<size_t>(w) * static_cast<size_t>(h)) {}
-
-    void draw(const Item& it) {
-        switch (it.kind) {
-            case Item::Polygon:
-                if (!it.fill.empty()) fill_polygon(scaled(it.pts), parse_color(it.fill));
-                if (!it.stroke.empty()) {
-                    auto closed = it.pts;
-                    closed.push_back(it.pts.front());
-                    stroke(closed, parse_color(it.stroke), it.width, false);
-                }
-                break;
-            case Item::Polyline: stroke(it.pts, parse_color(it.stroke), it.width, it.dashed); break;
-            case Item::Circle: circle(it); break;
-            case Item::Text: text(it); break;
-        }
-    }
-
-    Pixels downsample(int factor) const {
-        Pixels out;
-        out.width = w_ / factor;
-        out.height = h_ / factor;
-        out.channels = 3;
-        out.data.resize(static_cast<size_t>(out.width) * static_cast<size_t>(out.height) * 3u);
-        const int n = factor * factor;
-        for (int y = 0; y < out.height; ++y)
-            for (int x = 0; x < out.width; ++x) {
-                int r = 0, g = 0, b = 0;
-                for (int j = 0; j < factor; ++j)
-                    for (int i = 0; i < factor; ++i) {
-                        const Rgb& c = px_[static_cast<size_t>(y * factor + j) * static_cast<size_t>(w_) +
-                                           static_cast<size_t>(x * factor + i)];
-                        r += c.r;
-                        g += c.g;
-                        b += c.b;
-                    }
-                std::uint8_t* o = &out.data[(static_cast<size_t>(y) * static_cast<size_t>(out.width) + static_cast<size_t>(x)) * 3u];
-                o[0] = static_cast<std::uint8_t>((r + n / 2) / n);
-                o[1] = static_cast<std::uint8_t>((g + n / 2) / n);
-                o[2] = static_cast<std::uint8_t>((b + n / 2) / n);
-            }
-        return out;
-    }
-
-private:
-    std::vector<Vec> scaled(const std::vector<Vec>& pts) const {
-        std::vector<Vec> out;
-        for (const auto& p : pts) out.push_back({p.x * s_, p.y * s_});
-        return out;
-    }
-
-    void set(int x, int y, Rgb c) {
-        if (x < 0 || y < 0 || x >= w_ || y >= h_) return;
-        px_[static_cast<size_t>(y) * static_cast<size_t>(w_) + static_cast<size_t>(x)] = c;
-    }
-
-    // Even-odd scanline fill at pixel centres (any simple polygon).
-    void fill_polygon(const std::vector<Vec>& p, Rgb c) {
-        if (p.size() < 3) return;
-        double ymin = 1e300, ymax = -1e300;
-        for (const auto& v : p) {
-            ymin = std::min(ymin, v.y);
-            ymax = std::max(ymax, v.y);
-        }
-        const int y0 = std::max(0, static_cast<int>(std::floor(ymin))), y1 = std::min(h_ - 1, static_cast<int>(std::ceil(ymax)));
-        std::vector<double> xs;
-        for (int y = y0; y <= y1; ++y) {
-            const double sy = y + 0.5;
-            xs.clear();
-            for (size_t i = 0; i < p.size(); ++i) {
-                const Vec a = p[i], b = p[(i + 1) % p.size()];
-                if ((a.y <= sy && b.y > sy) || (b.y <= sy && a.y > sy)) xs.push_back(a.x + (sy - a.y) / (b.y - a.y) * (b.x - a.x));
-            }
-            std::sort(xs.begin(), xs.end());
-            for (size_t k = 0; k + 1 < xs.size(); k += 2) {
-                const int xa = std::max(0, static_cast<int>(std::ceil(xs[k] - 0.5)));
-                const int xb = std::min(w_ - 1, static_cast<int>(std::floor(xs[k + 1] - 0.5)));
-                for (int x = xa; x <= xb; ++x) set(x, y, c);
-            }
-        }
-    }
-
-    void segment(Vec a, Vec b, Rgb c, double width) {
-        const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
-        if (len < 1e-9) return;
-        const double hw = 0.5 * std::max(width * s_, 1.0);
-        const double nx = -dy / len * hw, ny = dx / len * hw;
-        fill_polygon({{a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}}, c);
-    }
-
-    void stroke(const std::vector<Vec>& pts, Rgb c, double width, bool dashed) {
-        const auto p = scaled(pts);
-        const double on = 7.0 * s_, off = 5.0 * s_;
-        double phase = 0.0;
-        for (size_t i = 0; i + 1 < p.size(); ++i) {
-            if (!dashed) {
-                segment(p[i], p[i + 1], c, width);
-                continue;
-            }
-            const double len = std::hypot(p[i + 1].x - p[i].x, p[i + 1].y - p[i].y);
-            double t = 0.0;
-            while (t < len) {
-                const double cycle = std::fmod(phase, on + off);
-                const bool drawing = cycle < on;
-                const double run = std::min(len - t, drawing ? on - cycle : on + off - cycle);
-                if (drawing) {
-                    const Vec a{p[i].x + (p[i + 1].x - p[i].x) * t / len, p[i].y + (p[i + 1].y - p[i].y) * t / len};
-                    const Vec b{p[i].x + (p[i + 1].x - p[i].x) * (t + run) / len,
-                                p[i].y + (p[i + 1].y - p[i].y) * (t + run) / len};
-                    segment(a, b, c, width);
-                }
-                t += run;
-                phase += run;
-            }
-        }
-    }
-
-    void circle(const Item& it) {
-        const double cx = it.pts[0].x * s_, cy = it.pts[0].y * s_, r = it.radius * s_;
-        const double hw = it.stroke.empty() ? 0.0 : 0.5 * it.width * s_;
-        const Rgb fill = parse_color(it.fill), stroke_c = parse_color(it.stroke);
-        const int x0 = static_cast<int>(std::floor(cx - r - hw - 1)), x1 = static_cast<int>(std::ceil(cx + r + hw + 1));
-        const int y0 = static_cast<int>(std::floor(cy - r - hw - 1)), y1 = static_cast<int>(std::ceil(cy + r + hw + 1));
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                const double d = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
-                if (!it.stroke.empty() && std::fabs(d - r) <= hw) set(x, y, stroke_c);
-                else if (!it.fill.empty() && d < r) set(x, y, fill);
-            }
-    }
-
-    void text(const Item& it) {
-        // stb_easy_font: glyphs about 7 units tall above the baseline, 12 per line; quads out.
-        std::vector<char> buf(it.text.begin(), it.text.end());
-        buf.push_back('\0');
-        const double k = it.size / 9.5 * s_;
-        const double width = stb_easy_font_width(buf.data()) * k;
-        double x = it.pts[0].x * s_;
-        if (it.anchor == Anchor::Middle) x -= 0.5 * width;
-        if (it.anchor == Anchor::End) x -= width;
-        const double y = it.pts[0].y * s_ - 7.0 * k;
-        static std::vector<char> quads(1 << 18);
-        const int n = stb_easy_font_print(0.0f, 0.0f, buf.data(), nullptr, quads.data(), static_cast<int>(quads.size()));
-        const Rgb c = parse_color(it.fill);
-        for (int q = 0; q < n; ++q) {
-            const auto* v = reinterpret_cast<const float*>(quads.data() + static_cast<size_t>(q) * 64u);
-            // Four vertices of 16 bytes: x, y, z, colour.
-            const double qx0 = v[0], qy0 = v[1], qx1 = v[8], qy1 = v[9];
-            const double grow = it.bold ? 0.35 : 0.0;
-            fill_polygon({{x + (qx0 - grow) * k, y + qy0 * k},
-                          {x + (qx1 + grow) * k, y + qy0 * k},
-                          {x + (qx1 + grow) * k, y + qy1 * k},
-                          {x + (qx0 - grow) * k, y + qy1 * k}},
-                         c);
-        }
-    }
-
-    int w_, h_;
-    double s_;
-    std::vector<Rgb> px_;
-};
-
 }  // namespace
 
 std::string plot_svg(const Plot& plot, int width, int height) {
@@ -563,12 +391,46 @@ std::string plot_svg(const Plot& plot, int width, int height) {
     return o.str();
 }
 
-Pixels plot_png(const Plot& plot, int width, int height) {
-    constexpr int kSuper = 3;
-    const std::vector<Item> items = Layout(plot, width, height).build();
-    Canvas c(width * kSuper, height * kSuper, kSuper);
-    for (const Item& it : items) c.draw(it);
-    return c.downsample(kSuper);
+Pixels svg_to_pixels(const std::string& svg, int width, int height) {
+    GError* error = nullptr;
+    RsvgHandle* handle = rsvg_handle_new_from_data(reinterpret_cast<const guint8*>(svg.data()), svg.size(), &error);
+    const auto fail = [&](const char* what) -> std::runtime_error {
+        std::string message = std::string("librsvg: ") + what + (error ? std::string(": ") + error->message : std::string());
+        if (error) g_error_free(error);
+        return std::runtime_error(message);
+    };
+    if (!handle) throw fail("cannot parse the SVG");
+    cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
+    cairo_t* cr = cairo_create(surface);
+    cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);  // an opaque white page under the drawing
+    cairo_paint(cr);
+    const RsvgRectangle viewport{0.0, 0.0, static_cast<double>(width), static_cast<double>(height)};
+    const bool drawn = rsvg_handle_render_document(handle, cr, &viewport, &error) && cairo_status(cr) == CAIRO_STATUS_SUCCESS;
+    cairo_destroy(cr);
+    g_object_unref(handle);
+    if (!drawn || cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS) {
+        cairo_surface_destroy(surface);
+        throw fail("cannot render the SVG");
+    }
+    cairo_surface_flush(surface);
+    // CAIRO_FORMAT_ARGB32: one native-endian 32-bit word per pixel, 0xAARRGGBB, alpha premultiplied;
+    // over the opaque page every alpha is 255, so the colour is as stored.
+    const unsigned char* data = cairo_image_surface_get_data(surface);
+    const size_t stride = static_cast<size_t>(cairo_image_surface_get_stride(surface));
+    Pixels out{width, height, 3, std::vector<std::uint8_t>(static_cast<size_t>(width) * static_cast<size_t>(height) * 3u)};
+    for (size_t y = 0; y < static_cast<size_t>(height); ++y)
+        for (size_t x = 0; x < static_cast<size_t>(width); ++x) {
+            std::uint32_t argb;
+            std::memcpy(&argb, data + y * stride + 4u * x, sizeof argb);
+            std::uint8_t* o = &out.data[(y * static_cast<size_t>(width) + x) * 3u];
+            o[0] = static_cast<std::uint8_t>(argb >> 16);
+            o[1] = static_cast<std::uint8_t>(argb >> 8);
+            o[2] = static_cast<std::uint8_t>(argb);
+        }
+    cairo_surface_destroy(surface);
+    return out;
 }
+
+Pixels plot_png(const Plot& plot, int width, int height) { return svg_to_pixels(plot_svg(plot, width, height), width, height); }
 
 }  // namespace penumbra::tools

@@ -1,13 +1,13 @@
-// A scatter plot of error against time with the Pareto front marked, written as SVG (text) and
-// rasterised to PNG by the same layout code (no plotting package needed): one display list of
-// lines, markers and text, emitted twice.
+// A scatter plot of error against time with the Pareto front marked, written as SVG (each point's
+// <title> tooltip holds its exact settings), and the same SVG rendered to PNG by librsvg (cairo,
+// fonts through fontconfig).
 #pragma once
 
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "png_io.h"
+#include "measure/image_io.h"
 
 namespace penumbra::tools {
 
@@ -39,7 +39,10 @@ struct Plot {
 
 // The plot as an SVG document of width x height user units.
 std::string plot_svg(const Plot& plot, int width, int height);
-// The same plot rasterised (RGB), anti-aliased by 3x3 supersampling.
-Pixels plot_png(const Plot& plot, int width, int height);
+// The same plot as an RGB image: plot_svg's document rendered by librsvg onto a white page.
+// Throws std::runtime_error when librsvg cannot parse or render it.
+measure::Pixels plot_png(const Plot& plot, int width, int height);
+// Any SVG document rendered by librsvg at width x height pixels (its viewBox fitted into them).
+measure::Pixels svg_to_pixels(const std::string& svg, int width, int height);
 
 }  // namespace penumbra::tools

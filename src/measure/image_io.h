@@ -1,11 +1,11 @@
-// PNG files for the command-line tool and the tests: written whole or not at all.
+// PNG files for the command line, the desktop app and the tests: written whole or not at all (stb).
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace penumbra::tools {
+namespace penumbra::measure {
 
 struct Pixels {
     int width = 0;
@@ -24,4 +24,4 @@ std::string read_png(const std::string& path, Pixels& out, int channels = 0);
 // Picks channels from RGBA8 pixels: 1 takes red (grey AOVs), 3 drops alpha.
 Pixels from_rgba(const std::vector<std::uint8_t>& rgba, int width, int height, int channels);
 
-}  // namespace penumbra::tools
+}  // namespace penumbra::measure

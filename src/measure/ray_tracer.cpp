@@ -1,4 +1,4 @@
-#include "truth/ray_tracer.h"
+#include "measure/ray_tracer.h"
 
 #include "scene/hash.h"
 
@@ -13,7 +13,7 @@
 
 #include <embree3/rtcore.h>
 
-namespace penumbra::truth {
+namespace penumbra::measure {
 
 const char* to_string(PixelClass c) {
     switch (c) {
@@ -366,4 +366,4 @@ TruthImage RayTracer::render(const TruthOptions& opt) const {
     return out;
 }
 
-}  // namespace penumbra::truth
+}  // namespace penumbra::measure

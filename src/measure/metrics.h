@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace penumbra::metrics {
+namespace penumbra::measure {
 
 struct Score {
     std::size_t valid = 0;         // pixels compared
@@ -60,4 +60,4 @@ std::vector<std::size_t> pareto_front(const std::vector<Point2>& points, double 
 // The median of a sample (the mean of the middle two for an even count); 0 for none.
 double median(std::vector<double> values);
 
-}  // namespace penumbra::metrics
+}  // namespace penumbra::measure

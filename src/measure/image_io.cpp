@@ -1,4 +1,4 @@
-#include "png_io.h"
+#include "measure/image_io.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -10,7 +10,7 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
-namespace penumbra::tools {
+namespace penumbra::measure {
 
 namespace {
 void append(void* context, void* data, int size) {
@@ -74,4 +74,4 @@ Pixels from_rgba(const std::vector<std::uint8_t>& rgba, int width, int height, i
     return p;
 }
 
-}  // namespace penumbra::tools
+}  // namespace penumbra::measure

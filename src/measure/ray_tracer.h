@@ -39,7 +39,7 @@
 
 #include "scene/scene.h"
 
-namespace penumbra::truth {
+namespace penumbra::measure {
 
 enum class PixelClass : std::uint8_t {
     Valid = 0,
@@ -101,4 +101,4 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace penumbra::truth
+}  // namespace penumbra::measure

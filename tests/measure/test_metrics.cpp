@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "metrics/metrics.h"
+#include "measure/metrics.h"
 
-using namespace penumbra::metrics;
+using namespace penumbra::measure;
 
 namespace {
 

@@ -1,11 +1,11 @@
-#include "metrics/metrics.h"
+#include "measure/metrics.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
 
-namespace penumbra::metrics {
+namespace penumbra::measure {
 
 Score score(const std::vector<std::uint8_t>& rendered, const std::vector<std::uint8_t>& truth_lit,
             const std::vector<std::uint8_t>& valid, const std::vector<float>* soft) {
@@ -87,4 +87,4 @@ double median(std::vector<double> v) {
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-}  // namespace penumbra::metrics
+}  // namespace penumbra::measure

@@ -1,0 +1,133 @@
+// Inside `penumbra bench` and `penumbra truth` (not a library interface): one row of results, the
+// sweep's state, and what the three files share.
+//   bench.cpp          the sweep: configuration, the accuracy pass, the interleaved timing rounds
+//   bench_report.cpp   the outputs: results.csv, results.md, the plots; --from-csv reads rows back
+//   truth_command.cpp  penumbra truth, and the truth helpers the sweep uses too
+#pragma once
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "measure.h"
+#include "measure/image_io.h"
+#include "measure/metrics.h"
+#include "measure/ray_tracer.h"
+#include "platform/platform.h"
+#include "render/renderer.h"
+#include "render/settings.h"
+#include "scene/scene.h"
+
+namespace penumbra::tools::bench {
+
+using Clock = std::chrono::steady_clock;
+
+inline double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+inline std::string duration_str(double s) {
+    char b[32];
+    const int total = static_cast<int>(std::lround(s));
+    if (total >= 60) std::snprintf(b, sizeof b, "%dm%02ds", total / 60, total % 60);
+    else std::snprintf(b, sizeof b, "%.1fs", s);
+    return b;
+}
+
+inline std::string fixed(double v, int digits) {
+    char b[48];
+    std::snprintf(b, sizeof b, "%.*f", digits, v);
+    return b;
+}
+
+// "teapot@0.6", "teapot" (t = 0), "FILE.gltf", "FILE.gltf@2" (a glTF scene is static).
+struct SceneSpec {
+    std::string name;
+    double time = 0.0;
+    std::string label;  // "course@0.60", "bench_easy"
+};
+
+// ---- one row of results ----------------------------------------------------------------------
+
+struct Row {
+    std::string scene;
+    double time = 0.0;
+    std::string technique;  // "rgba pcf4x4", "none", "planar"
+    std::string encoding, filter;
+    int map = 0;
+    std::string settings;   // render::to_args
+    measure::Score score;
+    double ms_moving = 0.0, ms_still = 0.0;
+    double ms_shadow = 0.0, ms_camera = 0.0;
+    int redrawn_moving = 0, redrawn_still = 0, frames = 0;
+    std::size_t bytes = 0;
+};
+
+// ---- the sweep -------------------------------------------------------------------------------
+
+struct Sweep {
+    BenchOptions o;
+    int width = 512, height = 512;
+    std::vector<SceneSpec> scenes;
+    std::vector<shadow::Encoding> encodings;
+    std::vector<shadow::Filter> filters;
+    render::Settings base;
+    std::string gl_renderer, context;
+    std::vector<Row> rows;
+    std::vector<std::string> notes;
+    std::string command_line;
+    std::string from_csv;  // rows read back from this file instead of measured
+    std::string load_before, load_after;  // the machine's 1-minute load average around the run
+};
+
+// A technique at a map size (0: no map): the rows of several scene frames are averaged per key.
+struct Key {
+    std::string technique;
+    int map = 0;
+    bool operator<(const Key& o) const { return technique != o.technique ? technique < o.technique : map < o.map; }
+};
+
+std::string key_label(const Key& k);
+
+// ---- bench_report.cpp ------------------------------------------------------------------------
+
+// Writes results.csv, results.md, tradeoff.svg/.png and tradeoff_mae.svg/.png into `dir`;
+// `t0` is when the command started (results.md gives the time until then).
+struct Report {
+    std::vector<Key> front;  // the Pareto front of error against time, over all scenes
+    double elapsed = 0.0;    // seconds since t0 when results.md was written
+};
+Report write_report(const Sweep& w, const std::filesystem::path& dir, Clock::time_point t0);
+
+// Reads rows written by the CSV writer (or by another harness with the same columns, e.g. three.js
+// runs scored with `penumbra truth --score`): the scenes, sizes and map sizes follow from the rows.
+void read_csv(Sweep& w, const std::string& path);
+
+// ---- truth_command.cpp: the truth of one frame, shared by the sweep and penumbra truth ----------
+
+std::unique_ptr<platform::Platform> make_context();
+
+// The area light the soft truth uses unless told otherwise: 1% of the scene's diagonal for a
+// point or spot light (a bulb), 0.01 rad (about twice the sun's) for a directional light.
+float default_light_radius(const scene::Scene& s);
+
+// The camera matrix the renderer uses for this scene at this size: ask it (one frame, no shadows).
+glm::mat4 renderer_view_proj(render::Renderer& r, const scene::Scene& s, int width, int height);
+
+void write_or_throw(const std::string& path, const measure::Pixels& px);
+
+// The truth as a picture: lit white, shadowed black; pixels left out of the comparison in colour.
+measure::Pixels classes_image(const measure::TruthImage& t);
+
+// A rendered visibility against the truth: agreement in greys, false shadow red, false lit blue.
+measure::Pixels error_image(const std::vector<std::uint8_t>& rendered, const measure::TruthImage& t);
+
+// "valid 50.3 %, background 45.4 %, ...": the share of each pixel class.
+std::string class_summary(const measure::TruthImage& t);
+
+}  // namespace penumbra::tools::bench

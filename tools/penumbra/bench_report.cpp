@@ -1,0 +1,400 @@
+// penumbra bench's outputs: results.csv (one row per scene frame and technique), results.md (the
+// tables of means), tradeoff.svg/.png and tradeoff_mae.svg/.png (error against time with the
+// Pareto front); --from-csv reads the rows back.
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "bench.h"
+#include "measure/metrics.h"
+#include "measure/score_columns.h"
+#include "plot.h"
+#include "render/settings.h"
+
+namespace fs = std::filesystem;
+
+namespace penumbra::tools::bench {
+namespace {
+
+std::string bytes_str(std::size_t b) {
+    if (b == 0) return "0";
+    if (b >= (1u << 20)) return fixed(static_cast<double>(b) / (1u << 20), b >= (16u << 20) ? 0 : 1) + " MiB";
+    return fixed(static_cast<double>(b) / 1024.0, 0) + " KiB";
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+    const fs::path tmp = path.string() + ".tmp";
+    {
+        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+        f << text;
+        if (!f) throw CommandError{path.string() + ": cannot write", 1};
+    }
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) throw CommandError{path.string() + ": cannot write (" + ec.message() + ")", 1};
+}
+
+// One row per scene frame and technique; the score's columns are the score table's
+// (measure/score_columns.h), between the frame's and the time's.
+std::string csv(const Sweep& w) {
+    std::ostringstream o;
+    o << "scene,time,width,height,technique,encoding,filter,map_size," << measure::score_csv_header()
+      << ",ms_moving,ms_still,ms_shadow_pass,ms_camera_pass,frames,redrawn_moving,redrawn_still,shadow_map_bytes,settings\n";
+    for (const Row& r : w.rows) {
+        o << r.scene << "," << fixed(r.time, 3) << "," << w.width << "," << w.height << "," << r.technique << "," << r.encoding << ","
+          << r.filter << "," << r.map << "," << measure::score_csv_cells(r.score) << "," << fixed(r.ms_moving, 3) << ","
+          << fixed(r.ms_still, 3) << "," << fixed(r.ms_shadow, 3) << "," << fixed(r.ms_camera, 3) << "," << r.frames << ","
+          << r.redrawn_moving << "," << r.redrawn_still << "," << r.bytes << ",\"" << r.settings << "\"\n";
+    }
+    return o.str();
+}
+
+// Means over a set of rows (one technique and map size over several scenes): each score column's
+// mean (measure::mean_score), the times' means, the largest memory.
+struct Mean {
+    measure::Score score;
+    double moving = 0, still = 0, shadow = 0, camera = 0;
+    std::size_t bytes = 0;
+    int n = 0;
+};
+
+Mean mean_of(const std::vector<const Row*>& rows) {
+    Mean m;
+    std::vector<const measure::Score*> scores;
+    for (const Row* r : rows) {
+        scores.push_back(&r->score);
+        m.moving += r->ms_moving;
+        m.still += r->ms_still;
+        m.shadow += r->ms_shadow;
+        m.camera += r->ms_camera;
+        m.bytes = std::max(m.bytes, r->bytes);
+        ++m.n;
+    }
+    m.score = measure::mean_score(scores);
+    if (m.n) {
+        const double n = m.n;
+        m.moving /= n, m.still /= n, m.shadow /= n, m.camera /= n;
+    }
+    return m;
+}
+
+std::vector<Key> keys_in_order(const std::vector<const Row*>& rows) {
+    std::vector<Key> keys;
+    std::set<Key> seen;
+    for (const Row* r : rows)
+        if (seen.insert({r->technique, r->map}).second) keys.push_back({r->technique, r->map});
+    return keys;
+}
+
+std::map<Key, Mean> means_by_key(const std::vector<const Row*>& rows) {
+    std::map<Key, std::vector<const Row*>> groups;
+    for (const Row* r : rows) groups[{r->technique, r->map}].push_back(r);
+    std::map<Key, Mean> out;
+    for (const auto& [k, v] : groups) out[k] = mean_of(v);
+    return out;
+}
+
+std::vector<const Row*> select(const Sweep& w, bool (*pred)(const Row&)) {
+    std::vector<const Row*> out;
+    for (const Row& r : w.rows)
+        if (pred(r)) out.push_back(&r);
+    return out;
+}
+
+// y: the error % (false shadow + false lit), or with `mae` the mean absolute visibility error.
+tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const std::string& title, bool mae,
+                      std::vector<Key>* front_keys) {
+    const auto keys = keys_in_order(rows);
+    const auto means = means_by_key(rows);
+    tools::Plot p;
+    p.title = title;
+    p.subtitle = "mean over " + std::to_string(w.scenes.size()) + " scene frames at " + std::to_string(w.width) + "x" +
+                 std::to_string(w.height) + "; time: median ms/frame with the light moving (map redrawn)" +
+                 (w.gl_renderer.empty() ? "" : "; " + w.gl_renderer);
+    p.xlabel = "ms per frame, light moving (log scale)";
+    p.ylabel = mae ? "mean absolute visibility error %" : "error % (false shadow + false lit)";
+    p.colors = {"#d95f02", "#7570b3", "#1b9e77", "#666666", "#e7298a"};
+    p.color_legend = {{"r8", 0}, {"rgba", 1}, {"depthtex", 2}, {"no shadow map", 3}};
+    const auto known = [](const std::string& enc) {
+        return enc == "r8" || enc == "rgba" || enc == "depthtex" || enc == "none" || enc == "planar";
+    };
+    for (const Key& k : keys)
+        if (!known(k.technique.substr(0, k.technique.find(' ')))) {
+            p.color_legend.push_back({"other (e.g. three.js)", 4});
+            break;
+        }
+    p.marker_legend = {{"hard", Marker::Circle}, {"pcf2x2", Marker::Square}, {"pcf4x4", Marker::Triangle},
+                       {"planar", Marker::Diamond}, {"none", Marker::Cross}};
+    p.notes = {"marker size: map 256 ... 4096", "front: shadow maps only;", "planar and none are references",
+               "hover (SVG) for the exact", "settings of each point"};
+    // The front is over the shadow-map techniques: planar shadows need a flat ground and cast no
+    // shadow on anything else, and none is no answer; both are drawn as references.
+    std::vector<measure::Point2> pts;
+    std::vector<Key> order;
+    for (const Key& k : keys) {
+        const Mean& m = means.at(k);
+        tools::PlotPoint pt;
+        pt.x = m.moving;
+        pt.y = mae ? m.score.mae_pct : m.score.error_pct;
+        const std::string enc = k.technique.substr(0, k.technique.find(' '));
+        const std::string fil = k.technique.find(' ') == std::string::npos ? "" : k.technique.substr(k.technique.find(' ') + 1);
+        pt.color = enc == "r8" ? 0 : enc == "rgba" ? 1 : enc == "depthtex" ? 2 : known(enc) ? 3 : 4;
+        pt.marker = fil == "hard" ? Marker::Circle : fil == "pcf2x2" ? Marker::Square : fil == "pcf4x4" ? Marker::Triangle
+                    : enc == "planar" ? Marker::Diamond : Marker::Cross;
+        pt.radius = k.map ? 3.0 + 1.1 * std::log2(static_cast<double>(k.map) / 256.0) : 5.0;
+        pt.label = key_label(k);
+        pt.tooltip = key_label(k) + ": error " + fixed(m.score.error_pct, 2) + " % (false shadow " + fixed(m.score.false_shadow_pct, 2) +
+                     ", false lit " + fixed(m.score.false_lit_pct, 2) + "), mean abs error " + fixed(m.score.mae_pct, 2) + " %, " +
+                     fixed(m.moving, 2) + " ms/frame moving, " + fixed(m.still, 2) + " still, " + bytes_str(m.bytes);
+        p.points.push_back(pt);
+        pts.push_back({k.map ? m.moving : NAN, pt.y});
+        order.push_back(k);
+    }
+    p.front = measure::pareto_front(pts, 0.01);  // the tables' precision
+    if (front_keys)
+        for (size_t i : p.front) front_keys->push_back(order[i]);
+    return p;
+}
+
+std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& front) {
+    std::ostringstream o;
+    const auto all = select(w, [](const Row&) { return true; });
+    const auto keys = keys_in_order(all);
+    const auto means = means_by_key(all);
+    const std::set<Key> on_front(front.begin(), front.end());
+    char date[64];
+    const std::time_t now = std::time(nullptr);
+    std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
+
+    o << "# penumbra bench: accuracy, time and memory of each shadow technique\n\n";
+    if (w.from_csv.empty()) {
+        o << "Generated by `" << w.command_line << "` on " << date << " in " << duration_str(elapsed) << ": " << w.context << ", "
+          << w.gl_renderer << "; 1-minute load average " << w.load_before << " before the run, " << w.load_after
+          << " after it (2 cores: other jobs on the machine slow every technique alike, as the timing rounds interleave).\n"
+          << "Frames of " << w.width << "x" << w.height << "; time: " << w.o.rounds << " interleaved round(s) of " << w.o.frames
+          << " timed frames per technique, each frame finished with `glFinish`, the median of the rounds' medians; "
+          << "settings shared by every run: `" << render::to_args(w.base) << "` (technique, encoding, filter and map size vary).\n\n";
+    } else {
+        o << "Rebuilt on " << date << " by `penumbra bench --from-csv " << w.from_csv << "` from rows measured earlier (each row's "
+          << "exact settings are in the CSV's last column). Frames of " << w.width << "x" << w.height << ".\n\n";
+    }
+    o << "Scene frames: ";
+    for (size_t i = 0; i < w.scenes.size(); ++i) o << (i ? ", " : "") << "`" << w.scenes[i].label << "`";
+    o << ". Error: % of the valid pixels (see `docs/tradeoffs.md` for the definitions) against the ray-traced hard-shadow "
+         "truth; *vs area light*: mean absolute visibility error against an area light of 1 % of the scene's diagonal "
+         "(0.01 rad for a directional light), "
+      << (w.from_csv.empty() ? std::to_string(w.o.soft_samples) : "some") << " samples per pixel. *Moving*: the light (and the teapot) move, so the map is redrawn every frame; "
+         "*still*: the same frame again, the map reused; shadow pass = moving - still, camera pass = still. Memory: the shadow "
+         "map's colour texture plus its depth buffer (or the depth texture alone).\n\n";
+    if (w.o.quick) o << "**Quick mode: small frames and few of them; the timings mean nothing.**\n\n";
+
+    o << "## All scenes (mean over the " << w.scenes.size() << " scene frames)\n\n"
+      << "| technique | map | " << measure::score_table_headings() << " | ms/frame moving | "
+         "ms/frame still | shadow pass ms | camera pass ms | shadow memory | Pareto |\n"
+      << "|---|---:|" << measure::score_table_rule() << "---:|---:|---:|---:|---:|:-:|\n";
+    for (const Key& k : keys) {
+        const Mean& m = means.at(k);
+        o << "| " << k.technique << " | " << (k.map ? std::to_string(k.map) : "-") << " | " << measure::score_table_cells(m.score)
+          << " | " << fixed(m.moving, 2) << " | " << fixed(m.still, 2) << " | " << fixed(m.shadow, 2) << " | " << fixed(m.camera, 2) << " | "
+          << bytes_str(m.bytes) << " | " << (on_front.count(k) ? "yes" : k.map ? "" : "ref.") << " |\n";
+    }
+
+    // The course scene at the default map size: the closing note's figures.
+    std::vector<const Row*> course;
+    for (const Row* r : all)
+        if (r->scene.rfind("course@", 0) == 0) course.push_back(r);
+    if (!course.empty()) {
+        std::set<std::string> ts;
+        for (const Row* r : course) ts.insert(r->scene);
+        std::string tlist;
+        for (const auto& t : ts) tlist += (tlist.empty() ? "" : ", ") + t.substr(7);
+        for (int map : {1024}) {
+            std::vector<const Row*> sel;
+            for (const Row* r : course)
+                if (r->map == map || r->map == 0) sel.push_back(r);
+            if (sel.empty()) continue;
+            const auto cm = means_by_key(sel);
+            o << "\n## The course scene, map " << map << " (mean over t = " << tlist << " s)\n\n"
+              << "| technique | " << measure::score_table_headings() << " | ms/frame moving | ms/frame still | shadow memory |\n"
+              << "|---|" << measure::score_table_rule() << "---:|---:|---:|\n";
+            for (const Key& k : keys_in_order(sel)) {
+                const Mean& m = cm.at(k);
+                o << "| " << k.technique << " | " << measure::score_table_cells(m.score) << " | " << fixed(m.moving, 2) << " | "
+                  << fixed(m.still, 2) << " | " << bytes_str(m.bytes) << " |\n";
+            }
+        }
+    }
+
+    // Error % per scene at one map size (the middle of the sweep), and error and time by map size.
+    const int mid_map = w.o.maps[w.o.maps.size() / 2];
+    std::vector<std::string> scene_labels;
+    for (const auto& s : w.scenes) scene_labels.push_back(s.label);
+    o << "\n## Error % per scene frame, map " << mid_map << "\n\n| technique |";
+    for (const auto& l : scene_labels) o << " " << l << " |";
+    o << "\n|---|";
+    for (size_t i = 0; i < scene_labels.size(); ++i) o << "---:|";
+    o << "\n";
+    std::vector<std::string> techniques;
+    for (const Key& k : keys)
+        if (std::find(techniques.begin(), techniques.end(), k.technique) == techniques.end()) techniques.push_back(k.technique);
+    for (const auto& t : techniques) {
+        o << "| " << t << " |";
+        for (const auto& l : scene_labels) {
+            const Row* found = nullptr;
+            for (const Row* r : all)
+                if (r->technique == t && r->scene == l && (r->map == mid_map || r->map == 0)) found = r;
+            o << " " << (found ? fixed(found->score.error_pct, 2) : "-") << " |";
+        }
+        o << "\n";
+    }
+    for (int table = 0; table < 2; ++table) {
+        o << "\n## " << (table == 0 ? "Error % (all scenes)" : "ms/frame with the light moving (all scenes)") << " by map size\n\n| technique |";
+        for (int m : w.o.maps) o << " " << m << " |";
+        o << "\n|---|";
+        for (size_t i = 0; i < w.o.maps.size(); ++i) o << "---:|";
+        o << "\n";
+        for (const auto& t : techniques) {
+            if (t == "none" || t == "planar") continue;
+            o << "| " << t << " |";
+            for (int m : w.o.maps) {
+                const auto it = means.find({t, m});
+                o << " " << (it == means.end() ? "-" : fixed(table == 0 ? it->second.score.error_pct : it->second.moving, 2)) << " |";
+            }
+            o << "\n";
+        }
+    }
+    if (!w.notes.empty()) {
+        o << "\n## Notes\n\n";
+        for (const auto& n : w.notes) o << "- " << n << "\n";
+    }
+    o << "\n![error against time](tradeoff.svg)\n\n![mean absolute error against time](tradeoff_mae.svg)\n";
+    return o.str();
+}
+
+
+// One CSV line into fields (double quotes protect commas; "" is a quote).
+std::vector<std::string> csv_fields(const std::string& line) {
+    std::vector<std::string> out(1);
+    bool quoted = false;
+    for (size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted) {
+            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') out.back() += '"', ++i;
+            else if (c == '"') quoted = false;
+            else out.back() += c;
+        } else if (c == '"') {
+            quoted = true;
+        } else if (c == ',') {
+            out.emplace_back();
+        } else if (c != '\r') {
+            out.back() += c;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string key_label(const Key& k) { return k.map ? k.technique + " " + std::to_string(k.map) : k.technique; }
+
+Report write_report(const Sweep& w, const fs::path& dir, Clock::time_point t0) {
+    Report out;
+    const auto all = select(w, [](const Row&) { return true; });
+    const tools::Plot plot = make_plot(w, all, "Shadow error against frame time: every encoding x filter x map size", false, &out.front);
+    const tools::Plot mae_plot =
+        make_plot(w, all, "Mean absolute visibility error (counts PCF's greys) against frame time", true, nullptr);
+    write_text(dir / "results.csv", csv(w));
+    write_text(dir / "tradeoff.svg", plot_svg(plot, 1100, 700));
+    write_or_throw((dir / "tradeoff.png").string(), plot_png(plot, 1100, 700));
+    write_text(dir / "tradeoff_mae.svg", plot_svg(mae_plot, 1100, 700));
+    write_or_throw((dir / "tradeoff_mae.png").string(), plot_png(mae_plot, 1100, 700));
+    out.elapsed = seconds_since(t0);
+    write_text(dir / "results.md", markdown(w, out.elapsed, out.front));
+    return out;
+}
+
+void read_csv(Sweep& w, const std::string& path) {
+    std::ifstream f(path);
+    if (!f) throw CommandError{"--from-csv " + path + ": cannot open", 2};
+    std::string line;
+    if (!std::getline(f, line)) throw CommandError{"--from-csv " + path + ": empty file", 2};
+    const auto header = csv_fields(line);
+    std::map<std::string, size_t> col;
+    for (size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
+    std::vector<std::string> needed = {"scene", "time", "width", "height", "technique", "map_size"};
+    for (const auto& key : measure::missing_required_columns([&](std::string_view k) { return col.count(std::string(k)) > 0; }))
+        needed.push_back(key);
+    needed.insert(needed.end(), {"ms_moving", "ms_still"});
+    for (const auto& need : needed)
+        if (!col.count(need)) throw CommandError{"--from-csv " + path + ": no column '" + need + "'", 2};
+    size_t line_no = 1;
+    std::vector<std::string> labels;
+    std::set<int> maps;
+    while (std::getline(f, line)) {
+        ++line_no;
+        if (line.empty()) continue;
+        const auto v = csv_fields(line);
+        const auto get = [&](const char* name) -> std::string {
+            const auto it = col.find(name);
+            return it != col.end() && it->second < v.size() ? v[it->second] : std::string();
+        };
+        const auto num = [&](const char* name, double fallback) {
+            const std::string t = get(name);
+            if (t.empty()) return fallback;
+            char* end = nullptr;
+            const double d = std::strtod(t.c_str(), &end);
+            if (end != t.c_str() + t.size())
+                throw CommandError{"--from-csv " + path + ":" + std::to_string(line_no) + ": " + name + " '" + t + "' is not a number", 2};
+            return d;
+        };
+        Row r;
+        r.scene = get("scene");
+        r.time = num("time", 0.0);
+        w.width = static_cast<int>(num("width", w.width));
+        w.height = static_cast<int>(num("height", w.height));
+        r.technique = get("technique");
+        r.encoding = get("encoding");
+        r.filter = get("filter");
+        r.map = static_cast<int>(num("map_size", 0));
+        r.settings = get("settings");
+        try {
+            r.score = measure::score_from_cells([&](std::string_view key) -> std::optional<std::string> {
+                const auto it = col.find(std::string(key));
+                if (it == col.end()) return std::nullopt;
+                return it->second < v.size() ? v[it->second] : std::string();
+            });
+        } catch (const std::invalid_argument& e) {
+            throw CommandError{"--from-csv " + path + ":" + std::to_string(line_no) + ": " + e.what(), 2};
+        }
+        r.ms_moving = num("ms_moving", 0);
+        r.ms_still = num("ms_still", 0);
+        r.ms_shadow = num("ms_shadow_pass", std::max(0.0, r.ms_moving - r.ms_still));
+        r.ms_camera = num("ms_camera_pass", r.ms_still);
+        r.frames = static_cast<int>(num("frames", 0));
+        r.redrawn_moving = static_cast<int>(num("redrawn_moving", 0));
+        r.redrawn_still = static_cast<int>(num("redrawn_still", 0));
+        r.bytes = static_cast<std::size_t>(num("shadow_map_bytes", 0));
+        if (r.scene.empty() || r.technique.empty())
+            throw CommandError{"--from-csv " + path + ":" + std::to_string(line_no) + ": no scene or technique", 2};
+        if (std::find(labels.begin(), labels.end(), r.scene) == labels.end()) labels.push_back(r.scene);
+        if (r.map > 0) maps.insert(r.map);
+        w.rows.push_back(r);
+    }
+    if (w.rows.empty()) throw CommandError{"--from-csv " + path + ": no rows", 2};
+    w.scenes.clear();
+    for (const auto& l : labels) w.scenes.push_back({l, 0.0, l});
+    w.o.maps.assign(maps.begin(), maps.end());
+    if (w.o.maps.empty()) w.o.maps = {0};
+}
+
+}  // namespace penumbra::tools::bench
