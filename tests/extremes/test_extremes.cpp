@@ -3,6 +3,7 @@
 // against the ray-traced truth (src/truth). The bounds were set from measured values with margin;
 // the measured error is recorded as a test property (see the XML output) and printed.
 #include "gl_fixture.h"
+#include "render/options.h"
 
 #include <cmath>
 
@@ -29,27 +30,30 @@ protected:
     // Renders `sc` with `s` (visibility AOV), scores it against the truth, checks the invariants
     // and returns the score.
     measure::Score run(const scene::Scene& sc, render::Settings s, const char* label) {
+        constexpr int kSize = 256;
         s.aov = render::Aov::Visibility;
-        if (s.width == 512 && s.height == 512) s.width = s.height = 256;
-        EXPECT_EQ(renderer->check(sc, s), "");
-        const auto& plan = renderer->render(sc, s);
+        const render::FrameInputs in = render::offscreen(kSize, kSize);
+        EXPECT_EQ(renderer->check(sc, s, in), "");
+        const auto& plan = renderer->render(sc, s, in);
         notes = plan.notes;
-        map_size = plan.map_size;
-        EXPECT_TRUE(finite(renderer->camera_view_proj())) << label;
-        if (plan.shadow_map) {
-            EXPECT_TRUE(finite(renderer->light_frustum().view_proj())) << label << ": light frustum";
+        const render::PlannedResource* map = plan.resource("shadow-map");
+        map_size = map ? map->desc.width : 0;
+        const glm::mat4 view_proj = plan.camera.view_proj;
+        EXPECT_TRUE(finite(view_proj)) << label;
+        if (plan.light_frustum) {
+            EXPECT_TRUE(finite(plan.light_frustum->view_proj())) << label << ": light frustum";
         }
         const auto rgba = renderer->read_image();
         std::vector<std::uint8_t> vis(rgba.size() / 4);
         for (size_t i = 0; i < vis.size(); ++i) vis[i] = rgba[i * 4];
 
         measure::TruthOptions to;
-        to.width = s.width;
-        to.height = s.height;
-        to.view_proj = renderer->camera_view_proj();
+        to.width = kSize;
+        to.height = kSize;
+        to.view_proj = view_proj;
         const measure::TruthImage t = measure::RayTracer(sc).render(to);
         const measure::Score score = measure::score(vis, t.lit, t.valid_mask());
-        EXPECT_GT(score.valid, static_cast<size_t>(s.width * s.height / 10)) << label << ": too few valid pixels";
+        EXPECT_GT(score.valid, static_cast<size_t>(kSize * kSize / 10)) << label << ": too few valid pixels";
         // Neither all shadow nor all light where the truth has both.
         size_t dark = 0, truth_dark = 0;
         for (size_t i = 0; i < vis.size(); ++i)

@@ -22,8 +22,8 @@
 #include "measure.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
+#include "render/options.h"
 #include "render/renderer.h"
-#include "render/settings.h"
 #include "scene/scene_source.h"
 
 namespace fs = std::filesystem;
@@ -64,14 +64,15 @@ std::string technique_label(const render::Settings& s) {
     return std::string(shadow::to_string(s.encoding)) + " " + std::string(shadow::to_string(s.filter));
 }
 
+// A list option of the bench (--encodings r8,rgba): each value checked by the option table's
+// entry for `option` and read into a Settings.
 template <typename T>
-std::vector<T> parse_list(const std::vector<std::string>& names, const char* option,
-                          const std::vector<std::pair<std::string, T>>& known) {
+std::vector<T> settings_list(const std::vector<std::string>& values, const char* option, T render::Settings::*field) {
     std::vector<T> out;
-    for (const auto& n : names) {
-        auto it = std::find_if(known.begin(), known.end(), [&](const auto& k) { return k.first == n; });
-        if (it == known.end()) throw CommandError{std::string(option) + ": unknown value '" + n + "'", 2};
-        out.push_back(it->second);
+    for (const auto& v : values) {
+        render::Settings s;
+        if (const std::string err = render::parse_option(s, option, v); !err.empty()) throw CommandError{err, 2};
+        out.push_back(s.*field);
     }
     return out;
 }
@@ -92,26 +93,30 @@ Sweep configure(const BenchOptions& in) {
                                                       "tests/data/bench_hard.gltf"};
     }
     for (const auto& s : o.scenes) w.scenes.push_back(parse_scene_spec(s));
-    std::vector<std::pair<std::string, shadow::Encoding>> encs;
-    for (auto e : shadow::kAllEncodings) encs.emplace_back(std::string(shadow::to_string(e)), e);
-    std::vector<std::pair<std::string, shadow::Filter>> fils;
-    for (auto f : shadow::kAllFilters) fils.emplace_back(std::string(shadow::to_string(f)), f);
-    if (o.encodings.empty()) for (const auto& e : encs) o.encodings.push_back(e.first);
-    if (o.filters.empty()) for (const auto& f : fils) o.filters.push_back(f.first);
-    w.encodings = parse_list(o.encodings, "--encodings", encs);
-    w.filters = parse_list(o.filters, "--filters", fils);
+    // The lists default to every choice of the option table and are checked by it.
+    for (const auto& c : render::option_info("encoding").choices)
+        if (in.encodings.empty()) o.encodings.emplace_back(c.value);
+    for (const auto& c : render::option_info("filter").choices)
+        if (in.filters.empty()) o.filters.emplace_back(c.value);
+    w.encodings = settings_list(o.encodings, "encoding", &render::Settings::encoding);
+    w.filters = settings_list(o.filters, "filter", &render::Settings::filter);
     for (int m : o.maps)
-        if (m <= 0) throw CommandError{"--maps: sizes must be positive", 2};
+        if (const std::string err = render::check_value(render::option_info("map-size"), std::to_string(m)); !err.empty())
+            throw CommandError{"--maps: " + err.substr(err.find(": ") + 2), 2};
     if (const std::string err = render::parse_option(w.base, "size", o.size); !err.empty()) throw CommandError{err, 2};
-    w.width = w.base.width;
-    w.height = w.base.height;
+    w.width = w.base.job.width;
+    w.height = w.base.job.height;
+    // --set takes any technique option the sweep does not vary itself.
+    const std::vector<std::string> swept = {"encoding", "filter", "map-size", "aov", "technique"};
     for (const auto& kv : o.set) {
         const auto eq = kv.find('=');
         if (eq == std::string::npos) throw CommandError{"--set " + kv + ": expected NAME=VALUE", 2};
         const std::string name = kv.substr(0, eq), value = kv.substr(eq + 1);
-        for (const char* owned : {"scene", "time", "size", "encoding", "filter", "map-size", "aov", "technique", "out", "frames"})
-            if (name == owned) throw CommandError{"--set " + name + ": the bench sweeps or sets this one itself", 2};
-        if (const std::string err = render::parse_option(w.base, name, value); !err.empty()) throw CommandError{err, 2};
+        const auto* opt = render::find_option(render::option_table(), name);
+        if (opt && (opt->info.part == render::OptionPart::Job || std::count(swept.begin(), swept.end(), name)))
+            throw CommandError{"--set " + name + ": the bench sweeps or sets this one itself", 2};
+        if (const std::string err = render::parse_option(w.base.settings, name, value); !err.empty())
+            throw CommandError{err, 2};
     }
     return w;
 }
@@ -131,18 +136,19 @@ struct Timing {
 
 // Renders `frames` frames after `warmup` untimed ones, each finished with glFinish.
 template <typename SceneAt>
-Timing time_frames(render::Renderer& r, const render::Settings& s, int warmup, int frames, SceneAt scene_at) {
+Timing time_frames(render::Renderer& r, const render::Settings& s, const render::FrameInputs& in, int warmup, int frames,
+                   SceneAt scene_at) {
     std::vector<double> ms;
     Timing t;
     for (int i = 0; i < warmup + frames; ++i) {
         const scene::Scene& sc = scene_at(i);
         const auto start = Clock::now();
-        const render::FramePlan& plan = r.render(sc, s);
+        const render::FramePlan& plan = r.render(sc, s, in);
         r.finish();
         const double elapsed = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         if (i >= warmup) {
             ms.push_back(elapsed);
-            t.redrawn += plan.shadow_redrawn ? 1 : 0;
+            t.redrawn += plan.drawn("shadow-map") ? 1 : 0;
         }
     }
     t.median_ms = measure::median(ms);
@@ -166,7 +172,7 @@ void run_sweep(Sweep& w) {
     for (auto e : w.encodings)
         for (auto f : w.filters)
             for (int m : o.maps) {
-                render::Settings s = w.base;
+                render::Settings s = w.base.settings;
                 s.technique = render::Technique::ShadowMap;
                 s.encoding = e;
                 s.filter = f;
@@ -175,7 +181,7 @@ void run_sweep(Sweep& w) {
             }
     if (o.references)
         for (auto t : {render::Technique::None, render::Technique::Planar}) {
-            render::Settings s = w.base;
+            render::Settings s = w.base.settings;
             s.technique = t;
             techniques.push_back(s);
         }
@@ -188,8 +194,9 @@ void run_sweep(Sweep& w) {
                  o.quick ? " (quick: timings are not meaningful)" : "");
 
     // One renderer for everything (one context, one state cache); load() switches scenes.
-    render::Renderer r(gl::probe_caps());
+    render::Renderer r(gl::probe_caps(ctx->api()));
     w.gl_renderer = r.caps().renderer;
+    const render::FrameInputs in = render::offscreen(w.width, w.height);
 
     struct Pending {
         Row row;
@@ -223,7 +230,7 @@ void run_sweep(Sweep& w) {
         measure::TruthOptions to;
         to.width = w.width;
         to.height = w.height;
-        to.view_proj = renderer_view_proj(r, still, w.width, w.height);
+        to.view_proj = renderer_view_proj(still, w.width, w.height);
         to.soft_samples = o.soft_samples;
         to.light_radius = default_light_radius(still);
         const measure::TruthImage truth = measure::RayTracer(still).render(to);
@@ -241,8 +248,10 @@ void run_sweep(Sweep& w) {
         // Accuracy: the visibility AOV of the very frame the truth shows, for every technique.
         for (const render::Settings& base : techniques) {
             render::Settings s = base;
-            s.time = spec.time;
-            s.scene = spec.name;
+            render::Options labelled = w.base;  // what the row was made with, as penumbra render takes it
+            labelled.job.scene = spec.name;
+            labelled.job.time = spec.time;
+            labelled.settings = s;
             Row row;
             row.scene = spec.label;
             row.time = spec.time;
@@ -250,9 +259,9 @@ void run_sweep(Sweep& w) {
             row.encoding = s.technique == render::Technique::ShadowMap ? std::string(shadow::to_string(s.encoding)) : "-";
             row.filter = s.technique == render::Technique::ShadowMap ? std::string(shadow::to_string(s.filter)) : "-";
             row.map = s.technique == render::Technique::ShadowMap ? s.map_size : 0;
-            row.settings = render::to_args(s);
+            row.settings = render::to_args(labelled);
             ++done;
-            if (const std::string problem = r.check(still, s); !problem.empty()) {
+            if (const std::string problem = r.check(still, s, in); !problem.empty()) {
                 w.notes.push_back(spec.label + ": " + row.technique + " skipped: " + problem);
                 std::fprintf(stderr, "[%4zu/%zu] %s %s: skipped (%s)\n", done, total, spec.label.c_str(), row.technique.c_str(),
                              problem.c_str());
@@ -260,15 +269,16 @@ void run_sweep(Sweep& w) {
                 continue;
             }
             s.aov = render::Aov::Visibility;
-            const render::FramePlan& plan = r.render(still, s);
-            if (s.technique == render::Technique::ShadowMap && plan.map_size != s.map_size) {
-                row.map = plan.map_size;
+            const render::FramePlan& plan = r.render(still, s, in);
+            const render::PlannedResource* map = plan.resource("shadow-map");
+            if (s.technique == render::Technique::ShadowMap && map && map->desc.width != s.map_size) {
+                row.map = map->desc.width;
                 w.notes.push_back(spec.label + ": " + row.technique + " map " + std::to_string(s.map_size) + " clamped to " +
-                                  std::to_string(plan.map_size));
+                                  std::to_string(map->desc.width));
             }
             const auto vis = red_channel(r.read_image());
             row.score = measure::score(vis, truth.lit, valid, o.soft_samples > 0 ? &truth.soft : nullptr);
-            row.bytes = s.technique == render::Technique::ShadowMap ? r.shadow_map_bytes() : 0;
+            row.bytes = map ? map->desc.bytes() : 0;
             if (pictures && (s.map_size == 1024 || s.technique != render::Technique::ShadowMap)) {
                 std::string name = spec.label + "-" + row.technique + (row.map ? "-" + std::to_string(row.map) : "") + "-errors.png";
                 std::replace(name.begin(), name.end(), ' ', '-');
@@ -300,8 +310,8 @@ void run_sweep(Sweep& w) {
             const auto still_at = [&](int) -> const scene::Scene& { return st.still; };
             for (Pending& p : st.pending) {
                 const auto tc = Clock::now();
-                const Timing moving = time_frames(r, p.s, 2, o.frames, moving_at);
-                const Timing still_t = time_frames(r, p.s, 1, o.frames, still_at);
+                const Timing moving = time_frames(r, p.s, in, 2, o.frames, moving_at);
+                const Timing still_t = time_frames(r, p.s, in, 1, o.frames, still_at);
                 p.moving.push_back(moving.median_ms);
                 p.still.push_back(still_t.median_ms);
                 p.row.redrawn_moving += moving.redrawn;

@@ -21,8 +21,8 @@
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
 #include "platform/platform.h"
+#include "render/options.h"
 #include "render/renderer.h"
-#include "render/settings.h"
 #include "scene/scene.h"
 
 namespace penumbra::tools::bench {
@@ -76,7 +76,7 @@ struct Sweep {
     std::vector<SceneSpec> scenes;
     std::vector<shadow::Encoding> encodings;
     std::vector<shadow::Filter> filters;
-    render::Settings base;
+    render::Options base;  // the job's size and the --set options shared by every run
     std::string gl_renderer, context;
     std::vector<Row> rows;
     std::vector<std::string> notes;
@@ -117,7 +117,7 @@ std::unique_ptr<platform::Platform> make_context();
 float default_light_radius(const scene::Scene& s);
 
 // The camera matrix the renderer uses for this scene at this size: ask it (one frame, no shadows).
-glm::mat4 renderer_view_proj(render::Renderer& r, const scene::Scene& s, int width, int height);
+glm::mat4 renderer_view_proj(const scene::Scene& s, int width, int height);
 
 void write_or_throw(const std::string& path, const measure::Pixels& px);
 

@@ -12,6 +12,7 @@
 #include "gl/caps.h"
 #include "measure/metrics.h"
 #include "platform/platform.h"
+#include "render/options.h"
 #include "render/renderer.h"
 #include "scene/course_scene.h"
 #include "scene/probe_scenes.h"
@@ -132,7 +133,8 @@ int run_bias_sweep(const BiasSweepOptions& o) {
     std::string error;
     auto ctx = platform::create_headless(error);
     if (!ctx) throw std::runtime_error(error);
-    render::Renderer renderer(gl::probe_caps());
+    render::Renderer renderer(gl::probe_caps(ctx->api()));
+    const render::FrameInputs in = render::offscreen(o.size, o.size);
 
     const std::vector<std::string> scenes = {"box-on-plane", "course"};
     const std::vector<float> elevations =
@@ -152,15 +154,14 @@ int run_bias_sweep(const BiasSweepOptions& o) {
             std::fprintf(stderr, "[%zu/%zu] %s at %g degrees\n", step, total, name.c_str(), static_cast<double>(elevation));
             const scene::Scene sc = scene_at(name, elevation);
             render::Settings s;
-            s.width = s.height = o.size;
             s.map_size = o.map_size;
             s.filter = shadow::Filter::Hard;
             s.aov = render::Aov::Visibility;
             renderer.load(sc);
-            renderer.render(sc, s);  // for the camera's matrix at this size
+
             measure::TruthOptions to;
             to.width = to.height = o.size;
-            to.view_proj = renderer.camera_view_proj();
+            to.view_proj = renderer.plan(sc, s, in).camera.view_proj;
             const measure::RayTracer tracer(sc);
             const measure::TruthImage truth_image = tracer.render(to);
             const auto valid = truth_image.valid_mask();
@@ -171,7 +172,7 @@ int run_bias_sweep(const BiasSweepOptions& o) {
                         s.precision = p;
                         if (const std::string err = render::parse_option(s, "bias", b); !err.empty())
                             throw std::runtime_error(err);
-                        renderer.render(sc, s);
+                        renderer.render(sc, s, in);
                         const auto rgba = renderer.read_image();
                         std::vector<std::uint8_t> vis(rgba.size() / 4);
                         for (size_t i = 0; i < vis.size(); ++i) vis[i] = rgba[i * 4];

@@ -16,8 +16,8 @@
 #include "measure/ray_tracer.h"
 #include "measure/score_columns.h"
 #include "platform/platform.h"
-#include "render/renderer.h"
-#include "render/settings.h"
+#include "render/options.h"
+#include "render/plan.h"
 #include "scene/scene_source.h"
 
 namespace fs = std::filesystem;
@@ -97,14 +97,11 @@ std::string class_summary(const measure::TruthImage& t) {
 }
 
 // The camera matrix the renderer uses for this scene at this size: ask it (one frame, no shadows).
-glm::mat4 renderer_view_proj(render::Renderer& r, const scene::Scene& s, int width, int height) {
+glm::mat4 renderer_view_proj(const scene::Scene& s, int width, int height) {
+    // The camera's matrix is the plan's: no context is needed to know it.
     render::Settings none;
     none.technique = render::Technique::None;
-    none.width = width;
-    none.height = height;
-    none.aov = render::Aov::Visibility;
-    r.render(s, none);
-    return r.camera_view_proj();
+    return render::plan(s, none, gl::Caps{}, render::offscreen(width, height)).camera.view_proj;
 }
 
 }  // namespace bench
@@ -131,14 +128,14 @@ void run_truth(const TruthCommandOptions& o) {
         return;
     }
     if (o.json && o.score.empty()) throw CommandError{"--json: needs --score (it prints the score)", 2};
-    render::Settings size;
+    render::Options size;
     if (const std::string err = render::parse_option(size, "size", o.size); !err.empty()) throw CommandError{err, 2};
     if (o.soft_samples < 0) throw CommandError{"--soft-samples: must be 0 or more", 2};
     std::optional<Pixels> scored;
     if (!o.score.empty()) {
         Pixels px;
         if (const std::string err = read_png(o.score, px, 0); !err.empty()) throw CommandError{"--score: " + err, 2};
-        if (px.width != size.width || px.height != size.height)
+        if (px.width != size.job.width || px.height != size.job.height)
             throw CommandError{"--score " + o.score + ": " + std::to_string(px.width) + "x" + std::to_string(px.height) +
                                    ", but --size is " + o.size, 2};
         scored = std::move(px);
@@ -149,12 +146,10 @@ void run_truth(const TruthCommandOptions& o) {
 
     scene::SceneSource src = open_scene(o.scene);
     const scene::Scene s = src.at(o.time);
-    auto ctx = make_context();
-    render::Renderer r(gl::probe_caps());
     measure::TruthOptions to;
-    to.width = size.width;
-    to.height = size.height;
-    to.view_proj = renderer_view_proj(r, s, size.width, size.height);
+    to.width = size.job.width;
+    to.height = size.job.height;
+    to.view_proj = renderer_view_proj(s, size.job.width, size.job.height);
     to.soft_samples = o.soft_samples;
     to.light_radius = o.light_radius >= 0.0f ? o.light_radius : default_light_radius(s);
     const auto t0 = Clock::now();
