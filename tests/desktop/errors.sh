@@ -23,7 +23,8 @@ expect "unknown value 'lowp'" --precision lowp
 expect "or 'default', 'auto'" --bias often
 expect "must end in .png" --frames 3 --screenshot "$out/x.jpg"
 expect "needs --frames" --screenshot "$out/x.png"
-expect "expected WIDTHxHEIGHT" --size 0x10
+expect "width and height must be at least 1" --size 0x10
+expect "expected WIDTHxHEIGHT" --resize 640
 expect "unexpected argument" stray
 [ ! -e "$out/x.png" ] && [ ! -e "$out/x.jpg" ] || { echo "FAIL: a file was written"; fail=1; }
 exit $fail
