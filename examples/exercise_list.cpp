@@ -14,14 +14,7 @@ using render::OptionType;
 namespace {
 
 OptionInfo toggle(std::string_view name, std::string_view help, std::string_view label, std::vector<Choice> choices) {
-    OptionInfo o;
-    o.name = name;
-    o.part = OptionPart::Technique;
-    o.type = OptionType::Choice;
-    o.help = help;
-    o.label = label;
-    o.choices = std::move(choices);
-    return o;
+    return render::make_option_info(name, OptionPart::Technique, OptionType::Choice, help, label, std::move(choices));
 }
 
 const std::vector<Choice> kOnOff = {{"on", "on"}, {"off", "off"}};

@@ -23,6 +23,16 @@ struct StencilState {
     bool operator!=(const StencilState& o) const { return !(*this == o); }
 };
 
+// The stencil test on, comparing with `ref` by `func`, and `pass` where it and the depth test pass.
+inline StencilState stencil_test(Compare func, int ref, StencilOp pass = StencilOp::Keep) {
+    StencilState s;
+    s.enabled = true;
+    s.func = func;
+    s.ref = ref;
+    s.pass = pass;
+    return s;
+}
+
 struct PipelineState {
     bool depth_test = true;
     Compare depth_func = Compare::Less;

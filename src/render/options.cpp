@@ -181,6 +181,18 @@ std::string parse_list(const OptionInfo& o, std::string_view text, std::vector<s
 
 // ---- the table --------------------------------------------------------------------------------
 
+OptionInfo make_option_info(std::string_view name, OptionPart part, OptionType type, std::string_view help,
+                            std::string_view label, std::vector<Choice> choices) {
+    OptionInfo o;
+    o.name = name;
+    o.part = part;
+    o.type = type;
+    o.help = help;
+    o.label = label;
+    o.choices = std::move(choices);
+    return o;
+}
+
 namespace {
 
 template <typename E, size_t N>
@@ -202,18 +214,6 @@ double number_of(std::string_view v) {
     return x;
 }
 
-OptionInfo info(std::string_view name, OptionPart part, OptionType type, std::string_view help, std::string_view label,
-                std::vector<Choice> choices = {}) {
-    OptionInfo o;
-    o.name = name;
-    o.part = part;
-    o.type = type;
-    o.help = help;
-    o.label = label;
-    o.choices = std::move(choices);
-    return o;
-}
-
 std::vector<Option<Options>> make_table() {
     using P = OptionPart;
     using T = OptionType;
@@ -222,36 +222,36 @@ std::vector<Option<Options>> make_table() {
         t.push_back({std::move(info), store, print});
     };
 
-    OptionInfo scene = info("scene", P::Job, T::Text, "teapot (the course scene) or FILE.gltf / FILE.glb", "Scene");
+    OptionInfo scene = make_option_info("scene", P::Job, T::Text, "teapot (the course scene) or FILE.gltf / FILE.glb", "Scene");
     add(scene, [](Options& o, std::string_view v) { o.job.scene = std::string(v); },
         [](const Options& o) { return o.job.scene; });
 
-    OptionInfo time = info("time", P::Job, T::Number, "seconds; the animation is a pure function of t", "Time (s)");
+    OptionInfo time = make_option_info("time", P::Job, T::Number, "seconds; the animation is a pure function of t", "Time (s)");
     add(time, [](Options& o, std::string_view v) { o.job.time = number_of(v); },
         [](const Options& o) { return format_number(o.job.time); });
 
-    OptionInfo size = info("size", P::Job, T::Size, "WxH of the image", "Image size");
+    OptionInfo size = make_option_info("size", P::Job, T::Size, "WxH of the image", "Image size");
     add(size, [](Options& o, std::string_view v) { parse_size(v, o.job.width, o.job.height); },
         [](const Options& o) { return std::to_string(o.job.width) + "x" + std::to_string(o.job.height); });
 
-    OptionInfo encoding = info("encoding", P::Technique, T::Choice, "the depth in the shadow map", "Depth encoding",
+    OptionInfo encoding = make_option_info("encoding", P::Technique, T::Choice, "the depth in the shadow map", "Depth encoding",
                         {{"r8", "8-bit red (r8)"}, {"rgba", "bit-shift packed RGBA (rgba)"}, {"depthtex", "depth texture (depthtex)"}});
     add(encoding, [](Options& o, std::string_view v) { o.settings.encoding = enum_of(v, shadow::kAllEncodings); },
         [](const Options& o) { return std::string(shadow::to_string(o.settings.encoding)); });
 
-    OptionInfo filter = info("filter", P::Technique, T::Choice, "percentage-closer filtering of the lookup", "Filter",
+    OptionInfo filter = make_option_info("filter", P::Technique, T::Choice, "percentage-closer filtering of the lookup", "Filter",
                       {{"hard", "hard: one tap"}, {"pcf2x2", "2x2 PCF"}, {"pcf4x4", "4x4 PCF"}});
     add(filter, [](Options& o, std::string_view v) { o.settings.filter = enum_of(v, shadow::kAllFilters); },
         [](const Options& o) { return std::string(shadow::to_string(o.settings.filter)); });
 
-    OptionInfo map_size = info("map-size", P::Technique, T::Integer, "shadow map width = height in texels", "Map size");
+    OptionInfo map_size = make_option_info("map-size", P::Technique, T::Integer, "shadow map width = height in texels", "Map size");
     map_size.min = 1;
     map_size.presets = {{"256", "256 x 256"}, {"512", "512 x 512"}, {"1024", "1024 x 1024"}, {"2048", "2048 x 2048"},
                         {"4096", "4096 x 4096"}};
     add(map_size, [](Options& o, std::string_view v) { o.settings.map_size = int_of(v); },
         [](const Options& o) { return std::to_string(o.settings.map_size); });
 
-    OptionInfo bias = info("bias", P::Technique, T::NumberOrWord,
+    OptionInfo bias = make_option_info("bias", P::Technique, T::NumberOrWord,
                     "depth offset, 'default' (r8 0.005, rgba and depthtex 0.0015) or 'auto' (quantum + receiver slope)",
                     "Bias", {{"default", "the encoding's default"}, {"auto", "auto: the encoding's quantum + the surface's slope"}});
     bias.min = 0.0;
@@ -268,7 +268,7 @@ std::vector<Option<Options>> make_table() {
             return s.bias_auto ? std::string("auto") : s.bias ? shortest_float(*s.bias) : "default";
         });
 
-    OptionInfo precision = info("precision", P::Technique, T::Choice,
+    OptionInfo precision = make_option_info("precision", P::Technique, T::Choice,
                          "mediump: emulated fp16 along the depth path, as a phone computes it", "Precision",
                          {{"highp", "highp (float32)"}, {"mediump", "mediump, emulated (fp16, as on a phone)"}});
     add(precision,
@@ -278,22 +278,22 @@ std::vector<Option<Options>> make_table() {
         },
         [](const Options& o) { return std::string(shadow::to_string(o.settings.precision)); });
 
-    OptionInfo aov = info("aov", P::Technique, T::Choice, "what the image shows", "Show",
+    OptionInfo aov = make_option_info("aov", P::Technique, T::Choice, "what the image shows", "Show",
                    {{"color", "colour"}, {"visibility", "visibility (white lit, black shadowed)"},
                     {"light-depth", "the shadow map's depth"}});
     add(aov, [](Options& o, std::string_view v) { o.settings.aov = enum_of(v, kAllAovs); },
         [](const Options& o) { return std::string(to_string(o.settings.aov)); });
 
-    OptionInfo technique = info("technique", P::Technique, T::Choice, "the shadow technique", "Technique",
+    OptionInfo technique = make_option_info("technique", P::Technique, T::Choice, "the shadow technique", "Technique",
                          {{"shadowmap", "shadow map"}, {"planar", "planar projected shadows (stencil)"}, {"none", "no shadows"}});
     add(technique, [](Options& o, std::string_view v) { o.settings.technique = enum_of(v, kAllTechniques); },
         [](const Options& o) { return std::string(to_string(o.settings.technique)); });
 
-    OptionInfo out = info("out", P::Job, T::Text, "FILE.png (top row first); none: write nothing", "Output");
+    OptionInfo out = make_option_info("out", P::Job, T::Text, "FILE.png (top row first); none: write nothing", "Output");
     out.may_be_empty = true;
     add(out, [](Options& o, std::string_view v) { o.job.out = std::string(v); }, [](const Options& o) { return o.job.out; });
 
-    OptionInfo frames = info("frames", P::Job, T::Integer, "render N frames, t advancing 1/60 s, and print the median ms/frame",
+    OptionInfo frames = make_option_info("frames", P::Job, T::Integer, "render N frames, t advancing 1/60 s, and print the median ms/frame",
                       "Frames");
     frames.min = 1;
     add(frames, [](Options& o, std::string_view v) { o.job.frames = int_of(v); },

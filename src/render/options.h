@@ -65,6 +65,10 @@ struct OptionInfo {
     bool may_be_empty = false;              // Text: "" is a value (--out: write nothing)
 };
 
+// An OptionInfo with the fields every option has; range, presets and step are set after.
+OptionInfo make_option_info(std::string_view name, OptionPart part, OptionType type, std::string_view help,
+                            std::string_view label, std::vector<Choice> choices = {});
+
 // An option stored in a `Target` (render::Options here; the exercises' toggles in examples/).
 template <typename Target>
 struct Option {

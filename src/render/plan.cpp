@@ -180,19 +180,24 @@ Pass& PlanContext::add_pass(Pass pass) {
     return plan.passes.back();
 }
 
-Draw PlanContext::object_draw(int object) {
+Draw PlanContext::mesh_draw(int object) const {
     const scene::Object& o = scene.objects[static_cast<size_t>(object)];
     Draw d;
     d.object = object;
     d.label = o.name;
     d.mesh = o.mesh;
-    d.material = o.material;
+    d.world = o.world;
+    return d;
+}
+
+Draw PlanContext::object_draw(int object) {
+    Draw d = mesh_draw(object);
+    d.material = scene.objects[static_cast<size_t>(object)].material;
     for (const ObjectOverride& ov : inputs.objects)
         if (ov.object == object) {
             if (ov.mesh >= 0) d.mesh = ov.mesh;
             if (ov.material >= 0) d.material = ov.material;
         }
-    d.world = o.world;
     const scene::Material& m = material_of(scene, d.material);
     if (m.base_color_texture >= 0 && m.base_color_texture < static_cast<int>(scene.images.size()) &&
         !scene.meshes[static_cast<size_t>(d.mesh)].uvs.empty()) {

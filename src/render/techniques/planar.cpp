@@ -49,10 +49,7 @@ public:
         mark.name = "planar-ground";
         mark.module = "planar";
         mark.target = c.camera_target;
-        mark.state.stencil.enabled = true;
-        mark.state.stencil.func = gl::Compare::Always;
-        mark.state.stencil.ref = kGroundVisible;
-        mark.state.stencil.pass = gl::StencilOp::Replace;
+        mark.state.stencil = gl::stencil_test(gl::Compare::Always, kGroundVisible, gl::StencilOp::Replace);
         mark.bindings = c.lit_bindings();
         const std::uint32_t all = (1u << mark.bindings.size()) - 1u;
         Draw g = c.object_draw(ground);
@@ -70,22 +67,14 @@ public:
         project.state.depth_write = false;
         project.state.color_write = false;
         project.state.cull = gl::Cull::None;
-        project.state.stencil.enabled = true;
-        project.state.stencil.func = gl::Compare::Equal;
-        project.state.stencil.ref = kGroundVisible;
-        project.state.stencil.pass = gl::StencilOp::Incr;
+        project.state.stencil = gl::stencil_test(gl::Compare::Equal, kGroundVisible, gl::StencilOp::Incr);
         project.object_uniforms = ObjectUniforms::Mvp;
         project.view_proj = c.plan.camera.view_proj * shadow::planar_projection(*c.scene.ground_plane, c.light_vector());
         const Variant flat = depth_variant(shadow::Encoding::DepthTex, c.depth_path);
         for (int i : c.casters) {
             if (i == ground) continue;
-            Draw d;
-            d.object = i;
-            d.label = c.scene.objects[static_cast<size_t>(i)].name;
-            d.mesh = c.scene.objects[static_cast<size_t>(i)].mesh;
-            d.world = c.scene.objects[static_cast<size_t>(i)].world;
-            d.variant = flat;
-            project.draws.push_back(std::move(d));
+            project.draws.push_back(c.mesh_draw(i));
+            project.draws.back().variant = flat;
         }
         project.detail = std::to_string(project.draws.size()) + " caster(s) flattened onto the ground, stencil " +
                          std::to_string(kGroundVisible) + " -> " + std::to_string(kInShadow) + ", colour and depth off";
@@ -97,9 +86,7 @@ public:
         shade.target = c.camera_target;
         shade.state.depth_test = false;
         shade.state.depth_write = false;
-        shade.state.stencil.enabled = true;
-        shade.state.stencil.func = gl::Compare::Equal;
-        shade.state.stencil.ref = kInShadow;
+        shade.state.stencil = gl::stencil_test(gl::Compare::Equal, kInShadow);
         shade.bindings = c.lit_bindings();
         LitFeatures f = c.base_features(g);
         f.in_shadow = true;

@@ -92,13 +92,8 @@ public:
         p.view_proj = f.view_proj();
         const Variant v = depth_variant(s.encoding, c.depth_path);
         for (int i : c.casters) {
-            Draw dr;
-            dr.object = i;
-            dr.label = c.scene.objects[static_cast<size_t>(i)].name;
-            dr.mesh = c.scene.objects[static_cast<size_t>(i)].mesh;
-            dr.world = c.scene.objects[static_cast<size_t>(i)].world;
-            dr.variant = v;
-            p.draws.push_back(std::move(dr));
+            p.draws.push_back(c.mesh_draw(i));
+            p.draws.back().variant = v;
         }
         p.detail = std::to_string(size) + "x" + std::to_string(size) + " " + std::string(shadow::to_string(s.encoding)) +
                    ", " + (f.perspective ? "perspective" : "orthographic") + " light, " +

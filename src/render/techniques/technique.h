@@ -67,6 +67,8 @@ struct PlanContext {
     int add_resource(ResourceDesc desc, std::string content, std::string purpose);
     // Appends a pass; a pass into a reused resource is marked skipped.
     Pass& add_pass(Pass pass);
+    // A draw of `object`'s mesh where it stands (no material: for depth-only and stencil passes).
+    Draw mesh_draw(int object) const;
     // A Lit draw of `object`: its mesh and material (after the inputs' overrides), world matrix
     // and base-colour texture (a scene image, or the resource an ImageOverride names).
     Draw object_draw(int object);
