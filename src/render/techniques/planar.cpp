@@ -22,6 +22,16 @@ bool has_ground(const PlanContext& c) {
            std::find(c.drawable.begin(), c.drawable.end(), g) != c.drawable.end();
 }
 
+// A pass of this technique into the camera's target; `overlay` passes neither test nor write depth.
+Pass camera_pass(const PlanContext& c, const char* name, bool overlay) {
+    Pass p;
+    p.name = name;
+    p.module = "planar";
+    p.target = c.camera_target;
+    if (overlay) p.state.depth_test = p.state.depth_write = false;
+    return p;
+}
+
 class PlanarModule : public Module {
 public:
     std::string_view name() const override { return "planar"; }
@@ -45,10 +55,7 @@ public:
         if (!has_ground(c)) return;
         const int ground = c.scene.ground_object;
 
-        Pass mark;
-        mark.name = "planar-ground";
-        mark.module = "planar";
-        mark.target = c.camera_target;
+        Pass mark = camera_pass(c, "planar-ground", false);
         mark.state.stencil = gl::stencil_test(gl::Compare::Always, kGroundVisible, gl::StencilOp::Replace);
         mark.bindings = c.lit_bindings();
         const std::uint32_t all = (1u << mark.bindings.size()) - 1u;
@@ -59,12 +66,7 @@ public:
         mark.detail = "the ground, lit, marking its pixels " + std::to_string(kGroundVisible) + " in the stencil";
         c.add_pass(std::move(mark));
 
-        Pass project;
-        project.name = "planar-stencil";
-        project.module = "planar";
-        project.target = c.camera_target;
-        project.state.depth_test = false;
-        project.state.depth_write = false;
+        Pass project = camera_pass(c, "planar-stencil", true);
         project.state.color_write = false;
         project.state.cull = gl::Cull::None;
         project.state.stencil = gl::stencil_test(gl::Compare::Equal, kGroundVisible, gl::StencilOp::Incr);
@@ -80,12 +82,7 @@ public:
                          std::to_string(kGroundVisible) + " -> " + std::to_string(kInShadow) + ", colour and depth off";
         c.add_pass(std::move(project));
 
-        Pass shade;
-        shade.name = "planar-shadow";
-        shade.module = "planar";
-        shade.target = c.camera_target;
-        shade.state.depth_test = false;
-        shade.state.depth_write = false;
+        Pass shade = camera_pass(c, "planar-shadow", true);
         shade.state.stencil = gl::stencil_test(gl::Compare::Equal, kInShadow);
         shade.bindings = c.lit_bindings();
         LitFeatures f = c.base_features(g);
