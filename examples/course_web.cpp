@@ -135,7 +135,7 @@ const char* penumbra_state() {
     }
     j += "}";
     j += ",\"bias\":" + json_number(static_cast<double>(a.bias()));
-    j += ",\"defaultBias\":" + json_number(static_cast<double>(a.default_bias()));
+    j += ",\"sheetBias\":" + json_number(static_cast<double>(a.sheet_bias()));
     // bias=auto's constant part for the chosen encoding and precision (the page's bias control says it).
     j += ",\"autoBias\":" + json_number(static_cast<double>(shadow::auto_bias_constant(s.encoding, s.precision)));
     j += ",\"mapSize\":" + std::to_string(s.map_size);

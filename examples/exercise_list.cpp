@@ -73,7 +73,9 @@ std::vector<ExerciseInfo> make_list() {
         {Exercise::W09P2c, "w09p2c", "W09P2c: Shadow mapping in the fragment shader",
          "Two passes: the depth seen from the light into a shadow map, then the scene from the camera, each fragment "
          "compared with the map at its light-space position. The map is shown scaled for visualisation in the top "
-         "right corner.",
+         "right corner. The bias starts on auto (the encoding's depth quantum plus the surface's slope): the sheet's "
+         "constants (2^-8 + e = 0.005 for 8 bits, 0.0015 once mediump's 10 bits bound the packed value) leave rings "
+         "of acne on the teapot where the light grazes it. Choose the sheet's bias to see them.",
          "The depth encodings (8-bit red, bit-shift RGBA, depth texture), 4x4 PCF, the bias and the map size, with the "
          "shadow map shown scaled for visualisation.",
          "The teapot on the table, shadowed by a shadow map, with the shadow map in the corner",
@@ -81,6 +83,7 @@ std::vector<ExerciseInfo> make_list() {
          {light, jump, {"encoding", "Shadow map", K::Select},
           {"filter", "Shadow map", K::Checkbox, {"pcf4x4", "hard"}, "4x4 PCF (percentage-closer filtering)"},
           {"bias", "Shadow map", K::Number, {}, {}, "a depth offset"},
+          {"map-faces", "Shadow map", K::Select, {}, {}, "the teapot is open, so auto draws both of its faces"},
           {"precision", "Shadow map", K::Select, {}, {}, "mediump rounds the depth path to 11 bits, as a phone's GPU does"},
           {"map-size", "Shadow map", K::Select},
           {"aov", "View", K::Select, {"color", "visibility"}},

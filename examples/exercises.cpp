@@ -117,7 +117,7 @@ std::string CourseApp::query() const {
 }
 
 float CourseApp::bias() const { return settings_.effective_bias(); }
-float CourseApp::default_bias() const { return shadow::default_bias(settings_.encoding); }
+float CourseApp::sheet_bias() const { return shadow::sheet_bias(settings_.encoding); }
 
 // ---- GL lifetime ----------------------------------------------------------------------------
 
@@ -306,7 +306,7 @@ std::string CourseApp::on_key(int key, bool shift) {
             if (k.option == "encoding") {
                 char buf[64];
                 std::snprintf(buf, sizeof buf, " (bias %.4g, default %.4g)", static_cast<double>(bias()),
-                              static_cast<double>(default_bias()));
+                              static_cast<double>(sheet_bias()));
                 line += buf;
             }
             return line;
@@ -320,11 +320,11 @@ std::string CourseApp::on_key(int key, bool shift) {
         case '[':
         case ']': {
             // From auto, step from the encoding's default (auto's constant alone is far smaller).
-            const double from = static_cast<double>(settings_.bias_auto ? default_bias() : bias());
+            const double from = static_cast<double>(settings_.bias_auto ? sheet_bias() : bias());
             const double b = from * (key == ']' ? 1.5 : 1.0 / 1.5);
             return set("bias", format_number(std::clamp(b, 1e-6, 1.0)));
         }
-        case 'B': return set("bias", "default") + " (" + format_number(static_cast<double>(default_bias())) + ")";
+        case 'B': return set("bias", "sheet") + " (" + format_number(static_cast<double>(sheet_bias())) + ")";
         case 'U': return set("bias", "auto") + " (" + format_number(static_cast<double>(bias())) + " + slope)";
         case 'P': {
             render::Options o;

@@ -52,7 +52,7 @@ public:
     // The bias in use (with bias=auto its constant part, the slope term is added per fragment),
     // and the chosen encoding's default (the sheet's 0.005 / 0.0015).
     float bias() const;
-    float default_bias() const;
+    float sheet_bias() const;
 
     // The GL side's life. create_gl: the context is current and new (first made, or restored
     // after a loss): make the renderer and every GL object. drop_gl: the context is gone; forget

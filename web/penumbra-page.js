@@ -92,16 +92,16 @@
     }
     const bias = document.getElementById('bias');
     if (bias) {
-      // bias=default|auto|a number: the mode's radio, and the number box only for a fixed value
-      // (it shows the encoding's default otherwise, the value a switch to fixed starts from).
-      const mode = o.bias === 'default' || o.bias === 'auto' ? o.bias : 'fixed';
+      // bias=auto|sheet|a number: the mode's radio, and the number box only for a fixed value
+      // (it shows the sheet's constant for the encoding otherwise, the value a switch to fixed starts from).
+      const mode = o.bias === 'sheet' || o.bias === 'auto' ? o.bias : 'fixed';
       for (const r of document.querySelectorAll('input[name="bias-mode"]')) r.checked = r.value === mode;
-      document.getElementById('bias-default-value').textContent = String(+s.defaultBias.toPrecision(6));
+      document.getElementById('bias-sheet-value').textContent = String(+s.sheetBias.toPrecision(6));
       const autoValue = document.getElementById('bias-auto-value');
       if (autoValue) autoValue.textContent = String(+s.autoBias.toPrecision(2));
       bias.disabled = mode !== 'fixed';
       if (document.activeElement !== bias || mode !== 'fixed')
-        bias.value = String(+(mode === 'fixed' ? s.bias : s.defaultBias).toPrecision(6));
+        bias.value = String(+(mode === 'fixed' ? s.bias : s.sheetBias).toPrecision(6));
     }
     const mapSize = document.querySelector('select[data-option="map-size"]');
     if (mapSize) {
@@ -136,7 +136,7 @@
       });
       for (const r of document.querySelectorAll('input[name="bias-mode"]')) {
         r.addEventListener('change', () => {
-          if (r.checked) apply('bias', r.value === 'fixed' ? bias.value || String(state().defaultBias) : r.value);
+          if (r.checked) apply('bias', r.value === 'fixed' ? bias.value || String(state().sheetBias) : r.value);
         });
       }
     }

@@ -16,6 +16,16 @@ std::string_view to_string(Technique t) {
     return "?";
 }
 
+std::string_view to_string(MapFaces f) {
+    switch (f) {
+        case MapFaces::Auto: return "auto";
+        case MapFaces::Front: return "front";
+        case MapFaces::Back: return "back";
+        case MapFaces::Both: return "both";
+    }
+    return "?";
+}
+
 std::string_view to_string(Aov a) {
     switch (a) {
         case Aov::Color: return "color";
@@ -27,7 +37,7 @@ std::string_view to_string(Aov a) {
 
 bool Settings::operator==(const Settings& o) const {
     return technique == o.technique && encoding == o.encoding && filter == o.filter && map_size == o.map_size &&
-           bias == o.bias && bias_auto == o.bias_auto && precision == o.precision && aov == o.aov;
+           bias == o.bias && bias_auto == o.bias_auto && map_faces == o.map_faces && precision == o.precision && aov == o.aov;
 }
 
 bool Job::operator==(const Job& o) const {
@@ -252,21 +262,31 @@ std::vector<Option<Options>> make_table() {
         [](const Options& o) { return std::to_string(o.settings.map_size); });
 
     OptionInfo bias = make_option_info("bias", P::Technique, T::NumberOrWord,
-                    "depth offset, 'default' (r8 0.005, rgba and depthtex 0.0015) or 'auto' (quantum + receiver slope)",
-                    "Bias", {{"default", "the encoding's default"}, {"auto", "auto: the encoding's quantum + the surface's slope"}});
+                    "depth offset: 'auto' (the encoding's quantum + the receiver's slope), 'sheet' (the exercise sheet's constant: r8 0.005, rgba and depthtex 0.0015) or a number",
+                    "Bias", {{"auto", "auto: the encoding's quantum + the surface's slope"}, {"sheet", "the sheet's constant for the encoding"}});
     bias.min = 0.0;
     bias.max = 1.0;
     bias.step = 0.0005;
     add(bias,
         [](Options& o, std::string_view v) {
             o.settings.bias_auto = v == "auto";
-            if (v == "default" || v == "auto") o.settings.bias.reset();
+            if (v == "sheet" || v == "auto") o.settings.bias.reset();
             else o.settings.bias = static_cast<float>(number_of(v));
         },
         [](const Options& o) {
             const Settings& s = o.settings;
-            return s.bias_auto ? std::string("auto") : s.bias ? shortest_float(*s.bias) : "default";
+            return s.bias_auto ? std::string("auto") : s.bias ? shortest_float(*s.bias) : "sheet";
         });
+
+    OptionInfo map_faces = make_option_info("map-faces", P::Technique, T::Choice,
+                         "which faces of each caster go into the shadow map: auto = front faces of closed meshes (the same "
+                         "depths for half the triangles), both faces of open ones", "Faces in the map",
+                         {{"auto", "auto: front faces of closed meshes, both of open ones"},
+                          {"front", "front faces (towards the light)"},
+                          {"back", "back faces (away from the light)"},
+                          {"both", "both faces"}});
+    add(map_faces, [](Options& o, std::string_view v) { o.settings.map_faces = enum_of(v, kAllMapFaces); },
+        [](const Options& o) { return std::string(to_string(o.settings.map_faces)); });
 
     OptionInfo precision = make_option_info("precision", P::Technique, T::Choice,
                          "mediump: emulated fp16 along the depth path, as a phone computes it", "Precision",

@@ -151,6 +151,7 @@ struct Draw {
     std::uint32_t bindings = 0;  // bit i set: the pass's bindings[i] applies to this draw
     int image = -1;              // Lit: the scene image sampled as base colour (-1: none)...
     int image_resource = -1;     // ...or this resource's texture instead (an ImageOverride)
+    std::optional<gl::Cull> cull;  // the pass's state with this face culling instead (a shadow map's faces)
 };
 
 struct Pass {

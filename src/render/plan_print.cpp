@@ -141,7 +141,7 @@ std::string json_pass(const FramePlan& p, const Pass& pass) {
              ",\"texture\":" + (d.image_resource >= 0 ? json_quote(resource_name(p, d.image_resource))
                                 : d.image >= 0       ? json_quote("image " + std::to_string(d.image))
                                                      : std::string("null")) +
-             "}";
+             ",\"cull\":" + json_quote(gl::to_string(d.cull.value_or(pass.state.cull))) + "}";
     }
     std::vector<std::string> reads;
     for (int r : pass.reads()) reads.push_back(resource_name(p, r));
@@ -205,7 +205,8 @@ std::string FramePlan::to_text() const {
         }
         for (const Draw& d : p.draws)
             o << "     draw " << (d.fullscreen ? std::string("full-screen triangle") : d.label) << ": " << d.variant.name()
-              << " with " << binding_names(p, d.bindings) << "\n";
+              << " with " << binding_names(p, d.bindings) << (d.cull ? ", cull " + gl::to_string(*d.cull) : std::string())
+              << "\n";
     }
     for (const auto& n : notes) o << "note: " << n << "\n";
     return o.str();

@@ -149,7 +149,13 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
             device_.bind_texture(t.unit, pool_.texture(plan.resources[static_cast<size_t>(t.resource)].desc.name));
     const gl::Program* program = nullptr;
     std::uint32_t bound = 0;
+    gl::Cull cull = pass.state.cull;
     for (const Draw& d : pass.draws) {
+        if (d.cull.value_or(pass.state.cull) != cull) {
+            gl::PipelineState st = pass.state;
+            st.cull = cull = d.cull.value_or(pass.state.cull);
+            device_.apply(st);
+        }
         const gl::Program& p = shaders_.get(d.variant);
         if (&p != program || d.bindings != bound) {
             device_.use(p);

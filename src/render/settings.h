@@ -17,26 +17,36 @@ enum class Aov {
     Visibility,  // 8-bit grey: 255 where the light reaches the surface seen at the pixel, 0 in shadow
     LightDepth   // the shadow map, depth scaled for viewing
 };
+// Which faces of each caster go into the shadow map.
+enum class MapFaces {
+    Auto,   // the front faces of a closed mesh (scene::Mesh::closed), both faces of an open one
+    Front,  // the faces towards the light (what the sheet draws)
+    Back,   // the faces away from it: a lit surface is compared with its object's far side
+    Both    // every face: open meshes (the teapot's rim, a sheet of paper) cast from either side
+};
+inline constexpr MapFaces kAllMapFaces[] = {MapFaces::Auto, MapFaces::Front, MapFaces::Back, MapFaces::Both};
 inline constexpr Technique kAllTechniques[] = {Technique::ShadowMap, Technique::Planar, Technique::None};
 inline constexpr Aov kAllAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth};
 
 std::string_view to_string(Technique t);
 std::string_view to_string(Aov a);
+std::string_view to_string(MapFaces f);
 
 struct Settings {
     Technique technique = Technique::ShadowMap;
     shadow::Encoding encoding = shadow::Encoding::RGBA;
     shadow::Filter filter = shadow::Filter::Hard;
     int map_size = 1024;
-    std::optional<float> bias;  // absent: the encoding's default (shadow::default_bias)
-    bool bias_auto = false;     // --bias auto: the encoding's quantum plus a receiver slope term
+    std::optional<float> bias;  // a constant offset; absent (and not auto): the sheet's (shadow::sheet_bias)
+    bool bias_auto = true;      // --bias auto (the default): the encoding's quantum plus a receiver slope term
+    MapFaces map_faces = MapFaces::Auto;
     shadow::Precision precision = shadow::Precision::Highp;  // mediump: emulated fp16 depth path
     Aov aov = Aov::Color;
 
-    // The constant bias: the chosen one, the encoding's default, or with bias_auto the quantum part.
+    // The constant bias: with bias_auto the quantum part, else the chosen one or the sheet's.
     float effective_bias() const {
         if (bias_auto) return shadow::auto_bias_constant(encoding, precision);
-        return bias ? *bias : shadow::default_bias(encoding);
+        return bias ? *bias : shadow::sheet_bias(encoding);
     }
     bool operator==(const Settings& o) const;
     bool operator!=(const Settings& o) const { return !(*this == o); }

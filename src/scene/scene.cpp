@@ -1,6 +1,45 @@
 #include "scene/scene.h"
 
+#include <cmath>
+#include <map>
+#include <tuple>
+#include <unordered_map>
+
 namespace penumbra::scene {
+
+bool is_closed(const Mesh& mesh) {
+    if (mesh.indices.size() < 12 || mesh.indices.size() % 3 != 0) return false;  // fewer than 4 triangles
+    const Bounds b = mesh_bounds(mesh);
+    const float size = glm::length(b.max - b.min);
+    if (!(size > 0.0f) || !std::isfinite(size)) return false;
+    const float cell = 1e-6f * size;
+    // Weld: one id per rounded position.
+    std::map<std::tuple<long long, long long, long long>, std::uint32_t> ids;
+    std::vector<std::uint32_t> weld(mesh.positions.size());
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+        const glm::vec3 q = glm::round(mesh.positions[i] / cell);
+        const auto key = std::make_tuple(static_cast<long long>(q.x), static_cast<long long>(q.y), static_cast<long long>(q.z));
+        weld[i] = ids.emplace(key, static_cast<std::uint32_t>(ids.size())).first->second;
+    }
+    // Each directed edge once; its reverse once.
+    std::unordered_map<std::uint64_t, int> edges;
+    const auto key = [](std::uint32_t from, std::uint32_t to) { return (static_cast<std::uint64_t>(from) << 32) | to; };
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        std::uint32_t v[3];
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t i = mesh.indices[t + static_cast<size_t>(k)];
+            if (i >= weld.size()) return false;
+            v[k] = weld[i];
+        }
+        if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) continue;
+        for (int k = 0; k < 3; ++k)
+            if (++edges[key(v[k], v[(k + 1) % 3])] > 1) return false;  // an edge run twice the same way
+    }
+    if (edges.empty()) return false;
+    for (const auto& [e, n] : edges)
+        if (!edges.count(key(static_cast<std::uint32_t>(e & 0xffffffffu), static_cast<std::uint32_t>(e >> 32)))) return false;
+    return true;
+}
 
 Bounds mesh_bounds(const Mesh& mesh) {
     Bounds b;

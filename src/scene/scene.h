@@ -19,7 +19,15 @@ struct Mesh {
     std::vector<glm::vec3> normals;
     std::vector<glm::vec2> uvs;
     std::vector<std::uint32_t> indices;  // three per triangle
+    // A closed surface (is_closed below): seen from any light, its nearest surface is a front face,
+    // so a shadow map may take the front faces alone instead of both sides. Set where the mesh is made.
+    bool closed = false;
 };
+
+// Whether the triangles enclose a volume: with positions welded (within 1e-6 of the mesh's size,
+// so a sphere's duplicated seam counts as one edge), every edge is shared by exactly two triangles
+// that run it in opposite directions (consistent winding). Degenerate triangles are ignored.
+bool is_closed(const Mesh& mesh);
 
 // 8-bit RGBA image, rows stored top row first.
 struct Image {

@@ -26,7 +26,7 @@ std::string_view to_string(Filter f) {
 std::string_view to_string(Precision p) { return p == Precision::Highp ? "highp" : "mediump"; }
 std::string_view to_string(UnormRounding r) { return r == UnormRounding::Round ? "round" : "floor"; }
 
-float default_bias(Encoding e) {
+float sheet_bias(Encoding e) {
     switch (e) {
         case Encoding::R8: return 0.005f;
         case Encoding::RGBA: return 0.0015f;

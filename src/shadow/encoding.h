@@ -31,7 +31,7 @@ std::string_view to_string(Filter f);
 // The sheet's thresholds: 8 bits -> 2^-8 + e = 0.005; bit-shift packing read under mediump,
 // whose 10-bit mantissa bounds the unpacked value -> 2^-10 + e = 0.0015. The depth texture is
 // 24-bit but the comparison still happens in the fragment shader's float: same bound as rgba.
-float default_bias(Encoding e);
+float sheet_bias(Encoding e);
 
 // Largest depth that packs without wrapping: 1 - 2^-24 (fract(1.0 * 256^i) would be 0), and
 // under mediump the largest half below 1, 1 - 2^-11.

@@ -7,6 +7,9 @@ this script (deterministic output, standard library only; the Builder comes from
                      shadows, no grazing angles, one contact edge.
   bench_medium.gltf  a bench on four thin legs and a row of posts under a spot light about 30 degrees up:
                      long thin shadows, four contacts, a slab's shadow.
+  bench_curved.gltf  two spheres and two tori (one standing, one lying) on a ground under a spot light
+                     about 40 degrees up: smooth closed surfaces, where self-shadow acne rings the
+                     terminator unless the map takes their back faces or the bias follows the slope.
   bench_hard.gltf    a fine grille (bars 4 cm wide, 8 cm apart, along the light) 0.8 above the ground,
                      a staircase and a leaning plank, lit by a point light about 20 degrees up: slits a
                      few texels wide at small maps, grazing light on the ground (acne), many contacts
@@ -201,7 +204,43 @@ def hard():
             {"translation": [-6.5, 2.3, 1.1]})
 
 
+def torus(major, minor, segments=64, sides=32):
+    """A torus around the y axis, counter-clockwise from outside, the seam vertices duplicated."""
+    pos, nrm, idx = [], [], []
+    for i in range(segments + 1):
+        u = 2.0 * math.pi * i / segments
+        for j in range(sides + 1):
+            v = 2.0 * math.pi * j / sides
+            n = (math.cos(v) * math.cos(u), math.sin(v), math.cos(v) * math.sin(u))
+            nrm.append(n)
+            pos.append(((major + minor * math.cos(v)) * math.cos(u), minor * math.sin(v),
+                        (major + minor * math.cos(v)) * math.sin(u)))
+    row = sides + 1
+    for i in range(segments):
+        for j in range(sides):
+            a, b = i * row + j, (i + 1) * row + j
+            idx += [a, a + 1, b, a + 1, b + 1, b]
+    return pos, nrm, idx
+
+
+def curved():
+    s = Scene()
+    grey, red, gold, teal = (s.material("grey", (0.7, 0.7, 0.7)), s.material("red", (0.8, 0.25, 0.2)),
+                             s.material("gold", (0.85, 0.65, 0.25)), s.material("teal", (0.2, 0.6, 0.6)))
+    s.mesh("ground", ground(10.0), grey)
+    s.mesh("big sphere", uv_sphere(0.9, 64, 32), red, translation=[-1.3, 0.9, 0.2])
+    s.mesh("small sphere", uv_sphere(0.45, 48, 24), teal, translation=[0.4, 0.45, 1.3])
+    s.mesh("lying torus", torus(0.7, 0.22), gold, translation=[1.2, 0.22, -0.6])
+    s.mesh("standing torus", torus(0.6, 0.18), teal, translation=[-0.2, 0.78, -1.5],
+           rotation=quat_axis_angle((1, 0, 0), 90.0))
+    s.write("bench_curved.gltf", (0.8, 3.6, 6.5), (0.0, 0.4, -0.2),
+            {"name": "spot", "type": "spot", "color": [1.0, 0.95, 0.85], "intensity": 50.0,
+             "spot": {"innerConeAngle": 0.5, "outerConeAngle": 0.75}},
+            {"translation": [4.0, 4.0, 2.5], "rotation": look_at_rotation((4.0, 4.0, 2.5), (-0.3, 0.3, -0.3))})
+
+
 def main():
+    curved()
     easy()
     medium()
     hard()

@@ -20,7 +20,7 @@ expect "unknown value 'w10'" --exercise w10
 expect "unknown value 'maybe' (on, off)" --light maybe
 expect "unknown value 'r16'" --encoding r16
 expect "unknown value 'lowp'" --precision lowp
-expect "or 'default', 'auto'" --bias often
+expect "or 'auto', 'sheet'" --bias often
 expect "must end in .png" --frames 3 --screenshot "$out/x.jpg"
 expect "needs --frames" --screenshot "$out/x.png"
 expect "width and height must be at least 1" --size 0x10

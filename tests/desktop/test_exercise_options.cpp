@@ -13,7 +13,7 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
     EXPECT_EQ(CourseApp(Exercise::W09P2a).query(), "light=on&jump=on&projection=persp");
     EXPECT_EQ(CourseApp(Exercise::W09P2b).query(), "light=on&jump=on&fbo-view=light&map-size=1024");
     EXPECT_EQ(CourseApp(Exercise::W09P2c).query(),
-              "light=on&jump=on&encoding=rgba&filter=hard&bias=default&precision=highp&map-size=1024&aov=color&"
+              "light=on&jump=on&encoding=rgba&filter=hard&bias=auto&map-faces=auto&precision=highp&map-size=1024&aov=color&"
               "map-view=on");
 }
 
@@ -50,12 +50,12 @@ TEST(ExerciseOptions, BiasAutoAndPrecisionReadBack) {
     // auto's constant part: the encoding's quantum for the precision (the slope term is per fragment).
     EXPECT_FLOAT_EQ(a.bias(), penumbra::shadow::auto_bias_constant(penumbra::shadow::Encoding::RGBA,
                                                                    penumbra::shadow::Precision::Mediump));
-    // A fixed value leaves auto; default leaves it too.
+    // A fixed value leaves auto; the sheet's constant leaves it too.
     ASSERT_EQ(a.set_option("bias", "0.002"), "");
     EXPECT_FALSE(a.settings().bias_auto);
     EXPECT_NE(a.query().find("bias=0.002&"), std::string::npos) << a.query();
     ASSERT_EQ(a.set_option("bias", "auto"), "");
-    ASSERT_EQ(a.set_option("bias", "default"), "");
+    ASSERT_EQ(a.set_option("bias", "sheet"), "");
     EXPECT_FALSE(a.settings().bias_auto);
     EXPECT_FALSE(a.settings().bias.has_value());
     // Other pages keep a changed precision in their URL too, though they show no control for it.
@@ -128,7 +128,7 @@ TEST(ExerciseOptions, Keys) {
     EXPECT_EQ(a.on_key('U', false).rfind("bias = auto", 0), 0u);
     EXPECT_TRUE(a.settings().bias_auto);
     EXPECT_NE(a.query().find("bias=auto"), std::string::npos) << a.query();
-    a.on_key(']', false);  // from auto, a step from the encoding's default (r8: 0.005)
+    a.on_key(']', false);  // from auto, a step from the sheet's constant (r8: 0.005)
     EXPECT_FALSE(a.settings().bias_auto);
     EXPECT_NEAR(a.bias(), 0.0075f, 1e-6f);
     a.on_key('U', false);

@@ -85,7 +85,7 @@ TEST_F(Extremes, GrazingLightTwoToEightDegrees) {
         const auto sc = scene::make_box_on_plane(elevation);
         const std::string label = "grazing " + std::to_string(static_cast<int>(elevation)) + " deg";
         EXPECT_LT(run(sc, settings(), (label + ", auto").c_str()).error_pct, 0.5) << label;
-        EXPECT_LT(run(sc, settings("default"), (label + ", default").c_str()).error_pct, 0.5) << label;
+        EXPECT_LT(run(sc, settings("sheet"), (label + ", sheet").c_str()).error_pct, 0.5) << label;
     }
 }
 

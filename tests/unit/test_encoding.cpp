@@ -51,11 +51,11 @@ TEST(Encoding, R8KeepsEightBits) {
     // Rounding to the nearest of 255 steps: error at most half a step, and the sheet's bias
     // 0.005 covers a whole step 2^-8 plus an epsilon.
     EXPECT_LE(worst, 0.5f / 255.0f + 1e-7f);
-    EXPECT_GT(default_bias(Encoding::R8), 1.0f / 256.0f);
+    EXPECT_GT(sheet_bias(Encoding::R8), 1.0f / 256.0f);
 }
 
 TEST(Encoding, DefaultBiasesFollowTheSheet) {
-    EXPECT_FLOAT_EQ(default_bias(Encoding::R8), 0.005f);
-    EXPECT_FLOAT_EQ(default_bias(Encoding::RGBA), 0.0015f);
-    EXPECT_GT(default_bias(Encoding::RGBA), 1.0f / 1024.0f);  // mediump's 10 bits
+    EXPECT_FLOAT_EQ(sheet_bias(Encoding::R8), 0.005f);
+    EXPECT_FLOAT_EQ(sheet_bias(Encoding::RGBA), 0.0015f);
+    EXPECT_GT(sheet_bias(Encoding::RGBA), 1.0f / 1024.0f);  // mediump's 10 bits
 }

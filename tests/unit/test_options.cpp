@@ -31,6 +31,7 @@ TEST(Options, EveryOptionRoundTrips) {
     o.settings.filter = Filter::PCF2x2;
     o.settings.map_size = 2048;
     o.settings.bias = 0.0023f;
+    o.settings.bias_auto = false;
     o.settings.precision = penumbra::shadow::Precision::Mediump;
     o.settings.aov = Aov::LightDepth;
     o.settings.technique = Technique::Planar;
@@ -41,7 +42,7 @@ TEST(Options, EveryOptionRoundTrips) {
     ASSERT_EQ(pairs.size(), option_table().size());
     for (size_t i = 0; i < pairs.size(); ++i) EXPECT_EQ(pairs[i].first, option_table()[i].info.name);
     EXPECT_EQ(parse_all(pairs), o);
-    // The defaults round-trip too, the absent bias as "default".
+    // The defaults round-trip too, auto and the absent fixed bias.
     EXPECT_EQ(parse_all(to_pairs(Options{})), Options{});
 }
 
@@ -89,13 +90,18 @@ TEST(Options, AutoBiasRoundTripsAndReplacesAFixedOne) {
     EXPECT_NE(std::find(pairs.begin(), pairs.end(), std::pair<std::string, std::string>{"bias", "0.003"}), pairs.end());
 }
 
-TEST(Options, DefaultsAreTheSheets) {
+TEST(Options, DefaultsAreAutoBiasWithTheSheetsConstantsOneChoiceAway) {
     const Options o;
     EXPECT_EQ(o.job.scene, "teapot");
     EXPECT_EQ(o.settings.technique, Technique::ShadowMap);
     EXPECT_EQ(o.settings.map_size, 1024);
-    EXPECT_FLOAT_EQ(o.settings.effective_bias(), 0.0015f);  // rgba
-    Settings r8 = o.settings;
+    EXPECT_TRUE(o.settings.bias_auto);
+    EXPECT_FLOAT_EQ(o.settings.effective_bias(), auto_bias_constant(Encoding::RGBA, penumbra::shadow::Precision::Highp));
+    Settings sheet = o.settings;
+    ASSERT_EQ(parse_option(sheet, "bias", "sheet"), "");
+    EXPECT_FALSE(sheet.bias_auto);
+    EXPECT_FLOAT_EQ(sheet.effective_bias(), 0.0015f);  // rgba
+    Settings r8 = sheet;
     r8.encoding = Encoding::R8;
     EXPECT_FLOAT_EQ(r8.effective_bias(), 0.005f);
     r8.bias = 0.01f;
@@ -119,7 +125,7 @@ TEST(Options, BadValuesAreNamedAndLeaveTheOptionsAlone) {
         {"time", "nan", "--time: not a number: 'nan'"},
         {"time", "1s", "--time: not a number: '1s'"},
         {"precision", "lowp", "--precision: unknown value 'lowp' (highp, mediump)"},
-        {"bias", "slope", "--bias: not a number: 'slope' (or 'default', 'auto')"},
+        {"bias", "slope", "--bias: not a number: 'slope' (or 'auto', 'sheet')"},
         {"bias", "2", "--bias: must lie in [0, 1], got '2'"},
         {"frames", "0", "--frames: must be at least 1, got '0'"},
         {"aov", "normal", "--aov: unknown value 'normal' (color, visibility, light-depth)"},
@@ -138,17 +144,17 @@ TEST(Options, ArgsLabelTheResult) {
     Options o;
     o.settings.encoding = Encoding::R8;
     EXPECT_EQ(to_args(o),
-              "--scene teapot --time 0 --size 512x512 --encoding r8 --filter hard --map-size 1024 --bias default "
+              "--scene teapot --time 0 --size 512x512 --encoding r8 --filter hard --map-size 1024 --bias auto --map-faces auto "
               "--precision highp --aov color --technique shadowmap --frames 1");
     EXPECT_EQ(to_args(o.settings),
-              "--encoding r8 --filter hard --map-size 1024 --bias default --precision highp --aov color "
+              "--encoding r8 --filter hard --map-size 1024 --bias auto --map-faces auto --precision highp --aov color "
               "--technique shadowmap");
 }
 
 TEST(Options, AcceptedValuesAndListsComeFromTheTable) {
     EXPECT_EQ(accepted_values(option_info("encoding")), "r8, rgba, depthtex");
     EXPECT_EQ(accepted_values(option_info("map-size")), "a whole number >= 1");
-    EXPECT_EQ(accepted_values(option_info("bias")), "a number in [0, 1], or default, auto");
+    EXPECT_EQ(accepted_values(option_info("bias")), "a number in [0, 1], or auto, sheet");
     std::vector<std::string> out;
     EXPECT_EQ(parse_list(option_info("filter"), "hard,pcf4x4", out), "");
     EXPECT_EQ(out, (std::vector<std::string>{"hard", "pcf4x4"}));

@@ -77,7 +77,7 @@ TEST_F(PlanTest, TheShadowMapIsAPassIntoAResourceTheCameraPassReads) {
             EXPECT_EQ(std::get<glm::vec2>(u.value), glm::vec2(1.0f / 1024.0f));
         }
         if (u.name == "u_bias") {
-            EXPECT_FLOAT_EQ(std::get<float>(u.value), 0.0015f);
+            EXPECT_FLOAT_EQ(std::get<float>(u.value), shadow::auto_bias_constant(s.encoding, s.precision));
         }
     }
     ASSERT_TRUE(p.light_frustum);
@@ -228,7 +228,8 @@ TEST_F(PlanTest, ThePlanPrintsAsJsonWithEveryPassAndResource) {
     const auto j = nlohmann::json::parse(make().to_json());
     EXPECT_EQ(j["passes"][0]["target"]["resource"], "shadow-map");
     EXPECT_EQ(j["passes"][1]["reads"][0], "shadow-map");
-    EXPECT_FLOAT_EQ(static_cast<float>(j["passes"][1]["bindings"][1]["uniforms"]["u_bias"].get<double>()), 0.0015f);
+    EXPECT_FLOAT_EQ(static_cast<float>(j["passes"][1]["bindings"][1]["uniforms"]["u_bias"].get<double>()),
+                    shadow::auto_bias_constant(s.encoding, s.precision));
 }
 
 TEST(PcfKernel, TheShaderAndTheCpuMirrorShareTheTaps) {

@@ -67,7 +67,7 @@ TEST(Precision, RgbaMediumpIsBoundedByTheSheetsTenBits) {
         // is below the sheet's 2^-10 and so below its 0.0015.
         EXPECT_LE(w.error, depth_quantum(Encoding::RGBA, Precision::Mediump)) << "worst at " << w.at;
         EXPECT_GT(w.error, 1.0f / 65536.0f) << "mediump must lose bits, or the emulation is not on";
-        EXPECT_LT(w.error + 1.0f / 4096.0f, default_bias(Encoding::RGBA));
+        EXPECT_LT(w.error + 1.0f / 4096.0f, sheet_bias(Encoding::RGBA));
     }
 }
 
@@ -103,8 +103,8 @@ TEST(Precision, QuantaAndAutoBiasConstants) {
     EXPECT_FLOAT_EQ(depth_quantum(Encoding::RGBA, Precision::Mediump), 1.0f / 2048.0f);
     EXPECT_FLOAT_EQ(depth_quantum(Encoding::DepthTex, Precision::Highp), kQ24);
     // The sheet's thresholds sit above the quanta: 2^-8 + e = 0.005 and 2^-10 + e = 0.0015.
-    EXPECT_GT(default_bias(Encoding::R8), 2.0f * depth_quantum(Encoding::R8, Precision::Highp));
-    EXPECT_GT(default_bias(Encoding::RGBA), 2.0f * depth_quantum(Encoding::RGBA, Precision::Mediump));
+    EXPECT_GT(sheet_bias(Encoding::R8), 2.0f * depth_quantum(Encoding::R8, Precision::Highp));
+    EXPECT_GT(sheet_bias(Encoding::RGBA), 2.0f * depth_quantum(Encoding::RGBA, Precision::Mediump));
     for (auto e : kAllEncodings)
         for (auto p : {Precision::Highp, Precision::Mediump})
             EXPECT_GT(auto_bias_constant(e, p), depth_quantum(e, p));

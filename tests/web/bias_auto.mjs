@@ -38,15 +38,15 @@ await runTest('web.bias_auto', async ({ server, browser }) => {
   check(teapot > 5000, `the teapot covers only ${teapot} pixels in the colour view`);
   await page.selectOption('#aov', 'visibility');
 
-  // The default, then auto, through the bias radios.
-  check(await page.isChecked('#bias-default'), 'the bias does not start at the encoding\'s default');
-  check(await page.isDisabled('#bias'), 'the number box is enabled with the default bias');
+  // The sheet's constant, then auto (the page's default), through the bias radios.
+  check(await page.isChecked('#bias-auto'), 'the bias does not start on auto');
+  check(await page.isDisabled('#bias'), 'the number box is enabled with the auto bias');
   const label = await page.textContent('label:has(#bias-auto)');
   check(/quantum/.test(label) && /slope/.test(label), `the auto choice does not say what it does: '${label}'`);
   const results = {};
   for (const filter of ['hard', 'pcf4x4']) {
     await page.setChecked('#filter', filter === 'pcf4x4');
-    await page.check('#bias-default');
+    await page.check('#bias-sheet');
     const byDefault = await frameAt(page, T);
     await page.check('#bias-auto');
     const s = await page.evaluate(() => window.penumbra.state());
@@ -58,12 +58,12 @@ await runTest('web.bias_auto', async ({ server, browser }) => {
     const auto = await frameAt(page, T);
     const c = teapotCounts(byDefault, auto, mask);
     results[filter] = c;
-    console.log(`${filter}: of ${teapot} teapot pixels, ${c.darkA} dark with the default bias ${s.defaultBias}, ` +
+    console.log(`${filter}: of ${teapot} teapot pixels, ${c.darkA} dark with the sheet's bias ${s.sheetBias}, ` +
                 `${c.darkB} with auto (constant ${s.autoBias} + slope); auto lights ${c.aOnly}, darkens ${c.bOnly}`);
   }
   for (const [filter, c] of Object.entries(results)) {
     check(c.darkB < 0.85 * c.darkA, `${filter}: auto leaves ${c.darkB} of the ${c.darkA} dark teapot pixels`);
-    check(c.aOnly > 500, `${filter}: auto lights only ${c.aOnly} teapot pixels the default bias shadows`);
+    check(c.aOnly > 500, `${filter}: auto lights only ${c.aOnly} teapot pixels the sheet's bias shadows`);
     check(c.bOnly * 10 < c.aOnly, `${filter}: auto darkens ${c.bOnly} teapot pixels (lights ${c.aOnly})`);
   }
   check(problems.length === 0, problems.join('; '));

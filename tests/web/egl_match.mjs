@@ -18,9 +18,9 @@ const LEVELS = 16;
 const MAX_FRACTION = 0.005;
 
 const CASES = [
-  { name: 'w09p2c-rgba-hard', page: 'w09p2c', query: 'map-view=off&encoding=rgba&filter=hard&bias=default',
+  { name: 'w09p2c-rgba-hard', page: 'w09p2c', query: 'map-view=off&encoding=rgba&filter=hard&bias=sheet',
     args: ['--encoding', 'rgba', '--filter', 'hard'] },
-  { name: 'w09p2c-r8-pcf4x4', page: 'w09p2c', query: 'map-view=off&encoding=r8&filter=pcf4x4&bias=default',
+  { name: 'w09p2c-r8-pcf4x4', page: 'w09p2c', query: 'map-view=off&encoding=r8&filter=pcf4x4&bias=sheet',
     args: ['--encoding', 'r8', '--filter', 'pcf4x4'] },
   { name: 'w09p2c-depthtex-visibility', page: 'w09p2c', query: 'map-view=off&encoding=depthtex&filter=hard&aov=visibility',
     args: ['--encoding', 'depthtex', '--filter', 'hard', '--aov', 'visibility'] },

@@ -21,19 +21,19 @@ await runTest('web.encoding', async ({ server, browser }) => {
   const { page, problems } = await openPage(browser, `${server.url}/w09p2c.html?map-view=off&filter=hard`);
   await page.selectOption('#aov', 'visibility');
   await page.selectOption('#encoding', 'rgba');
-  check((await page.textContent('#bias-default-value')) === '0.0015', 'the RGBA default bias shown is not 0.0015');
+  check((await page.textContent('#bias-sheet-value')) === '0.0015', 'the RGBA default bias shown is not 0.0015');
   await page.check('#bias-fixed');
   await page.fill('#bias', '0.0015');
   await page.dispatchEvent('#bias', 'change');
   const rgba = await frameAt(page, T);
 
   await page.selectOption('#encoding', 'r8');
-  check((await page.textContent('#bias-default-value')) === '0.005', 'the 8-bit default bias shown is not 0.005');
+  check((await page.textContent('#bias-sheet-value')) === '0.005', 'the 8-bit default bias shown is not 0.005');
   const s = await page.evaluate(() => window.penumbra.state());
   check(Math.abs(s.bias - 0.0015) < 1e-6 && s.options.encoding === 'r8', `expected r8 at bias 0.0015: ${JSON.stringify(s.options)}`);
   const r8 = await frameAt(page, T);
 
-  await page.check('#bias-default');
+  await page.check('#bias-sheet');
   const r8Default = await frameAt(page, T);
 
   const same = shadowedOnlyInFirst(r8, rgba);

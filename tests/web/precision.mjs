@@ -41,8 +41,8 @@ await runTest('web.precision', async ({ server, browser }) => {
   // The page's controls: encoding, bias mode (the encoding's default or a fixed value) and precision.
   async function frame(encoding, bias, precision) {
     await page.selectOption('#encoding', encoding);
-    if (bias === 'default') {
-      await page.check('#bias-default');
+    if (bias === 'sheet') {
+      await page.check('#bias-sheet');
     } else {
       await page.check('#bias-fixed');
       await page.fill('#bias', bias);
@@ -58,8 +58,8 @@ await runTest('web.precision', async ({ server, browser }) => {
   const n = 512 * 512;
   const pct = (k) => `${(100 * k / n).toFixed(2)}%`;
   const small = { highp: await frame('rgba', '0.0002', 'highp'), mediump: await frame('rgba', '0.0002', 'mediump') };
-  const sheet = { highp: await frame('rgba', 'default', 'highp'), mediump: await frame('rgba', 'default', 'mediump') };
-  const r8 = { highp: await frame('r8', 'default', 'highp'), mediump: await frame('r8', 'default', 'mediump') };
+  const sheet = { highp: await frame('rgba', 'sheet', 'highp'), mediump: await frame('rgba', 'sheet', 'mediump') };
+  const r8 = { highp: await frame('r8', 'sheet', 'highp'), mediump: await frame('r8', 'sheet', 'mediump') };
   const step = {
     highp3: await frame('rgba', '0.0003', 'highp'), highp7: await frame('rgba', '0.0007', 'highp'),
     mediump3: await frame('rgba', '0.0003', 'mediump'), mediump7: await frame('rgba', '0.0007', 'mediump'),

@@ -30,7 +30,7 @@ await runTest('web.url', async ({ server, browser }) => {
     for (const [k, v] of Object.entries(want)) check(s.options[k] === v, `after reload ${k} = ${s.options[k]}, not ${v}`);
     check((await page.inputValue('#encoding')) === 'r8', 'the encoding select lost r8');
     check(await page.isChecked('#filter'), 'the PCF box lost its tick');
-    check(!(await page.isChecked('#bias-default')) && (await page.inputValue('#bias')) === '0.003', 'the bias field lost 0.003');
+    check(!(await page.isChecked('#bias-auto')) && (await page.inputValue('#bias')) === '0.003', 'the bias field lost 0.003');
     check((await page.inputValue('#map-size')) === '2048', 'the map size select lost 2048');
     check((await page.inputValue('#aov')) === 'visibility', 'the view select lost visibility');
     check(!(await page.isChecked('#map-view')), 'the shadow map view box came back ticked');
@@ -39,25 +39,26 @@ await runTest('web.url', async ({ server, browser }) => {
     console.log(`w09p2c: ${page.url()} restored`);
   }
   {
-    // bias=auto and precision=mediump, chosen with the keyboard: the bias radios move with the
+    // bias=sheet and precision=mediump, chosen with the keyboard: the bias radios move with the
     // arrow keys, the precision select with the arrow keys once focused.
     const { page, problems } = await openPage(browser, `${server.url}/w09p2c.html`);
-    check(await page.isChecked('#bias-default'), 'w09p2c: the bias does not start at the default');
-    await page.focus('#bias-default');
+    check(await page.isChecked('#bias-auto'), 'w09p2c: the bias does not start on auto');
+    check(/slope/.test(await page.textContent('label:has(#bias-auto)')), 'w09p2c: the auto choice does not mention the slope');
+    await page.focus('#bias-auto');
     await page.keyboard.press('ArrowDown');
-    check(await page.isChecked('#bias-auto'), 'w09p2c: ArrowDown from the default radio did not choose auto');
+    check(await page.isChecked('#bias-sheet'), "w09p2c: ArrowDown from the auto radio did not choose the sheet's constant");
     await page.focus('#precision');
     await page.keyboard.press('ArrowDown');
     check((await page.inputValue('#precision')) === 'mediump', 'w09p2c: ArrowDown on the precision select did not pick mediump');
     const params = new URL(page.url()).searchParams;
-    check(params.get('bias') === 'auto' && params.get('precision') === 'mediump', `w09p2c: URL ${page.url()}`);
+    check(params.get('bias') === 'sheet' && params.get('precision') === 'mediump', `w09p2c: URL ${page.url()}`);
     let s = await reloadAndRead(page);
-    check(s.options.bias === 'auto' && s.options.precision === 'mediump', `w09p2c: ${JSON.stringify(s.options)} after reload`);
-    check(await page.isChecked('#bias-auto') && !(await page.isChecked('#bias-default')), 'w09p2c: the auto radio lost its check');
-    check(await page.isDisabled('#bias'), 'w09p2c: the number box is enabled with bias=auto');
+    check(s.options.bias === 'sheet' && s.options.precision === 'mediump', `w09p2c: ${JSON.stringify(s.options)} after reload`);
+    check(await page.isChecked('#bias-sheet') && !(await page.isChecked('#bias-auto')), 'w09p2c: the sheet radio lost its check');
+    check(await page.isDisabled('#bias'), "w09p2c: the number box is enabled with the sheet's bias");
     check((await page.inputValue('#precision')) === 'mediump', 'w09p2c: the precision select lost mediump');
-    check(/slope/.test(await page.textContent('label:has(#bias-auto)')), 'w09p2c: the auto choice does not mention the slope');
-    // A fixed value from the auto mode: the box starts from the encoding's default and is kept.
+    check((await page.inputValue('#bias')) === '0.0015', `w09p2c: the number box shows ${await page.inputValue('#bias')}, not the sheet's 0.0015`);
+    // A fixed value from the sheet mode: the box starts from the sheet's constant and is kept.
     await page.check('#bias-fixed');
     check(!(await page.isDisabled('#bias')), 'w09p2c: the number box stays disabled for a fixed bias');
     await page.fill('#bias', '0.002');

@@ -29,7 +29,7 @@ struct Row {
     float elevation = 0.0f;
     shadow::Encoding encoding = shadow::Encoding::RGBA;
     shadow::Precision precision = shadow::Precision::Highp;
-    std::string bias_label;  // a number, "default" or "auto"
+    std::string bias_label;  // a number, "sheet" or "auto"
     float bias = 0.0f;       // the constant part that was used
     measure::Score score;
 };
@@ -98,7 +98,7 @@ void write_chart(const std::string& path, const std::string& title, const std::v
         const char* c = colours[k % 8];
         std::string acne, peter;
         for (const auto& r : rows) {
-            if (r.elevation != elevations[k] || r.bias_label == "auto" || r.bias_label == "default") continue;
+            if (r.elevation != elevations[k] || r.bias_label == "auto" || r.bias_label == "sheet") continue;
             acne += fmt(X(r.bias)) + "," + fmt(Y(r.score.false_shadow_pct)) + " ";
             peter += fmt(X(r.bias)) + "," + fmt(Y(r.score.false_lit_pct)) + " ";
         }
@@ -139,10 +139,10 @@ int run_bias_sweep(const BiasSweepOptions& o) {
     const std::vector<std::string> scenes = {"box-on-plane", "course"};
     const std::vector<float> elevations =
         o.quick ? std::vector<float>{10, 30, 60} : std::vector<float>{2, 5, 10, 20, 30, 45, 60, 90};
-    std::vector<std::string> biases = o.quick ? std::vector<std::string>{"0.0001", "0.0015", "0.005", "default", "auto"}
+    std::vector<std::string> biases = o.quick ? std::vector<std::string>{"0.0001", "0.0015", "0.005", "sheet", "auto"}
                                               : std::vector<std::string>{"1e-05", "3e-05", "0.0001", "0.0003",
                                                                          "0.001", "0.0015", "0.003", "0.005", "0.01",
-                                                                         "0.02", "0.05", "default", "auto"};
+                                                                         "0.02", "0.05", "sheet", "auto"};
     const shadow::Precision precisions[] = {shadow::Precision::Highp, shadow::Precision::Mediump};
 
     std::vector<Row> rows;
@@ -217,12 +217,12 @@ int run_bias_sweep(const BiasSweepOptions& o) {
            << o.size << "x" << o.size << ", map " << o.map_size << ". Regenerate: `build/penumbra bias-sweep"
            << (o.quick ? " --quick" : "") << "`.\n\n";
         for (const auto& name : scenes) {
-            md << "## " << name << "\n\n| elevation | encoding | precision | default: acne | default: peter-panning | "
+            md << "## " << name << "\n\n| elevation | encoding | precision | sheet: acne | sheet: peter-panning | "
                   "auto: acne | auto: peter-panning |\n|---|---|---|---|---|---|---|\n";
             for (float el : elevations)
                 for (auto e : shadow::kAllEncodings)
                     for (auto p : precisions) {
-                        const Row* d = find[key(name, el, e, p, "default")];
+                        const Row* d = find[key(name, el, e, p, "sheet")];
                         const Row* a = find[key(name, el, e, p, "auto")];
                         if (!d || !a) continue;
                         md << "| " << el << "&#176; | " << shadow::to_string(e) << " | " << shadow::to_string(p) << " | "

@@ -45,7 +45,7 @@ async function openPage(browser, url, problems) {
 }
 
 const oursUrl = (server, c, aov) =>
-  `${server.url}/w09p2c.html?map-view=off&encoding=${c.encoding}&filter=${c.filter}&bias=default&map-size=${MAP}&aov=${aov}`;
+  `${server.url}/w09p2c.html?map-view=off&encoding=${c.encoding}&filter=${c.filter}&bias=sheet&map-size=${MAP}&aov=${aov}`;
 
 async function openOurs(browser, server, c, aov, problems) {
   const p = await openPage(browser, oursUrl(server, c, aov), problems);

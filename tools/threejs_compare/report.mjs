@@ -15,7 +15,7 @@ export function writeCsv(file, columns, rows, env) {
   for (const r of rows)
     for (const p of r.per) {
       const technique = r.kind === 'ours' ? `${r.c.encoding} ${r.c.filter}` : `three.js-${r.c.type}-${r.id.split('-').pop()} ${r.c.type === 'basic' ? 'hard' : 'pcf'}`;
-      const settings = r.kind === 'ours' ? `w09p2c.html?encoding=${r.c.encoding}&filter=${r.c.filter}&bias=default&map-size=${MAP}`
+      const settings = r.kind === 'ours' ? `w09p2c.html?encoding=${r.c.encoding}&filter=${r.c.filter}&bias=sheet&map-size=${MAP}`
         : `three.js r${env.threeInfo?.revision} ${r.c.type === 'basic' ? 'BasicShadowMap' : 'PCFShadowMap'} bias=${r.c.bias} shadowSide=${r.c.shadowSide} mapSize=${MAP}`;
       lines.push([`course@${tname(p.t)}`, p.t.toFixed(3), SIZE, SIZE, technique, r.kind === 'ours' ? r.c.encoding : 'three.js',
                   r.kind === 'ours' ? r.c.filter : r.c.type, MAP, ...columns.map((c) => cell(c, p.score[c.key])),

@@ -1,6 +1,7 @@
 // The shadow map (exercise W09P2c): the depth seen from the light into a map of the pool, in the
 // chosen encoding, redrawn only when the light or a caster moved; the camera pass looks it up
 // with the chosen filter and bias. Also the light-depth AOV, the map scaled for viewing.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -22,6 +23,35 @@ std::string number(double v) {
     char b[32];
     std::snprintf(b, sizeof b, "%g", v);
     return b;
+}
+
+// The faces of a caster that go into the map, as the culling that leaves them: front faces (those
+// towards the light) with back-face culling, back faces with front-face culling, both with none.
+// Auto takes the front faces of a closed mesh (the nearest surface along a light ray into a closed
+// mesh is a front face, so the map holds the same depths for half the triangles) and both faces of
+// an open one (the teapot's rim, a glTF sheet must cast from either side). Back faces lose to both
+// against the ray-traced truth on every bench scene (docs/threejs.md): the contacts peter-pan. A
+// mirroring world matrix turns the winding over.
+gl::Cull map_cull(MapFaces faces, const scene::Scene& scene, const Draw& d) {
+    if (faces == MapFaces::Auto)
+        faces = scene.meshes[static_cast<size_t>(d.mesh)].closed ? MapFaces::Front : MapFaces::Both;
+    if (faces == MapFaces::Both) return gl::Cull::None;
+    const bool mirrored = glm::determinant(glm::mat3(d.world)) < 0.0f;
+    return (faces == MapFaces::Front) != mirrored ? gl::Cull::Back : gl::Cull::Front;
+}
+
+// "back 2, both 1": how many casters put which faces into the map.
+std::string faces_summary(const Pass& p) {
+    int n[3] = {0, 0, 0};  // front (cull back), back (cull front), both (cull none)
+    for (const Draw& d : p.draws) {
+        const gl::Cull c = d.cull.value_or(p.state.cull);
+        ++n[c == gl::Cull::Back ? 0 : c == gl::Cull::Front ? 1 : 2];
+    }
+    const char* names[3] = {"front", "back", "both"};
+    std::string out;
+    for (int i = 0; i < 3; ++i)
+        if (n[i]) out += std::string(out.empty() ? "" : ", ") + names[i] + " " + std::to_string(n[i]);
+    return out;
 }
 
 class ShadowMapModule : public Module {
@@ -76,6 +106,7 @@ public:
             key.add(c.scene.objects[static_cast<size_t>(i)].mesh);
         }
         key.add(s.encoding);
+        key.add(s.map_faces);
         key.add(c.depth_path.mediump);
         key.add(c.depth_path.pack_floor);
         const int r = c.add_resource(d, key.str(), "the depth seen from the light");
@@ -86,7 +117,6 @@ public:
         p.target = {r, size, size, 0, 0, false};
         // White is the farthest depth in every encoding: nothing drawn there, nothing shadows.
         p.clear = Clear{depthtex ? std::nullopt : std::optional<glm::vec4>(kWhite), true, false};
-        p.state.cull = gl::Cull::None;  // open meshes (the teapot's rim, glTF sheets) must cast from both sides
         p.state.color_write = !depthtex;
         p.object_uniforms = ObjectUniforms::Mvp;
         p.view_proj = f.view_proj();
@@ -94,10 +124,18 @@ public:
         for (int i : c.casters) {
             p.draws.push_back(c.mesh_draw(i));
             p.draws.back().variant = v;
+            p.draws.back().cull = map_cull(s.map_faces, c.scene, p.draws.back());
         }
+        // Grouped by culling (stable: scene order within a group), so the pass changes it at most
+        // twice; the pass's own state is its first group's.
+        std::stable_sort(p.draws.begin(), p.draws.end(),
+                         [](const Draw& a, const Draw& b) { return *a.cull < *b.cull; });
+        p.state.cull = p.draws.empty() ? gl::Cull::None : *p.draws.front().cull;
+        for (Draw& dr : p.draws)
+            if (dr.cull == p.state.cull) dr.cull.reset();
         p.detail = std::to_string(size) + "x" + std::to_string(size) + " " + std::string(shadow::to_string(s.encoding)) +
                    ", " + (f.perspective ? "perspective" : "orthographic") + " light, " +
-                   std::to_string(c.casters.size()) + " caster(s)";
+                   std::to_string(c.casters.size()) + " caster(s), faces " + faces_summary(p);
         c.add_pass(std::move(p));
     }
 
