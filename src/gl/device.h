@@ -49,7 +49,11 @@ public:
     void clear(const glm::vec4* color, bool depth, bool stencil);
     void apply(const PipelineState& state);
     void use(const Program& program);
+    // Binds unless the unit already holds the texture (since the last forget_textures()).
     void bind_texture(int unit, const Texture& texture);
+    // Forget what the units hold: call after textures were deleted or made (a deleted texture's
+    // name may come back for a new one), e.g. at the start of a frame after the pool's changes.
+    void forget_textures() { bound_.clear(); }
     // Draws all triangles; the vertex shader reads a_position, a_normal and (when the mesh has
     // them) a_uv. uv is set to 0 for meshes without uvs.
     void draw(const MeshBuffers& mesh);
@@ -68,6 +72,7 @@ private:
     PipelineState state_;
     bool scissor_ = false;  // a clipped Target is bound
     std::uint32_t program_ = 0;
+    std::vector<std::uint32_t> bound_;  // the texture each unit holds, by unit (0: unknown)
     Buffer fullscreen_;
 };
 

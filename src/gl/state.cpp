@@ -48,6 +48,22 @@ std::string to_string(Cull c) {
     return "?";
 }
 
+int state_calls(const PipelineState& from, const PipelineState& to) {
+    int n = 0;
+    n += from.depth_test != to.depth_test;
+    n += from.depth_func != to.depth_func;
+    n += from.depth_write != to.depth_write;
+    n += from.color_write != to.color_write;
+    if (from.cull != to.cull) n += (to.cull != Cull::None) + ((from.cull == Cull::None) != (to.cull == Cull::None));
+    const StencilState& a = to.stencil;
+    const StencilState& b = from.stencil;
+    n += a.enabled != b.enabled;
+    n += a.func != b.func || a.ref != b.ref || a.read_mask != b.read_mask;
+    n += a.write_mask != b.write_mask;
+    n += a.fail != b.fail || a.depth_fail != b.depth_fail || a.pass != b.pass;
+    return n;
+}
+
 std::string to_string(const PipelineState& s) {
     std::string out = s.depth_test ? "depth " + to_string(s.depth_func) : std::string("depth off");
     out += s.depth_write ? ", write" : ", no write";

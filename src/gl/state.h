@@ -44,6 +44,10 @@ struct PipelineState {
     bool operator!=(const PipelineState& o) const { return !(*this == o); }
 };
 
+// How many GL calls turning state `from` into `to` takes, as gl::Device::apply makes them (one per
+// field group that differs; 0 when equal): what a frame plan's state-change count adds up.
+int state_calls(const PipelineState& from, const PipelineState& to);
+
 std::string to_string(Compare c);    // "less"
 std::string to_string(StencilOp o);  // "replace"
 std::string to_string(Cull c);       // "back"

@@ -3,6 +3,7 @@
 #include "render/plan.h"
 
 #include <algorithm>
+#include <map>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -135,6 +136,50 @@ std::vector<int> Pass::reads() const {
         for (const TextureBinding& t : b.textures) add(t.resource);
     for (const Draw& d : draws) add(d.image_resource);
     return out;
+}
+
+StateCounts FramePlan::state_counts() const {
+    StateCounts n;
+    gl::PipelineState state;  // Renderer::run leaves the defaults after every frame
+    std::string program;
+    std::map<int, std::string> units;  // what each texture unit holds
+    const auto bind = [&](int unit, const std::string& what) {
+        std::string& held = units[unit];
+        ++(held == what ? n.texture_binds_skipped : n.texture_binds);
+        held = what;
+    };
+    for (const Pass& pass : passes) {
+        if (pass.skipped) continue;
+        ++n.passes;
+        n.state_calls += gl::state_calls(state, pass.state);
+        state = pass.state;
+        for (const Binding& b : pass.bindings)
+            for (const TextureBinding& t : b.textures) bind(t.unit, "resource " + std::to_string(t.resource));
+        bool first = true;
+        std::uint32_t bound = 0;
+        std::string pass_program;
+        for (const Draw& d : pass.draws) {
+            gl::PipelineState want = pass.state;
+            want.cull = d.cull.value_or(pass.state.cull);
+            n.state_calls += gl::state_calls(state, want);
+            state = want;
+            const std::string v = d.variant.name();
+            if (first || v != pass_program || d.bindings != bound) {
+                if (v != program) ++n.program_switches;
+                program = pass_program = v;
+                bound = d.bindings;
+                first = false;
+                for (size_t i = 0; i < pass.bindings.size(); ++i)
+                    if (d.bindings & (1u << i)) n.uniform_sets += static_cast<int>(pass.bindings[i].uniforms.size());
+            }
+            if (pass.object_uniforms == ObjectUniforms::Lit && d.image >= 0)
+                bind(kBaseTextureUnit, d.image_resource >= 0 ? "resource " + std::to_string(d.image_resource)
+                                                             : "image " + std::to_string(d.image));
+            ++n.draws;
+        }
+    }
+    n.state_calls += gl::state_calls(state, gl::PipelineState{});
+    return n;
 }
 
 int FramePlan::resource_index(std::string_view name) const {

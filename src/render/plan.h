@@ -140,6 +140,9 @@ enum class ObjectUniforms {
     Lit,   // u_model, u_normal_matrix and the material (colour, specular, shininess, base texture)
 };
 
+// The texture unit of a Lit draw's base-colour texture (the techniques' maps take the others).
+inline constexpr int kBaseTextureUnit = 1;
+
 struct Draw {
     bool fullscreen = false;  // one triangle over the viewport instead of a mesh
     int object = -1;          // the scene object
@@ -178,6 +181,20 @@ struct CameraView {
     glm::vec3 position{0.0f};
 };
 
+// What executing a plan asks of GL, counted from the plan alone (Renderer::run_pass's rules): the
+// pipeline-state calls are only those that change something (gl::Device::apply compares), a
+// program is switched only when the next draw's differs, and a texture is not bound again to a unit
+// that holds it already (gl::Device::bind_texture): those are counted as skipped.
+struct StateCounts {
+    int passes = 0;          // passes that run (not skipped)
+    int state_calls = 0;     // depth, cull, colour mask, stencil calls
+    int program_switches = 0;
+    int uniform_sets = 0;    // shared-binding uniforms (per-draw ones not counted)
+    int texture_binds = 0;          // made
+    int texture_binds_skipped = 0;  // asked for, but the unit held the texture already
+    int draws = 0;
+};
+
 struct FramePlan {
     Settings settings;
     std::string output;  // "offscreen 512x512", "window 800x600", "texture w09p2b 1024x1024"
@@ -193,6 +210,7 @@ struct FramePlan {
     // A pass into the resource ran in this plan (false when it was reused or is absent).
     bool drawn(std::string_view name) const;
 
+    StateCounts state_counts() const;
     std::string describe() const;  // one line per pass (render -v)
     std::string to_text() const;   // every pass and resource in full (penumbra plan)
     std::string to_json() const;   // the same as JSON (penumbra plan --json)

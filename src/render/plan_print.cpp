@@ -182,6 +182,11 @@ std::string FramePlan::to_text() const {
         o << "; " << r.purpose << "\n";
     }
     o << "  total " << bytes_str(total) << "\n";
+    const StateCounts sc = state_counts();
+    o << "state changes: " << sc.passes << " pass(es) run, " << sc.state_calls << " pipeline-state call(s), "
+      << sc.program_switches << " program switch(es), " << sc.uniform_sets << " shared uniform(s) set, "
+      << sc.texture_binds << " texture bind(s) (" << sc.texture_binds_skipped << " skipped: already bound), " << sc.draws
+      << " draw(s)\n";
     o << "passes:\n";
     for (size_t i = 0; i < passes.size(); ++i) {
         const Pass& p = passes[i];
@@ -239,7 +244,12 @@ std::string FramePlan::to_json() const {
              ",\"content\":" + json_quote(r.content) + ",\"reused\":" + json_bool(r.reused) +
              ",\"purpose\":" + json_quote(r.purpose) + "}";
     }
-    j += "],\"bytes\":" + std::to_string(total) + ",\"passes\":[";
+    const StateCounts n = state_counts();
+    j += "],\"bytes\":" + std::to_string(total) + ",\"state_changes\":{\"passes\":" + std::to_string(n.passes) +
+         ",\"state_calls\":" + std::to_string(n.state_calls) + ",\"program_switches\":" +
+         std::to_string(n.program_switches) + ",\"uniform_sets\":" + std::to_string(n.uniform_sets) +
+         ",\"texture_binds\":" + std::to_string(n.texture_binds) + ",\"texture_binds_skipped\":" +
+         std::to_string(n.texture_binds_skipped) + ",\"draws\":" + std::to_string(n.draws) + "},\"passes\":[";
     for (size_t i = 0; i < passes.size(); ++i) j += std::string(i ? "," : "") + json_pass(*this, passes[i]);
     j += "],\"notes\":" + json_strings(notes) + "}";
     return j;

@@ -11,7 +11,6 @@ namespace penumbra::render {
 
 namespace {
 
-constexpr int kBaseTextureUnit = 1;
 
 bool power_of_two(int v) { return v > 0 && (v & (v - 1)) == 0; }
 
@@ -132,6 +131,7 @@ void Renderer::execute(const scene::Scene& scene, const FramePlan& plan) {
 
 void Renderer::run(const scene::Scene& scene, const FramePlan& plan) {
     pool_.prepare(plan);
+    device_.forget_textures();
     for (const Pass& pass : plan.passes) run_pass(scene, plan, pass);
     device_.apply(gl::PipelineState{});
 }

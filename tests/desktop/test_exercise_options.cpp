@@ -40,7 +40,7 @@ TEST(ExerciseOptions, BiasAutoAndPrecisionReadBack) {
     CourseApp a(Exercise::W09P2c);
     ASSERT_EQ(a.set_option("bias", "auto"), "");
     ASSERT_EQ(a.set_option("precision", "mediump"), "");
-    EXPECT_NE(a.query().find("bias=auto&precision=mediump&"), std::string::npos) << a.query();
+    EXPECT_NE(a.query().find("bias=auto&map-faces=auto&precision=mediump&"), std::string::npos) << a.query();
     EXPECT_TRUE(a.settings().bias_auto);
     EXPECT_EQ(a.settings().precision, penumbra::shadow::Precision::Mediump);
     CourseApp b(Exercise::W09P2c);

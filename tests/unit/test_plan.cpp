@@ -256,3 +256,25 @@ TEST(PcfKernel, TheShaderAndTheCpuMirrorShareTheTaps) {
 }
 
 }  // namespace
+
+TEST_F(PlanTest, StateChangesAreCountedFromThePlan) {
+    // First frame: the map pass and the camera pass run; the next frame reuses the map and runs
+    // only the camera pass, so it makes fewer GL calls of every kind.
+    const FramePlan first = make();
+    const render::StateCounts a = first.state_counts();
+    EXPECT_EQ(a.passes, 2);
+    EXPECT_EQ(a.draws, static_cast<int>(first.passes[0].draws.size() + first.passes[1].draws.size()));
+    EXPECT_GE(a.program_switches, 2);  // the depth program, then the lit one(s)
+    EXPECT_EQ(a.texture_binds_skipped, 0);
+    const render::StateCounts b = make(&first).state_counts();
+    EXPECT_EQ(b.passes, 1);
+    EXPECT_LT(b.draws, a.draws);
+    EXPECT_LT(b.texture_binds, a.texture_binds + 1);
+    // Planar shadows draw the table again in a later pass: its marble is still bound there.
+    s.technique = render::Technique::Planar;
+    const render::StateCounts p = make().state_counts();
+    EXPECT_EQ(p.texture_binds_skipped, 1);
+    const auto j = nlohmann::json::parse(make().to_json());
+    EXPECT_EQ(j["state_changes"]["texture_binds_skipped"], 1);
+    EXPECT_EQ(j["state_changes"]["passes"], p.passes);
+}
