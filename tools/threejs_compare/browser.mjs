@@ -6,7 +6,7 @@ import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
 import path from 'node:path';
 import { launch } from '../../tests/web/harness.mjs';
-import { MAP, OURS, ROOT, SIZE, THREE_CONFIGS, log, median, tname, threeOptions } from './config.mjs';
+import { OUR_DEFAULTS, OURS, ROOT, SIZE, THREE_CONFIGS, log, median, oursOptions, tname, threeOptions } from './config.mjs';
 import { savePng } from './images.mjs';
 
 // A static server on 127.0.0.1 for the site (/), the three.js page (/compare/), three.js itself
@@ -45,7 +45,7 @@ async function openPage(browser, url, problems) {
 }
 
 const oursUrl = (server, c, aov) =>
-  `${server.url}/w09p2c.html?map-view=off&encoding=${c.encoding}&filter=${c.filter}&bias=sheet&map-size=${MAP}&aov=${aov}`;
+  `${server.url}/w09p2c.html?map-view=off&${new URLSearchParams(oursOptions(c))}&aov=${aov}`;
 
 async function openOurs(browser, server, c, aov, problems) {
   const p = await openPage(browser, oursUrl(server, c, aov), problems);
@@ -54,9 +54,9 @@ async function openOurs(browser, server, c, aov, problems) {
   await p.page.waitForFunction(() => window.penumbra.frameCount() > 0, null, { timeout: 60000 });
   const s = await p.page.evaluate(() => window.penumbra.state());
   if (s.width !== SIZE || s.height !== SIZE) throw new Error(`penumbra's canvas is ${s.width}x${s.height}`);
-  if (s.mapSize !== MAP) throw new Error(`penumbra's map is ${s.mapSize}`);
-  if (s.options.encoding !== c.encoding || s.options.filter !== c.filter)
-    throw new Error(`penumbra's page took ${s.options.encoding}/${s.options.filter} for ${c.encoding}/${c.filter} (${s.status})`);
+  if (s.mapSize !== c.map) throw new Error(`penumbra's map is ${s.mapSize}, not ${c.map}`);
+  for (const [k, v] of Object.entries(oursOptions(c)))
+    if ((s.options[k] ?? OUR_DEFAULTS[k]) !== v) throw new Error(`penumbra's page took ${k}=${s.options[k]} for ${v} (${s.status})`);
   return { ...p, state: s };
 }
 
@@ -161,9 +161,9 @@ export async function measureInBrowser(o, site, dataDir, imgDir, frames, started
       for (const t of o.times) {
         for (const x of order) {
           if (x.kind === 'ours') {
-            round[x.id].push(...await oursPage.page.evaluate(([c, t0, n]) => {
+            round[x.id].push(...await oursPage.page.evaluate(([opts, t0, n]) => {
               const p = window.penumbra;
-              for (const [k, v] of [['encoding', c.encoding], ['filter', c.filter]]) {
+              for (const [k, v] of Object.entries(opts)) {
                 const err = p.setOption(k, v);
                 if (err) throw new Error(`setOption ${k}=${v}: ${err}`);
               }
@@ -176,7 +176,7 @@ export async function measureInBrowser(o, site, dataDir, imgDir, frames, started
                 if (k >= 0) out.push(b - a);
               }
               return out;
-            }, [x.c, t, o.frames]));
+            }, [oursOptions(x.c), t, o.frames]));
           } else {
             round[x.id].push(...await threePage.page.evaluate(([opts, f]) => {
               window.compare.configure(opts);

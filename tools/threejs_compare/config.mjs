@@ -5,27 +5,45 @@ export const ROOT = path.resolve(path.dirname(new URL(import.meta.url).pathname)
 export const SIZE = 512;
 export const MAP = 1024;
 
-// penumbra's W09P2c page: every encoding, hard and 4x4 PCF, the encoding's default bias.
+// penumbra's W09P2c page. Each row's options go into the page's URL (and are set again before it is
+// timed); what a row leaves out is the page's default. 'rgba-hard' and 'rgba-pcf4x4' are the
+// defaults (bias auto, the tight light frustum, faces auto, PCF's early exit, map 1024); the
+// 'sheet' rows are the settings before issue 9 (the sheet's bias, both faces, the frustum fitted
+// around the whole scene, the full PCF kernel); the 'matched' row is what three.js's matched rows
+// are given, to check pixel by pixel that both renderers see the same map.
+const BEFORE = { bias: 'sheet', 'map-faces': 'both', 'light-fit': 'scene', 'pcf-kernel': 'full' };
 export const OURS = [
-  { id: 'rgba-hard', label: 'rgba hard', encoding: 'rgba', filter: 'hard' },
-  { id: 'rgba-pcf4x4', label: 'rgba pcf4x4', encoding: 'rgba', filter: 'pcf4x4' },
-  { id: 'depthtex-hard', label: 'depthtex hard', encoding: 'depthtex', filter: 'hard' },
-  { id: 'depthtex-pcf4x4', label: 'depthtex pcf4x4', encoding: 'depthtex', filter: 'pcf4x4' },
-  { id: 'r8-hard', label: 'r8 hard', encoding: 'r8', filter: 'hard' },
-  { id: 'r8-pcf4x4', label: 'r8 pcf4x4', encoding: 'r8', filter: 'pcf4x4' },
+  { id: 'rgba-hard', label: 'rgba hard, defaults', encoding: 'rgba', filter: 'hard', map: 1024 },
+  { id: 'rgba-hard-512', label: 'rgba hard, defaults, map 512', encoding: 'rgba', filter: 'hard', map: 512 },
+  { id: 'rgba-hard-2048', label: 'rgba hard, defaults, map 2048', encoding: 'rgba', filter: 'hard', map: 2048 },
+  { id: 'rgba-pcf4x4', label: 'rgba pcf4x4, defaults', encoding: 'rgba', filter: 'pcf4x4', map: 1024 },
+  { id: 'rgba-pcf4x4-512', label: 'rgba pcf4x4, defaults, map 512', encoding: 'rgba', filter: 'pcf4x4', map: 512 },
+  { id: 'rgba-pcf4x4-2048', label: 'rgba pcf4x4, defaults, map 2048', encoding: 'rgba', filter: 'pcf4x4', map: 2048 },
+  { id: 'depthtex-hard', label: 'depthtex hard, defaults', encoding: 'depthtex', filter: 'hard', map: 1024 },
+  { id: 'depthtex-pcf4x4', label: 'depthtex pcf4x4, defaults', encoding: 'depthtex', filter: 'pcf4x4', map: 1024 },
+  { id: 'rgba-hard-sheet', label: 'rgba hard, before (sheet bias, scene fit)', encoding: 'rgba', filter: 'hard', map: 1024, ...BEFORE },
+  { id: 'rgba-pcf4x4-sheet', label: 'rgba pcf4x4, before (sheet bias, scene fit, full kernel)', encoding: 'rgba', filter: 'pcf4x4', map: 1024, ...BEFORE },
+  { id: 'depthtex-hard-matched', label: 'depthtex hard, matched to three.js (as before)', encoding: 'depthtex', filter: 'hard', map: 1024, ...BEFORE },
 ];
-// penumbra's default bias of rgba and depthtex (README: 0.0015, in window depth units), which
+// The library's defaults of the options a row may set (src/render/options.cpp); a page reports an
+// option it has no control for only when it differs from its default.
+export const OUR_DEFAULTS = { bias: 'auto', 'map-faces': 'auto', 'light-fit': 'tight', 'pcf-kernel': 'early-exit' };
+// The page options of a row, in URL order.
+export const oursOptions = (c) => {
+  const o = { encoding: c.encoding, filter: c.filter, 'map-size': String(c.map) };
+  for (const [k, v] of Object.entries(OUR_DEFAULTS)) o[k] = c[k] ?? v;
+  return o;
+};
+// The sheet's bias of rgba and depthtex (README: 0.0015, in window depth units), which
 // three.js applies with the opposite sign (shadowCoord.z += bias; lit where z <= depth).
 export const OUR_BIAS = 0.0015;
 // three.js: BasicShadowMap and PCFShadowMap, each at three.js's defaults (bias 0, normalBias 0, the
-// back faces into the map: shadowSide = the opposite of the material's side), with penumbra's bias
-// alone, and matched (penumbra's bias, both faces into the map as penumbra draws them).
+// back faces into the map: shadowSide = the opposite of the material's side), and matched (the
+// sheet's bias, both faces into the map, penumbra's frustum fitted around the whole scene).
 export const THREE_CONFIGS = [
   { id: 'three-basic-default', label: 'three.js BasicShadowMap, defaults', type: 'basic', bias: 0, shadowSide: 'default', vs: 'rgba-hard' },
-  { id: 'three-basic-bias', label: 'three.js BasicShadowMap, bias -0.0015', type: 'basic', bias: -OUR_BIAS, shadowSide: 'default', vs: 'rgba-hard' },
   { id: 'three-basic-matched', label: 'three.js BasicShadowMap, matched', type: 'basic', bias: -OUR_BIAS, shadowSide: 'double', vs: 'rgba-hard' },
   { id: 'three-pcf-default', label: 'three.js PCFShadowMap, defaults', type: 'pcf', bias: 0, shadowSide: 'default', vs: 'rgba-pcf4x4' },
-  { id: 'three-pcf-bias', label: 'three.js PCFShadowMap, bias -0.0015', type: 'pcf', bias: -OUR_BIAS, shadowSide: 'default', vs: 'rgba-pcf4x4' },
   { id: 'three-pcf-matched', label: 'three.js PCFShadowMap, matched', type: 'pcf', bias: -OUR_BIAS, shadowSide: 'double', vs: 'rgba-pcf4x4' },
 ];
 export const threeOptions = (c, material) => ({ shadowType: c.type, bias: c.bias, normalBias: 0, shadowSide: c.shadowSide,

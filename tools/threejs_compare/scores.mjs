@@ -61,6 +61,17 @@ export function scoreRows(o, columns, m, cameraCheck) {
     r.ratio = ratio(r.c.vs);
     r.ratioDepthtex = ratio(r.c.vs.replace('rgba', 'depthtex'));
   }
+  for (const r of rows) {
+    if (r.kind !== 'ours') continue;
+    // Ours against three.js at its defaults with the same kind of filter, in the same rounds; and
+    // whether ours is at equal or lower error (and, for PCF, mean absolute error).
+    const three = byId[r.c.filter === 'hard' ? 'three-basic-default' : 'three-pcf-default'];
+    if (!three) continue;
+    r.vsThree = three.id;
+    r.ratioThree = median(r.msRounds.map((v, i) => v / three.msRounds[i]));
+    r.notWorse = r.score.error_pct <= three.score.error_pct + 1e-9 &&
+                 (r.c.filter === 'hard' || r.score.mae_pct <= three.score.mae_pct + 1e-9);
+  }
   for (const cc of cameraCheck) {
     // The glTF holds the matrices as float32, as penumbra does; a pixel or two on an edge may round the other way.
     if (cc.differing > 1e-4 * SIZE * SIZE) failures.push(`the exported glTF at t=${cc.t} renders ${cc.differing} px differently from the built-in scene`);
@@ -71,7 +82,7 @@ export function scoreRows(o, columns, m, cameraCheck) {
   // With penumbra's frustum, bias and faces, three.js's one-tap map must see what penumbra's does:
   // pixel by pixel, the matched BasicShadowMap against penumbra's hard filter (and PCF, whose
   // kernels differ, for the record).
-  const pairs = [['three-basic-matched', 'depthtex-hard'], ['three-basic-matched', 'rgba-hard'], ['three-pcf-matched', 'rgba-pcf4x4']];
+  const pairs = [['three-basic-matched', 'depthtex-hard-matched'], ['three-basic-matched', 'rgba-hard-sheet'], ['three-pcf-matched', 'rgba-pcf4x4-sheet']];
   const agreement = pairs.map(([a, b]) => ({ a, b, per: o.times.map((t) => ({ t, ...imageDiff(images[a][t], images[b][t]) })) }));
   for (const p of agreement[0].per)
     if (p.fraction > 0.01) failures.push(`three.js matched BasicShadowMap and penumbra depthtex hard differ in ${(100 * p.fraction).toFixed(2)} % of the pixels at t=${p.t}`);
