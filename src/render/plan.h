@@ -185,6 +185,8 @@ struct FramePlan {
     std::vector<std::string> notes;  // e.g. a clamped map size
     CameraView camera;
     std::optional<shadow::LightFrustum> light_frustum;  // when a shadow map is drawn or read
+    // With it: the share of the map (0..1) covered by the receivers the camera sees.
+    std::optional<float> texel_use;
 
     int resource_index(std::string_view name) const;  // -1 when absent
     const PlannedResource* resource(std::string_view name) const;

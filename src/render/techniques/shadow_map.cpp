@@ -24,6 +24,29 @@ std::string number(double v) {
     return b;
 }
 
+std::string percent(float share) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.1f%%", 100.0 * static_cast<double>(share));
+    return b;
+}
+
+std::string caster_count(size_t drawn, size_t all) {
+    return drawn == all ? std::to_string(all) + " caster(s)"
+                        : std::to_string(drawn) + " of " + std::to_string(all) + " caster(s)";
+}
+
+// The tight fit for this frame's camera: receivers and casters by their world bounds.
+shadow::TightFit fit_to_view(const PlanContext& c) {
+    std::vector<scene::Bounds> receivers;
+    std::vector<scene::Bounds> casters;
+    for (int i : c.drawable) {
+        const scene::Object& o = c.scene.objects[static_cast<size_t>(i)];
+        if (o.receives_shadow) receivers.push_back(scene::object_bounds(c.scene, o));
+    }
+    for (int i : c.casters) casters.push_back(scene::object_bounds(c.scene, c.scene.objects[static_cast<size_t>(i)]));
+    return shadow::fit_light_frustum_tight(c.light, receivers, casters, c.plan.camera.view_proj);
+}
+
 class ShadowMapModule : public Module {
 public:
     std::string_view name() const override { return "shadowmap"; }
@@ -54,8 +77,14 @@ public:
                                    ", the smallest map that still resolves a shadow");
             size = kMinMap;
         }
-        const shadow::LightFrustum f = shadow::fit_light_frustum(c.light, scene::corners(c.shadowed), c.shadowed.center());
+        // The light's frustum around the receivers the camera sees and the casters that can
+        // shadow them; only those casters go into the map.
+        const shadow::TightFit fit = fit_to_view(c);
+        const shadow::LightFrustum& f = fit.frustum;
         c.plan.light_frustum = f;
+        c.plan.texel_use = fit.texel_use;
+        std::vector<int> casters;
+        for (int k : fit.casters) casters.push_back(c.casters[static_cast<size_t>(k)]);
 
         ResourceDesc d;
         d.name = kMap;
@@ -71,7 +100,8 @@ public:
         // The map depends on the light's matrix, the casters and how depth is packed.
         ContentKey key;
         key.add(f.view_proj());
-        for (int i : c.casters) {
+        for (int i : casters) {
+            key.add(i);
             key.add(c.scene.objects[static_cast<size_t>(i)].world);
             key.add(c.scene.objects[static_cast<size_t>(i)].mesh);
         }
@@ -91,13 +121,14 @@ public:
         p.object_uniforms = ObjectUniforms::Mvp;
         p.view_proj = f.view_proj();
         const Variant v = depth_variant(s.encoding, c.depth_path);
-        for (int i : c.casters) {
+        for (int i : casters) {
             p.draws.push_back(c.mesh_draw(i));
             p.draws.back().variant = v;
         }
         p.detail = std::to_string(size) + "x" + std::to_string(size) + " " + std::string(shadow::to_string(s.encoding)) +
                    ", " + (f.perspective ? "perspective" : "orthographic") + " light, " +
-                   std::to_string(c.casters.size()) + " caster(s)";
+                   caster_count(casters.size(), c.casters.size()) + ", texel use " + percent(fit.texel_use) +
+                   (fit.tight ? "" : " (fitted around the whole scene)");
         c.add_pass(std::move(p));
     }
 
@@ -148,6 +179,9 @@ public:
             b.uniforms.push_back({"u_light_rotation", glm::mat3(f.view)});
             b.uniforms.push_back({"u_bias_slope", glm::vec4(1.0f / f.proj[0][0], 1.0f / f.proj[1][1], f.znear, f.zfar)});
             b.uniforms.push_back({"u_bias_kernel", glm::vec2(2.0f * texel, shadow::kernel_reach_texels(s.filter))});
+            // The window's middle (tangents) of an asymmetric perspective frustum: P[2][0] / P[0][0].
+            if (f.perspective)
+                b.uniforms.push_back({"u_bias_center", glm::vec2(f.proj[2][0] / f.proj[0][0], f.proj[2][1] / f.proj[1][1])});
         }
         const std::uint32_t bit = 1u << cam.bindings.size();
         cam.bindings.push_back(std::move(b));
