@@ -152,7 +152,7 @@ void CourseApp::render(render::Settings s, const render::FrameInputs& in) {
     plan_text_ += renderer_->render(course_.scene, s, in).describe();
 }
 
-render::FrameInputs CourseApp::light_view(render::Output output, bool ortho) const {
+render::FrameInputs CourseApp::light_view(render::Output output, bool ortho, const render::Output& camera) const {
     const scene::Scene& sc = course_.scene;
     scene::Light light = sc.light;
     if (ortho) {
@@ -160,7 +160,9 @@ render::FrameInputs CourseApp::light_view(render::Output output, bool ortho) con
         light.type = scene::LightType::Directional;
         light.direction = glm::normalize(render::shadowed_bounds(sc).center() - light.position);
     }
-    const shadow::LightFrustum f = render::fit_light_view(sc, light);
+    render::FrameInputs seen;
+    seen.output = camera;
+    const shadow::LightFrustum f = render::fit_light_view(sc, light, render::camera_view(sc, seen).view_proj);
     render::FrameInputs in;
     in.output = std::move(output);
     in.view = f.view;
@@ -186,7 +188,7 @@ void CourseApp::draw(int width, int height) {
             break;
         case Exercise::W09P2a:  // seen from the light, nothing is in shadow
             s.aov = render::Aov::Color;
-            render(s, light_view(window, toggles_.ortho));
+            render(s, light_view(window, toggles_.ortho, window));
             break;
         case Exercise::W09P2b: {
             s.aov = render::Aov::Color;
@@ -197,7 +199,7 @@ void CourseApp::draw(int width, int height) {
             const render::Output fbo =
                 render::Output::texture(kFboTexture, size, size, gl::Sampling::Linear, pot ? gl::Wrap::Repeat : gl::Wrap::Clamp);
             render::FrameInputs into;
-            if (toggles_.fbo_light) into = light_view(fbo, false);
+            if (toggles_.fbo_light) into = light_view(fbo, false, window);
             else into.output = fbo;
             render(s, into);
             in.objects.push_back({course_.table, fbo_mesh_, fbo_material_});

@@ -91,9 +91,10 @@ public:
 
 private:
     void render(render::Settings s, const render::FrameInputs& in);
-    // The inputs that show the scene from the light: its fitted view and projection and, with
-    // `ortho`, a directional light along the point light's line of sight.
-    render::FrameInputs light_view(render::Output output, bool ortho) const;
+    // The inputs that show the scene from the light: its view and projection fitted tightly around
+    // what the scene's camera sees in `camera` (its output) and, with `ortho`, a directional light
+    // along the point light's line of sight.
+    render::FrameInputs light_view(render::Output output, bool ortho, const render::Output& camera) const;
     // The values key `option` steps through on this exercise.
     std::vector<std::string> key_values(std::string_view option) const;
 

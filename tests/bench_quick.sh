@@ -37,8 +37,12 @@ for r in rows:
     if r["technique"] not in ("none", "planar"):
         assert int(r["shadow_map_bytes"]) >= int(r["map_size"]) ** 2, r
         assert int(r["redrawn_moving"]) == int(r["frames"]) and int(r["redrawn_still"]) == 0, r
+        assert 0.0 < float(r["texel_use_pct"]) <= 100.0, r
+    else:
+        assert r["texel_use_pct"] == "", r
 md = open(d + "/results.md").read()
 assert md.startswith("# penumbra bench") and "| technique |" in md and "## The course scene, map 1024" in md
+assert "## Texel use" in md
 svg = ET.parse(d + "/tradeoff.svg").getroot()
 assert svg.tag.endswith("svg") and len(svg.findall(".//{http://www.w3.org/2000/svg}polyline")) > 0
 png = open(d + "/tradeoff.png", "rb").read()

@@ -10,7 +10,8 @@ uniform float u_bias;        // the fragment is in shadow if z_l > depth + bias 
 #ifdef BIAS_AUTO
 // Receiver-plane slope bias, computed from the receiver's normal in the light's eye space: across
 // the kernel's reach, how far does the surface move along the light's axis? For a plane with
-// normal n hit along the ray r = (x tan_x, y tan_y, -1) (perspective) the eye depth changes per
+// normal n hit along the ray r = (c_x + x tan_x, c_y + y tan_y, -1) (perspective; c: the window's
+// middle, 0 for a symmetric frustum) the eye depth changes per
 // unit of NDC x by z n_x tan_x / |n.r| (y likewise); orthographic: half_w n_x / |n_z|. Converted to
 // window depth by d(z_window)/d(z_eye). |n.r| is floored at 0.05 |r| (a surface within 3 degrees
 // of edge-on to the light, barely lit anyway), which caps the slope at 20.
@@ -18,6 +19,9 @@ uniform mat3 u_light_rotation;  // world -> light eye space
 uniform vec4 u_bias_slope;      // x, y: tan of the half-angles (perspective) or half-extents
                                 // (orthographic); z, w: the light's near and far
 uniform vec2 u_bias_kernel;     // x: one texel in NDC (2 / map size); y: the kernel's reach in texels per axis
+#ifdef LIGHT_PERSPECTIVE
+uniform vec2 u_bias_center;     // tan at the middle of the window (an asymmetric frustum; 0 when symmetric)
+#endif
 
 float shadowBias(vec3 normal, vec3 c) {
     vec3 nl = u_light_rotation * normal;
@@ -25,7 +29,7 @@ float shadowBias(vec3 normal, vec3 c) {
     float f = u_bias_slope.w;
     float across = (abs(nl.x) * u_bias_slope.x + abs(nl.y) * u_bias_slope.y) * u_bias_kernel.x * u_bias_kernel.y;
 #ifdef LIGHT_PERSPECTIVE
-    vec3 ray = vec3((2.0 * c.x - 1.0) * u_bias_slope.x, (2.0 * c.y - 1.0) * u_bias_slope.y, -1.0);
+    vec3 ray = vec3((2.0 * c.x - 1.0) * u_bias_slope.x + u_bias_center.x, (2.0 * c.y - 1.0) * u_bias_slope.y + u_bias_center.y, -1.0);
     float facing = max(abs(dot(nl, ray)), 0.05 * length(ray));
     float zEye = 2.0 * n * f / (f + n - (2.0 * c.z - 1.0) * (f - n));
     float dz = zEye * across / facing;

@@ -26,6 +26,8 @@ std::string_view to_string(MapFaces f) {
     return "?";
 }
 
+std::string_view to_string(LightFit f) { return f == LightFit::Tight ? "tight" : "scene"; }
+
 std::string_view to_string(Aov a) {
     switch (a) {
         case Aov::Color: return "color";
@@ -37,7 +39,7 @@ std::string_view to_string(Aov a) {
 
 bool Settings::operator==(const Settings& o) const {
     return technique == o.technique && encoding == o.encoding && filter == o.filter && map_size == o.map_size &&
-           bias == o.bias && bias_auto == o.bias_auto && map_faces == o.map_faces && precision == o.precision && aov == o.aov;
+           bias == o.bias && bias_auto == o.bias_auto && map_faces == o.map_faces && light_fit == o.light_fit && precision == o.precision && aov == o.aov;
 }
 
 bool Job::operator==(const Job& o) const {
@@ -287,6 +289,13 @@ std::vector<Option<Options>> make_table() {
                           {"both", "both faces"}});
     add(map_faces, [](Options& o, std::string_view v) { o.settings.map_faces = enum_of(v, kAllMapFaces); },
         [](const Options& o) { return std::string(to_string(o.settings.map_faces)); });
+
+    OptionInfo light_fit = make_option_info("light-fit", P::Technique, T::Choice,
+                         "the light's frustum: tight = around the receivers the camera sees and the casters that can "
+                         "shadow them; scene = around the whole scene", "Light frustum",
+                         {{"tight", "tight: what the camera sees"}, {"scene", "the whole scene"}});
+    add(light_fit, [](Options& o, std::string_view v) { o.settings.light_fit = enum_of(v, kAllLightFits); },
+        [](const Options& o) { return std::string(to_string(o.settings.light_fit)); });
 
     OptionInfo precision = make_option_info("precision", P::Technique, T::Choice,
                          "mediump: emulated fp16 along the depth path, as a phone computes it", "Precision",

@@ -47,6 +47,8 @@ std::string output_name(const Output& o) {
     return "texture " + o.name + " " + size_str(o.width, o.height);
 }
 
+}  // namespace
+
 CameraView camera_view(const scene::Scene& scene, const FrameInputs& in) {
     const scene::Camera& cam = scene.camera;
     CameraView v;
@@ -58,8 +60,6 @@ CameraView camera_view(const scene::Scene& scene, const FrameInputs& in) {
     v.position = glm::vec3(glm::inverse(v.view)[3]);
     return v;
 }
-
-}  // namespace
 
 // ---- inputs ------------------------------------------------------------------------------------
 
@@ -294,9 +294,15 @@ scene::Bounds shadowed_bounds(const scene::Scene& scene) {
     return b;
 }
 
-shadow::LightFrustum fit_light_view(const scene::Scene& scene, const scene::Light& light) {
-    const scene::Bounds b = shadowed_bounds(scene);
-    return shadow::fit_light_frustum(light, scene::corners(b), b.center());
+shadow::LightFrustum fit_light_view(const scene::Scene& scene, const scene::Light& light, const glm::mat4& camera_view_proj) {
+    std::vector<scene::Bounds> receivers;
+    std::vector<scene::Bounds> casters;
+    for (const auto& o : scene.objects) {
+        if (!valid_mesh(scene, o.mesh)) continue;
+        if (o.receives_shadow) receivers.push_back(scene::object_bounds(scene, o));
+        if (o.casts_shadow) casters.push_back(scene::object_bounds(scene, o));
+    }
+    return shadow::fit_light_frustum_tight(light, receivers, casters, camera_view_proj).frustum;
 }
 
 namespace {

@@ -203,6 +203,8 @@ struct FramePlan {
     std::vector<std::string> notes;  // e.g. a clamped map size
     CameraView camera;
     std::optional<shadow::LightFrustum> light_frustum;  // when a shadow map is drawn or read
+    // With it: the share of the map (0..1) covered by the receivers the camera sees.
+    std::optional<float> texel_use;
 
     int resource_index(std::string_view name) const;  // -1 when absent
     const PlannedResource* resource(std::string_view name) const;
@@ -226,10 +228,15 @@ std::string check(const scene::Scene& scene, const Settings& settings, const gl:
 FramePlan plan(const scene::Scene& scene, const Settings& settings, const gl::Caps& caps,
                const FrameInputs& inputs = {}, const FramePlan* previous = nullptr);
 
-// The world bounds of every object that casts or receives shadows: what the light's view must hold.
+// The camera's view and projection for a frame: the inputs' view or projection, else the scene
+// camera's (its aspect, or the output's when it has none).
+CameraView camera_view(const scene::Scene& scene, const FrameInputs& inputs);
+
+// The world bounds of every object that casts or receives shadows.
 scene::Bounds shadowed_bounds(const scene::Scene& scene);
-// The light's frustum fitted around them (the shadow map's and exercise W09P2a's view from the
-// light).
-shadow::LightFrustum fit_light_view(const scene::Scene& scene, const scene::Light& light);
+// The light's frustum fitted tightly around the receivers a camera with this view-projection
+// sees and the casters that can shadow them (shadow::fit_light_frustum_tight): the shadow map's
+// fit, and exercise W09P2a's view from the light.
+shadow::LightFrustum fit_light_view(const scene::Scene& scene, const scene::Light& light, const glm::mat4& camera_view_proj);
 
 }  // namespace penumbra::render

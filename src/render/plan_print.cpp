@@ -168,9 +168,9 @@ std::string FramePlan::to_text() const {
                   static_cast<double>(camera.position.y), static_cast<double>(camera.position.z));
     o << buf;
     if (light_frustum) {
-        std::snprintf(buf, sizeof buf, "light: %s frustum, near %.4g, far %.4g\n",
+        std::snprintf(buf, sizeof buf, "light: %s frustum, near %.4g, far %.4g, texel use %.1f%%\n",
                       light_frustum->perspective ? "perspective" : "orthographic", static_cast<double>(light_frustum->znear),
-                      static_cast<double>(light_frustum->zfar));
+                      static_cast<double>(light_frustum->zfar), 100.0 * static_cast<double>(texel_use.value_or(0.0f)));
         o << buf;
     }
     std::size_t total = 0;
@@ -227,6 +227,7 @@ std::string FramePlan::to_json() const {
         j += ",\"light_frustum\":{\"perspective\":" + json_bool(light_frustum->perspective) +
              ",\"near\":" + json_number(static_cast<double>(light_frustum->znear)) +
              ",\"far\":" + json_number(static_cast<double>(light_frustum->zfar)) +
+             ",\"texel_use\":" + (texel_use ? json_number(static_cast<double>(*texel_use)) : std::string("null")) +
              ",\"view_proj\":" + json_floats(light_frustum->view_proj()) + "}";
     else
         j += ",\"light_frustum\":null";

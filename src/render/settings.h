@@ -24,6 +24,12 @@ enum class MapFaces {
     Back,   // the faces away from it: a lit surface is compared with its object's far side
     Both    // every face: open meshes (the teapot's rim, a sheet of paper) cast from either side
 };
+// How the light's frustum is fitted.
+enum class LightFit {
+    Tight,  // around the receivers the camera sees and the casters that can shadow them
+    Scene   // around every caster's and receiver's bounds (the frustum before the tight fit)
+};
+inline constexpr LightFit kAllLightFits[] = {LightFit::Tight, LightFit::Scene};
 inline constexpr MapFaces kAllMapFaces[] = {MapFaces::Auto, MapFaces::Front, MapFaces::Back, MapFaces::Both};
 inline constexpr Technique kAllTechniques[] = {Technique::ShadowMap, Technique::Planar, Technique::None};
 inline constexpr Aov kAllAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth};
@@ -31,6 +37,7 @@ inline constexpr Aov kAllAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth}
 std::string_view to_string(Technique t);
 std::string_view to_string(Aov a);
 std::string_view to_string(MapFaces f);
+std::string_view to_string(LightFit f);
 
 struct Settings {
     Technique technique = Technique::ShadowMap;
@@ -40,6 +47,7 @@ struct Settings {
     std::optional<float> bias;  // a constant offset; absent (and not auto): the sheet's (shadow::sheet_bias)
     bool bias_auto = true;      // --bias auto (the default): the encoding's quantum plus a receiver slope term
     MapFaces map_faces = MapFaces::Auto;
+    LightFit light_fit = LightFit::Tight;
     shadow::Precision precision = shadow::Precision::Highp;  // mediump: emulated fp16 depth path
     Aov aov = Aov::Color;
 

@@ -9,6 +9,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "shadow/convex.h"
+
 namespace penumbra::shadow {
 
 namespace {
@@ -174,7 +176,263 @@ LightFrustum fit_orthographic(const scene::Light& light, const std::vector<glm::
     return f;
 }
 
+// ---- the tight fit ----------------------------------------------------------------------------
+
+// A window of the light's view (tangents for perspective, eye-space x and y for orthographic)
+// widened by the side margin around its middle, each half at least `min_half`.
+void widen_window(float& lo, float& hi, float min_half) {
+    const float half = std::max(0.5f * (hi - lo) * kSideMargin, min_half);
+    const float mid = 0.5f * (lo + hi);
+    lo = mid - half;
+    hi = mid + half;
+}
+
+// A half-space given in the light's eye space, in world space: (n, d).(V p) = (V^T (n, d)).p.
+HalfSpace to_world(const glm::mat4& view, const glm::vec4& eye_half_space) { return glm::transpose(view) * eye_half_space; }
+
+bool inside_box(const scene::Bounds& b, const glm::vec3& p) {
+    if (b.empty()) return false;
+    // A hair of slack, relative to the coordinates: a light on a face counts as inside.
+    const float m = 1e-5f * std::max({1.0f, max_abs_component(b.min), max_abs_component(b.max)});
+    return glm::all(glm::greaterThanEqual(p, b.min - m)) && glm::all(glm::lessThanEqual(p, b.max + m));
+}
+
+// The casters that reach into the window (half-spaces in the light's eye space, the far one
+// included), and their nearest depth from the light (eye-space -z) over the part inside.
+void select_casters(const std::vector<scene::Bounds>& casters, const glm::mat4& view,
+                    const std::vector<glm::vec4>& eye_half_spaces, std::vector<int>& inside, float& nearest) {
+    std::vector<HalfSpace> hs;
+    for (const glm::vec4& h : eye_half_spaces) hs.push_back(to_world(view, h));
+    for (size_t k = 0; k < casters.size(); ++k) {
+        const std::vector<glm::vec3> pts = clip_box(casters[k], hs);
+        if (pts.empty()) continue;
+        inside.push_back(static_cast<int>(k));
+        for (const glm::vec3& p : pts) nearest = std::min(nearest, -(view * glm::vec4(p, 1.0f)).z);
+    }
+}
+
+// A perspective window: the light's view along one direction and the visible points' extent in
+// it (tangents x/z and y/z, widened by the margin and within the half-angle cap).
+struct PerspectiveWindow {
+    glm::mat4 view{1.0f};
+    glm::vec4 raw{0.0f};          // the points' tangents before the margin: left, right, bottom, top
+    float xl = 0.0f, xr = 0.0f, yb = 0.0f, yt = 0.0f;
+    float zmin = 0.0f, zmax = 0.0f;  // the points' depth range
+    bool capped = false;          // the cap cut the window: some points fall outside
+    float use = 0.0f;             // the points' hull over the window's area: the texel use
+};
+
+// false when a point is not in front of the light's eye plane (at least front_eps).
+bool perspective_window(const glm::vec3& pos, const glm::vec3& dir, const std::vector<glm::vec3>& visible,
+                        float front_eps, PerspectiveWindow& w) {
+    w.view = look_along(pos, dir);
+    float xl = std::numeric_limits<float>::max(), xr = std::numeric_limits<float>::lowest();
+    float yb = xl, yt = xr;
+    w.zmin = xl;
+    w.zmax = 0.0f;
+    std::vector<glm::vec2> tangents;
+    tangents.reserve(visible.size());
+    for (const glm::vec3& p : visible) {
+        const glm::vec3 e = glm::vec3(w.view * glm::vec4(p, 1.0f));
+        const float depth = -e.z;
+        if (!(depth > front_eps)) return false;
+        const glm::vec2 t(e.x / depth, e.y / depth);
+        tangents.push_back(t);
+        xl = std::min(xl, t.x);
+        xr = std::max(xr, t.x);
+        yb = std::min(yb, t.y);
+        yt = std::max(yt, t.y);
+        w.zmin = std::min(w.zmin, depth);
+        w.zmax = std::max(w.zmax, depth);
+    }
+    w.raw = {xl, xr, yb, yt};
+    widen_window(xl, xr, kMinTanHalfAngle);
+    widen_window(yb, yt, kMinTanHalfAngle);
+    w.capped = xl < -kMaxTanHalfAngle || xr > kMaxTanHalfAngle || yb < -kMaxTanHalfAngle || yt > kMaxTanHalfAngle;
+    // Each side within the cap; the window keeps some width (the cap is far from the minimum).
+    w.xl = std::clamp(xl, -kMaxTanHalfAngle, kMaxTanHalfAngle - 2.0f * kMinTanHalfAngle);
+    w.xr = std::clamp(xr, w.xl + 2.0f * kMinTanHalfAngle, kMaxTanHalfAngle);
+    w.yb = std::clamp(yb, -kMaxTanHalfAngle, kMaxTanHalfAngle - 2.0f * kMinTanHalfAngle);
+    w.yt = std::clamp(yt, w.yb + 2.0f * kMinTanHalfAngle, kMaxTanHalfAngle);
+    const glm::vec2 lo(w.xl, w.yb), hi(w.xr, w.yt);
+    w.use = polygon_area(clip_to_rect(convex_hull(std::move(tangents)), lo, hi)) / ((hi.x - lo.x) * (hi.y - lo.y));
+    return true;
+}
+
+// Point and spot lights: false where the tight fit does not apply (the light inside a box, a
+// visible point beside or behind the light's eye plane).
+bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec3>& visible,
+                           const std::vector<scene::Bounds>& receivers, const std::vector<scene::Bounds>& casters,
+                           TightFit& out) {
+    const glm::vec3 pos = light.position;
+    for (const auto* boxes : {&receivers, &casters})
+        for (const scene::Bounds& b : *boxes)
+            if (inside_box(b, pos)) return false;
+
+    glm::vec3 centroid(0.0f);
+    float max_dist = 0.0f;
+    for (const glm::vec3& p : visible) {
+        centroid += p;
+        max_dist = std::max(max_dist, glm::length(p - pos));
+    }
+    centroid /= static_cast<float>(visible.size());
+    const float scale = std::max(max_dist, 1e-6f * std::max(1.0f, max_abs_component(pos)));
+    const glm::vec3 to_centroid = centroid - pos;
+    if (!(glm::length(to_centroid) > 1e-4f * scale)) return false;
+    const float front_eps = 1e-4f * scale;
+
+    // Two candidate axes: towards the points' centroid, and towards the middle of the angles the
+    // points span seen along the first (which narrows a lopsided window, e.g. a light low over a
+    // wide receiver, below the cap). The one the cap does not cut, then the one with the higher
+    // texel use.
+    PerspectiveWindow a, b;
+    const bool has_a = perspective_window(pos, glm::normalize(to_centroid), visible, front_eps, a);
+    bool has_b = false;
+    if (has_a) {
+        const float ax = 0.5f * (std::atan(a.raw.x) + std::atan(a.raw.y));
+        const float ay = 0.5f * (std::atan(a.raw.z) + std::atan(a.raw.w));
+        const glm::vec3 eye_dir = glm::normalize(glm::vec3(std::tan(ax), std::tan(ay), -1.0f));
+        const glm::vec3 dir = glm::transpose(glm::mat3(a.view)) * eye_dir;
+        has_b = perspective_window(pos, safe_normalize(dir, glm::normalize(to_centroid)), visible, front_eps, b);
+    }
+    if (!has_a && !has_b) return false;
+    const PerspectiveWindow& w =
+        !has_b ? a : !has_a ? b : a.capped != b.capped ? (a.capped ? b : a) : (b.use > a.use ? b : a);
+
+    LightFrustum& f = out.frustum;
+    f.perspective = true;
+    f.view = w.view;
+    // The casters inside the pyramid of the window, up to the farthest visible point: a caster
+    // between the light and a visible point lies there.
+    float nearest = w.zmin;
+    select_casters(casters, f.view,
+                   {{1.0f, 0.0f, w.xl, 0.0f}, {-1.0f, 0.0f, -w.xr, 0.0f}, {0.0f, 1.0f, w.yb, 0.0f},
+                    {0.0f, -1.0f, -w.yt, 0.0f}, {0.0f, 0.0f, 1.0f, w.zmax}},
+                   out.casters, nearest);
+
+    f.zfar = 1.02f * w.zmax;
+    f.znear = std::max(0.98f * nearest, f.zfar * 1e-4f);
+    if (!(f.zfar > f.znear)) f.zfar = f.znear * 1.04f + 1e-6f;
+    f.proj = glm::frustum(f.znear * w.xl, f.znear * w.xr, f.znear * w.yb, f.znear * w.yt, f.znear, f.zfar);
+    return true;
+}
+
+// Directional lights: the eye up the light's direction, outside the sphere around every box and
+// visible point, so everything is in front of it.
+void fit_tight_orthographic(const scene::Light& light, const std::vector<glm::vec3>& visible,
+                            const std::vector<scene::Bounds>& receivers, const std::vector<scene::Bounds>& casters,
+                            TightFit& out) {
+    const glm::vec3 dir = safe_normalize(light.direction, glm::vec3(0.0f, -1.0f, 0.0f));
+    glm::vec3 centroid(0.0f);
+    for (const glm::vec3& p : visible) centroid += p;
+    centroid /= static_cast<float>(visible.size());
+    float radius = 0.0f;
+    for (const glm::vec3& p : visible) radius = std::max(radius, glm::length(p - centroid));
+    for (const auto* boxes : {&receivers, &casters})
+        for (const scene::Bounds& b : *boxes)
+            if (!b.empty())
+                for (const glm::vec3& c : scene::corners(b)) radius = std::max(radius, glm::length(c - centroid));
+    const float tiny = 1e-4f * std::max(1.0f, max_abs_component(centroid));
+    const float back = radius * 1.05f + tiny;
+
+    LightFrustum& f = out.frustum;
+    f.perspective = false;
+    f.view = look_along(centroid - dir * back, dir);
+
+    float xl = std::numeric_limits<float>::max(), xr = std::numeric_limits<float>::lowest();
+    float yb = xl, yt = xr;
+    float zmin = xl, zmax = xr;
+    for (const glm::vec3& p : visible) {
+        const glm::vec3 e = glm::vec3(f.view * glm::vec4(p, 1.0f));
+        xl = std::min(xl, e.x);
+        xr = std::max(xr, e.x);
+        yb = std::min(yb, e.y);
+        yt = std::max(yt, e.y);
+        zmin = std::min(zmin, -e.z);
+        zmax = std::max(zmax, -e.z);
+    }
+    widen_window(xl, xr, tiny);
+    widen_window(yb, yt, tiny);
+
+    float nearest = zmin;
+    select_casters(casters, f.view,
+                   {{1.0f, 0.0f, 0.0f, -xl}, {-1.0f, 0.0f, 0.0f, xr}, {0.0f, 1.0f, 0.0f, -yb}, {0.0f, -1.0f, 0.0f, yt},
+                    {0.0f, 0.0f, 1.0f, zmax}},
+                   out.casters, nearest);
+
+    const float zpad = std::max(0.01f * (zmax - nearest), tiny);
+    f.znear = nearest - zpad;
+    f.zfar = zmax + zpad;
+    f.proj = glm::ortho(xl, xr, yb, yt, f.znear, f.zfar);
+}
+
 }  // namespace
+
+std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                               const glm::mat4& camera_view_proj) {
+    const std::array<HalfSpace, 6> camera = clip_volume_half_spaces(camera_view_proj);
+    std::vector<HalfSpace> hs(camera.begin(), camera.end());
+    // A spot light lights nothing outside its outer cone: the four planes through the light that
+    // touch the cone (a pyramid holding it), when the cone is under a hemisphere.
+    const float theta = light.spot_outer_cone;
+    if (light.type == scene::LightType::Spot && theta >= 0.0f && theta < glm::radians(89.0f)) {
+        const glm::vec3 d = safe_normalize(light.direction, glm::vec3(0.0f, -1.0f, 0.0f));
+        const glm::vec3 u =
+            glm::normalize(glm::cross(d, std::fabs(d.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.0f, 0.0f, 1.0f)));
+        const glm::vec3 v = glm::cross(d, u);
+        const float s = std::sin(theta);
+        const float c = std::cos(theta);
+        for (const glm::vec3& e : {u, -u, v, -v}) {
+            const glm::vec3 n = s * d - c * e;
+            hs.emplace_back(n, -glm::dot(n, light.position));
+        }
+    }
+    std::vector<glm::vec3> out;
+    for (const scene::Bounds& b : receivers) {
+        const std::vector<glm::vec3> pts = clip_box(b, hs);
+        out.insert(out.end(), pts.begin(), pts.end());
+    }
+    return out;
+}
+
+float texel_use(const LightFrustum& f, const std::vector<glm::vec3>& points) {
+    const glm::mat4 vp = f.view_proj();
+    std::vector<glm::vec2> ndc;
+    for (const glm::vec3& p : points) {
+        const glm::vec4 c = vp * glm::vec4(p, 1.0f);
+        if (!(c.w > 0.0f)) continue;
+        const glm::vec2 n = glm::vec2(c) / c.w;
+        if (std::isfinite(n.x) && std::isfinite(n.y)) ndc.push_back(n);
+    }
+    const float area = polygon_area(clip_to_rect(convex_hull(std::move(ndc)), glm::vec2(-1.0f), glm::vec2(1.0f)));
+    return std::clamp(area / 4.0f, 0.0f, 1.0f);
+}
+
+TightFit fit_light_frustum_tight(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                 const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj) {
+    TightFit r;
+    r.visible = visible_receiver_points(light, receivers, camera_view_proj);
+    if (!r.visible.empty()) {
+        if (light.type == scene::LightType::Directional) {
+            fit_tight_orthographic(light, r.visible, receivers, casters, r);
+            r.tight = true;
+        } else {
+            r.tight = fit_tight_perspective(light, r.visible, receivers, casters, r);
+        }
+    }
+    if (!r.tight) {
+        // The fallback: the old fit around the corners of the bounds of everything, every caster drawn.
+        scene::Bounds all;
+        for (const auto* boxes : {&receivers, &casters})
+            for (const scene::Bounds& b : *boxes) all.add(b);
+        r.frustum = all.empty() ? fit_light_frustum(light, {}, light.position + light.direction)
+                                : fit_light_frustum(light, scene::corners(all), all.center());
+        r.casters.clear();
+        for (size_t k = 0; k < casters.size(); ++k) r.casters.push_back(static_cast<int>(k));
+    }
+    r.texel_use = texel_use(r.frustum, r.visible);
+    return r;
+}
 
 LightFrustum fit_light_frustum(const scene::Light& light, const std::vector<glm::vec3>& points,
                                const glm::vec3& aim) {

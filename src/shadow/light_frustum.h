@@ -27,6 +27,44 @@ struct LightFrustum {
 LightFrustum fit_light_frustum(const scene::Light& light, const std::vector<glm::vec3>& points,
                                const glm::vec3& aim);
 
+// The tight fit: the light's frustum around what the camera can see shadowed, not the whole scene.
+struct TightFit {
+    LightFrustum frustum;
+    // The share of the map (0..1) covered by the receivers in view: the area of the convex hull
+    // of the visible receiver points in the light's NDC, clipped to [-1,1]^2, over 4.
+    float texel_use = 0.0f;
+    // Indices into the `casters` argument of those the map must hold (inside the fitted window,
+    // no farther from the light than the farthest visible receiver point); every one in the
+    // fallback.
+    std::vector<int> casters;
+    // The points of the receivers inside the camera's view (and a spot light's cone), world space.
+    std::vector<glm::vec3> visible;
+    // false: the fallback, fit_light_frustum over every caster's and receiver's bounds (no
+    // receiver in view, or a point or spot light inside a caster's or receiver's bounds).
+    bool tight = false;
+};
+
+// The vertices of each receiver box clipped to the camera's clip volume (camera_view_proj) and,
+// for a spot light, to the four planes of the pyramid around its outer cone (when under 90
+// degrees): every point of a receiver the camera can see lit lies in their convex hulls.
+std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                               const glm::mat4& camera_view_proj);
+
+// The share of the map of frustum `f` covered by the convex hull of `points` (see TightFit);
+// points at or behind a perspective light's eye plane are left out.
+float texel_use(const LightFrustum& f, const std::vector<glm::vec3>& points);
+
+// Fit the light's projection to what matters: the visible receiver points, looked at from the
+// light (point, spot) towards their centroid or along the light (directional), with an asymmetric
+// frustum (tangents) or box around their projected extent (1% margin), the far plane just beyond
+// the farthest of them and the near plane just before the nearest of them and of the casters that
+// reach into that window (each caster box clipped to the window and the far plane). Every visible
+// receiver point, and every point of a caster between the light and one, is inside the returned
+// clip volume, except where a perspective window would pass the 75 degree half-angle cap (as in
+// fit_light_frustum). Degenerate input falls back to fit_light_frustum (see TightFit::tight).
+TightFit fit_light_frustum_tight(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                 const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj);
+
 // Matrix that maps clip space [-1,1] to texture space [0,1] (the sheet's B).
 glm::mat4 clip_to_texture();
 

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "render/plan.h"
 #include "scene/course_scene.h"
 #include "shadow/pcf.h"
@@ -132,6 +134,37 @@ TEST_F(PlanTest, AnUnchangedMapIsReusedAndAMovedOneIsNot) {
     s.encoding = shadow::Encoding::RGBA;
     s.map_size = 512;
     EXPECT_FALSE(make(&moved).passes[0].skipped);
+}
+
+TEST_F(PlanTest, TheMapIsFittedToWhatTheCameraSees) {
+    const FramePlan p = make();
+    ASSERT_TRUE(p.texel_use);
+    EXPECT_GT(*p.texel_use, 0.5f) << "the tight fit covers most of the map with the table in view";
+    EXPECT_NE(p.passes[0].detail.find("texel use"), std::string::npos) << p.passes[0].detail;
+    EXPECT_NE(p.to_text().find("texel use"), std::string::npos);
+    const auto j = nlohmann::json::parse(p.to_json());
+    EXPECT_FLOAT_EQ(static_cast<float>(j["light_frustum"]["texel_use"].get<double>()), *p.texel_use);
+    // The fit follows the camera: another view, another map.
+    render::FrameInputs in = kIn;
+    in.view = glm::lookAt(glm::vec3(3.0f, 2.0f, 3.0f), glm::vec3(0.5f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    const FramePlan other = render::plan(course.scene, s, caps, in, &p);
+    EXPECT_FALSE(other.passes[0].skipped);
+    EXPECT_NE(other.light_frustum->view_proj(), p.light_frustum->view_proj());
+    // A caster far out of the light's window is not drawn into the map.
+    auto& teapot = course.scene.objects[static_cast<size_t>(course.teapot)];
+    teapot.world = glm::translate(glm::mat4(1.0f), glm::vec3(40.0f, 0.0f, 0.0f)) * teapot.world;
+    const FramePlan away = make();
+    ASSERT_EQ(away.passes[0].draws.size(), 1u);
+    EXPECT_EQ(away.passes[0].draws[0].object, course.table);
+    EXPECT_NE(away.passes[0].detail.find("1 of 2 caster(s)"), std::string::npos) << away.passes[0].detail;
+    // With the automatic bias the lookup gets the middle of the (asymmetric) window.
+    s.bias_auto = true;
+    const FramePlan biased = make();
+    const auto& b = biased.passes[1].bindings;
+    const auto lookup = std::find_if(b.begin(), b.end(), [](const render::Binding& x) { return x.name == "shadow lookup"; });
+    ASSERT_NE(lookup, b.end());
+    EXPECT_TRUE(std::any_of(lookup->uniforms.begin(), lookup->uniforms.end(),
+                            [](const render::Uniform& u) { return u.name == "u_bias_center"; }));
 }
 
 TEST_F(PlanTest, PlanarShadowsTakeTheGroundOutOfTheCameraPass) {

@@ -10,8 +10,11 @@
 //    far fewer pixels change, and those that do are mostly acne that only mediump shows;
 //  - r8 at its default (0.005 = 2^-8 + e): the 8-bit step dominates, mediump changes little;
 //  - mediump compares the depth with the biased depth rounded to fp16, so the bias only counts in
-//    whole depth steps: 0.0003 and 0.0007 (both one step of 2^-11 once rounded) give the same
-//    image under mediump, while under highp the larger bias removes thousands of acne pixels.
+//    whole depth steps: 0.0003 and 0.0007 (both one step of 2^-11 once rounded, for depths in
+//    [0.5, 1)) give nearly the same image under mediump, while under highp the larger bias removes
+//    thousands of acne pixels. Nearly: the light's frustum is fitted tightly (its near plane at
+//    the nearest caster), so the teapot's depths lie below 0.5 too, where fp16's steps are finer
+//    and the two biases round to different counts of steps.
 import { runTest, openPage, frameAt, check } from './harness.mjs';
 
 const T = 0.6;
@@ -89,8 +92,8 @@ await runTest('web.precision', async ({ server, browser }) => {
         `at the sheet's bias mediump should show more acne than highp: ${JSON.stringify(dSheet)}`);
   check(dR8.differing < 0.01 * n, `r8 at its default bias: mediump changes ${dR8.differing} pixels`);
   check(dStepHigh.differing > 5000, `under highp, bias 0.0003 -> 0.0007 changes only ${dStepHigh.differing} pixels`);
-  check(dStepMed.differing === 0, `under mediump, bias 0.0003 and 0.0007 (one depth step each) differ in ` +
-                                  `${dStepMed.differing} pixels`);
+  check(dStepMed.differing * 4 < dStepHigh.differing, `under mediump, bias 0.0003 and 0.0007 (one depth step each ` +
+        `in [0.5, 1)) differ in ${dStepMed.differing} pixels, not far fewer than under highp (${dStepHigh.differing})`);
 
   // Back to highp gives the highp image again (the variant is switched, not left behind).
   const again = await frame('rgba', '0.0002', 'highp');

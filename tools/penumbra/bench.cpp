@@ -279,6 +279,7 @@ void run_sweep(Sweep& w) {
             const auto vis = red_channel(r.read_image());
             row.score = measure::score(vis, truth.lit, valid, o.soft_samples > 0 ? &truth.soft : nullptr);
             row.bytes = map ? map->desc.bytes() : 0;
+            if (map && plan.texel_use) row.texel_use_pct = 100.0 * static_cast<double>(*plan.texel_use);
             if (pictures && (s.map_size == 1024 || s.technique != render::Technique::ShadowMap)) {
                 std::string name = spec.label + "-" + row.technique + (row.map ? "-" + std::to_string(row.map) : "") + "-errors.png";
                 std::replace(name.begin(), name.end(), ' ', '-');

@@ -66,6 +66,7 @@ struct Row {
     double ms_shadow = 0.0, ms_camera = 0.0;
     int redrawn_moving = 0, redrawn_still = 0, frames = 0;
     std::size_t bytes = 0;
+    double texel_use_pct = -1.0;  // the share of the map covered by the receivers in view; < 0: no map
 };
 
 // ---- the sweep -------------------------------------------------------------------------------

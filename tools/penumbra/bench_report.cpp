@@ -49,12 +49,13 @@ void write_text(const fs::path& path, const std::string& text) {
 std::string csv(const Sweep& w) {
     std::ostringstream o;
     o << "scene,time,width,height,technique,encoding,filter,map_size," << measure::score_csv_header()
-      << ",ms_moving,ms_still,ms_shadow_pass,ms_camera_pass,frames,redrawn_moving,redrawn_still,shadow_map_bytes,settings\n";
+      << ",ms_moving,ms_still,ms_shadow_pass,ms_camera_pass,frames,redrawn_moving,redrawn_still,shadow_map_bytes,texel_use_pct,settings\n";
     for (const Row& r : w.rows) {
         o << r.scene << "," << fixed(r.time, 3) << "," << w.width << "," << w.height << "," << r.technique << "," << r.encoding << ","
           << r.filter << "," << r.map << "," << measure::score_csv_cells(r.score) << "," << fixed(r.ms_moving, 3) << ","
           << fixed(r.ms_still, 3) << "," << fixed(r.ms_shadow, 3) << "," << fixed(r.ms_camera, 3) << "," << r.frames << ","
-          << r.redrawn_moving << "," << r.redrawn_still << "," << r.bytes << ",\"" << r.settings << "\"\n";
+          << r.redrawn_moving << "," << r.redrawn_still << "," << r.bytes << ","
+          << (r.texel_use_pct >= 0.0 ? fixed(r.texel_use_pct, 1) : "") << ",\"" << r.settings << "\"\n";
     }
     return o.str();
 }
@@ -257,6 +258,19 @@ std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& fro
         }
         o << "\n";
     }
+    // The share of the map the receivers in view cover: one figure per scene frame (the fit does
+    // not depend on the encoding, the filter or the map size).
+    std::vector<std::pair<std::string, double>> uses;
+    for (const auto& l : scene_labels)
+        for (const Row* r : all)
+            if (r->scene == l && r->texel_use_pct >= 0.0) {
+                uses.emplace_back(l, r->texel_use_pct);
+                break;
+            }
+    if (!uses.empty()) {
+        o << "\n## Texel use: the share of the shadow map covered by the receivers in view\n\n| scene frame | texel use % |\n|---|---:|\n";
+        for (const auto& [l, u] : uses) o << "| " << l << " | " << fixed(u, 1) << " |\n";
+    }
     for (int table = 0; table < 2; ++table) {
         o << "\n## " << (table == 0 ? "Error % (all scenes)" : "ms/frame with the light moving (all scenes)") << " by map size\n\n| technique |";
         for (int m : w.o.maps) o << " " << m << " |";
@@ -384,6 +398,7 @@ void read_csv(Sweep& w, const std::string& path) {
         r.redrawn_moving = static_cast<int>(num("redrawn_moving", 0));
         r.redrawn_still = static_cast<int>(num("redrawn_still", 0));
         r.bytes = static_cast<std::size_t>(num("shadow_map_bytes", 0));
+        r.texel_use_pct = num("texel_use_pct", -1.0);
         if (r.scene.empty() || r.technique.empty())
             throw CommandError{"--from-csv " + path + ":" + std::to_string(line_no) + ": no scene or technique", 2};
         if (std::find(labels.begin(), labels.end(), r.scene) == labels.end()) labels.push_back(r.scene);

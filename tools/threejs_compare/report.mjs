@@ -64,10 +64,12 @@ export function markdown(o, env, columns, rows, cameraCheck, frustum, summary, a
                    g.per.map((p) => `${p.differing} (${p.meanLevels.toFixed(3)})`).join(' | ') + ' |')].join('\n');
   const basicMax = Math.max(...agreement.slice(0, 2).flatMap((g) => g.per.map((p) => p.differing)));
   const basicSame = basicMax === 0;
+  const win = frustum && frustum.window ? frustum.window : frustum ? [-frustum.tanX, frustum.tanX, -frustum.tanY, frustum.tanY] : null;
   const fr = frustum ? `at t = ${frustum.t}: the light at (${frustum.position.map((v) => v.toFixed(3)).join(', ')}), ` +
-    `aimed at (${frustum.aim.map((v) => v.toFixed(3)).join(', ')}), tan of the half-angles ${frustum.tanX.toFixed(4)} x ` +
-    `${frustum.tanY.toFixed(4)} (spot angle ${frustum.angleDeg.toFixed(2)} degrees, shadow.aspect ` +
-    `${(frustum.tanX / frustum.tanY).toFixed(4)}), near ${frustum.near.toFixed(4)}, far ${frustum.far.toFixed(4)}` : '';
+    `aimed at (${frustum.aim.map((v) => v.toFixed(3)).join(', ')}), the window's tangents ${win[0].toFixed(4)} .. ${win[1].toFixed(4)} x ` +
+    `${win[2].toFixed(4)} .. ${win[3].toFixed(4)} (spot angle ${frustum.angleDeg.toFixed(2)} degrees, shadow.aspect ` +
+    `${(frustum.tanX / frustum.tanY).toFixed(4)}), near ${frustum.near.toFixed(4)}, far ${frustum.far.toFixed(4)}` +
+    (frustum.tight === false ? ' (the fit around the whole scene: penumbra\'s fallback)' : '') : '';
   const doc = `# three.js side by side
 
 The course scene (the teapot on the marble table under the circling point light), exported by
@@ -143,13 +145,17 @@ ${cam}
   (\`KHR_lights_punctual\`). three.js loads it with GLTFLoader; the ground truth ray-traces
   penumbra's built-in scene at the same t and reads penumbra's camera, which the table above shows
   to be the exported one.
-- **The light.** penumbra draws the point light's shadows with one 2D perspective map aimed from
-  the light at the centre of the casters' and receivers' bounds and fitted tightly around them.
-  A three.js PointLight would use a cube map (six passes, a cube depth texture), so three.js gets a
-  SpotLight at the light's position whose shadow camera is exactly penumbra's frustum: the same aim
-  and up vector, angle = atan(tan_y), \`shadow.aspect\` = tan_x / tan_y, the same near and far,
-  refitted every frame from the moved teapot's bounds as penumbra refits it (${fr}). Its cone
-  covers every caster and receiver, so it lights what the point light lights.
+- **The light.** penumbra draws the point light's shadows with one 2D perspective map fitted
+  tightly to what the camera sees: aimed from the light at the receivers in view, an asymmetric
+  frustum around them, the near plane at the nearest caster that reaches into it
+  (\`shadow::fit_light_frustum_tight\`). A three.js PointLight would use a cube map (six passes, a
+  cube depth texture), so three.js gets a SpotLight at the light's position whose shadow camera is
+  exactly penumbra's frustum, fitted by the same steps in double (\`tests/threejs/compare.js\`):
+  the same aim and up vector, angle = atan(tan_y) and \`shadow.aspect\` = tan_x / tan_y over the
+  symmetric frame around the axis, the window a view offset inside it
+  (\`PerspectiveCamera.setViewOffset\`), the same near and far, refitted every frame from the moved
+  teapot's bounds as penumbra refits it (${fr}). Its cone lights the receivers in view (the
+  visibility images do not depend on it).
 - **Visibility.** penumbra: the page's \`aov=visibility\` (255 lit, 0 shadowed, PCF fractions
   between). three.js: a second render in which every mesh gets a \`ShadowMaterial\` of opacity 1 on
   a white background; it outputs alpha = 1 - visibility, and blending (one minus source alpha,
@@ -215,7 +221,8 @@ ${cam}
   its map only when the light or a caster moved (here they always do) and does its frustum fit and
   the scene's animation inside the clock (three.js's refit and node updates are outside it).
 - **Culling and antialiasing.** Both canvases have no antialiasing, a depth and a stencil buffer,
-  a preserved drawing buffer. three.js's frustum culling is off (penumbra culls nothing); the camera
+  a preserved drawing buffer. three.js's frustum culling is off (penumbra leaves out of its map the
+  casters outside the light's window, which changes no pixel of the map); the camera
   pass draws front faces in three.js (FrontSide), as the truth sees them.
 `;
   return { table, doc };

@@ -54,6 +54,37 @@ std::string faces_summary(const Pass& p) {
     return out;
 }
 
+std::string percent(float share) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.1f%%", 100.0 * static_cast<double>(share));
+    return b;
+}
+
+std::string caster_count(size_t drawn, size_t all) {
+    return drawn == all ? std::to_string(all) + " caster(s)"
+                        : std::to_string(drawn) + " of " + std::to_string(all) + " caster(s)";
+}
+
+// The tight fit for this frame's camera: receivers and casters by their world bounds.
+shadow::TightFit fit_to_view(const PlanContext& c) {
+    std::vector<scene::Bounds> receivers;
+    std::vector<scene::Bounds> casters;
+    for (int i : c.drawable) {
+        const scene::Object& o = c.scene.objects[static_cast<size_t>(i)];
+        if (o.receives_shadow) receivers.push_back(scene::object_bounds(c.scene, o));
+    }
+    for (int i : c.casters) casters.push_back(scene::object_bounds(c.scene, c.scene.objects[static_cast<size_t>(i)]));
+    if (c.settings.light_fit == LightFit::Tight)
+        return shadow::fit_light_frustum_tight(c.light, receivers, casters, c.plan.camera.view_proj);
+    // --light-fit scene: the frustum around every caster and receiver, every caster drawn.
+    shadow::TightFit fit;
+    fit.frustum = shadow::fit_light_frustum(c.light, scene::corners(c.shadowed), c.shadowed.center());
+    fit.visible = shadow::visible_receiver_points(c.light, receivers, c.plan.camera.view_proj);
+    fit.texel_use = shadow::texel_use(fit.frustum, fit.visible);
+    for (size_t k = 0; k < casters.size(); ++k) fit.casters.push_back(static_cast<int>(k));
+    return fit;
+}
+
 class ShadowMapModule : public Module {
 public:
     std::string_view name() const override { return "shadowmap"; }
@@ -84,8 +115,14 @@ public:
                                    ", the smallest map that still resolves a shadow");
             size = kMinMap;
         }
-        const shadow::LightFrustum f = shadow::fit_light_frustum(c.light, scene::corners(c.shadowed), c.shadowed.center());
+        // The light's frustum around the receivers the camera sees and the casters that can
+        // shadow them; only those casters go into the map.
+        const shadow::TightFit fit = fit_to_view(c);
+        const shadow::LightFrustum& f = fit.frustum;
         c.plan.light_frustum = f;
+        c.plan.texel_use = fit.texel_use;
+        std::vector<int> casters;
+        for (int k : fit.casters) casters.push_back(c.casters[static_cast<size_t>(k)]);
 
         ResourceDesc d;
         d.name = kMap;
@@ -101,7 +138,8 @@ public:
         // The map depends on the light's matrix, the casters and how depth is packed.
         ContentKey key;
         key.add(f.view_proj());
-        for (int i : c.casters) {
+        for (int i : casters) {
+            key.add(i);
             key.add(c.scene.objects[static_cast<size_t>(i)].world);
             key.add(c.scene.objects[static_cast<size_t>(i)].mesh);
         }
@@ -121,7 +159,7 @@ public:
         p.object_uniforms = ObjectUniforms::Mvp;
         p.view_proj = f.view_proj();
         const Variant v = depth_variant(s.encoding, c.depth_path);
-        for (int i : c.casters) {
+        for (int i : casters) {
             p.draws.push_back(c.mesh_draw(i));
             p.draws.back().variant = v;
             p.draws.back().cull = map_cull(s.map_faces, c.scene, p.draws.back());
@@ -135,7 +173,8 @@ public:
             if (dr.cull == p.state.cull) dr.cull.reset();
         p.detail = std::to_string(size) + "x" + std::to_string(size) + " " + std::string(shadow::to_string(s.encoding)) +
                    ", " + (f.perspective ? "perspective" : "orthographic") + " light, " +
-                   std::to_string(c.casters.size()) + " caster(s), faces " + faces_summary(p);
+                   caster_count(casters.size(), c.casters.size()) + ", faces " + faces_summary(p) + ", texel use " +
+                   percent(fit.texel_use) + (fit.tight ? "" : ", fitted around the whole scene");
         c.add_pass(std::move(p));
     }
 
@@ -186,6 +225,9 @@ public:
             b.uniforms.push_back({"u_light_rotation", glm::mat3(f.view)});
             b.uniforms.push_back({"u_bias_slope", glm::vec4(1.0f / f.proj[0][0], 1.0f / f.proj[1][1], f.znear, f.zfar)});
             b.uniforms.push_back({"u_bias_kernel", glm::vec2(2.0f * texel, shadow::kernel_reach_texels(s.filter))});
+            // The window's middle (tangents) of an asymmetric perspective frustum: P[2][0] / P[0][0].
+            if (f.perspective)
+                b.uniforms.push_back({"u_bias_center", glm::vec2(f.proj[2][0] / f.proj[0][0], f.proj[2][1] / f.proj[1][1])});
         }
         const std::uint32_t bit = 1u << cam.bindings.size();
         cam.bindings.push_back(std::move(b));

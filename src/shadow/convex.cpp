@@ -1,0 +1,183 @@
+// Half-spaces, a box clipped by them, and the 2D hull, rectangle clip and area (see convex.h).
+#include "shadow/convex.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace penumbra::shadow {
+
+namespace {
+
+float max_abs_component(const glm::vec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
+
+HalfSpace normalized(const glm::vec4& h) {
+    const float len = glm::length(glm::vec3(h));
+    if (!(len > 0.0f) || !std::isfinite(len)) return {0.0f, 0.0f, 0.0f, 1.0f};
+    return h / len;
+}
+
+}  // namespace
+
+std::array<HalfSpace, 6> clip_volume_half_spaces(const glm::mat4& m) {
+    // Gribb & Hartmann: with the matrix's rows r0..r3, -w <= x is (r3 + r0).p >= 0, and so on.
+    const auto row = [&m](int i) { return glm::vec4(m[0][i], m[1][i], m[2][i], m[3][i]); };
+    const glm::vec4 w = row(3);
+    return {normalized(w + row(0)), normalized(w - row(0)), normalized(w + row(1)),
+            normalized(w - row(1)), normalized(w + row(2)), normalized(w - row(2))};
+}
+
+std::vector<glm::vec3> clip_polygon(const std::vector<glm::vec3>& poly, const HalfSpace& h, float eps) {
+    std::vector<glm::vec3> out;
+    const size_t n = poly.size();
+    if (n == 0) return out;
+    out.reserve(n + 1);
+    for (size_t i = 0; i < n; ++i) {
+        const glm::vec3& a = poly[i];
+        const glm::vec3& b = poly[(i + 1) % n];
+        const float da = signed_distance(h, a);
+        const float db = signed_distance(h, b);
+        const bool ina = da >= -eps;
+        const bool inb = db >= -eps;
+        if (ina) out.push_back(a);
+        if (ina != inb) {
+            // One side is beyond eps outside, so da - db is not zero; the crossing is at the plane.
+            const float t = std::clamp(da / (da - db), 0.0f, 1.0f);
+            out.push_back(a + t * (b - a));
+        }
+    }
+    return out;
+}
+
+std::vector<glm::vec3> clip_box(const scene::Bounds& box, const std::vector<HalfSpace>& half_spaces) {
+    std::vector<glm::vec3> out;
+    if (box.empty()) return out;
+    const glm::vec3 lo = box.min;
+    const glm::vec3 hi = box.max;
+    const glm::vec3 centre = box.center();
+    const float radius = 0.5f * glm::length(hi - lo);
+    // Tolerance for "on the plane", relative to the coordinates' magnitude (float rounding).
+    const float scale = std::max({radius, max_abs_component(lo), max_abs_component(hi)});
+    const float eps = 1e-5f * scale;
+
+    std::vector<HalfSpace> hs;
+    for (const HalfSpace& h : half_spaces) {
+        const float len = glm::length(glm::vec3(h));
+        if (!(len > 0.0f) || !std::isfinite(len)) {
+            if (h.w < 0.0f) return out;  // a half-space that holds nothing
+            continue;                    // one that holds everything
+        }
+        hs.push_back(h / len);
+    }
+    // A half-space with every corner beyond it: nothing of the box is inside.
+    const std::vector<glm::vec3> corners = scene::corners(box);
+    for (const HalfSpace& h : hs)
+        if (std::all_of(corners.begin(), corners.end(), [&](const glm::vec3& p) { return signed_distance(h, p) < -eps; }))
+            return out;
+
+    const std::array<HalfSpace, 6> box_hs = {HalfSpace(1, 0, 0, -lo.x), HalfSpace(-1, 0, 0, hi.x), HalfSpace(0, 1, 0, -lo.y),
+                                             HalfSpace(0, -1, 0, hi.y), HalfSpace(0, 0, 1, -lo.z), HalfSpace(0, 0, -1, hi.z)};
+    const auto clip_all = [&](std::vector<glm::vec3> poly, size_t skip, bool with_box) {
+        if (with_box)
+            for (const HalfSpace& h : box_hs) {
+                if (poly.empty()) break;
+                poly = clip_polygon(poly, h, eps);
+            }
+        for (size_t j = 0; j < hs.size() && !poly.empty(); ++j)
+            if (j != skip) poly = clip_polygon(poly, hs[j], eps);
+        out.insert(out.end(), poly.begin(), poly.end());
+    };
+
+    // The box's faces (they satisfy the box's own half-spaces already).
+    for (int a = 0; a < 3; ++a) {
+        const int u = (a + 1) % 3;
+        const int v = (a + 2) % 3;
+        for (const float side : {lo[a], hi[a]}) {
+            std::vector<glm::vec3> face(4);
+            const float us[4] = {lo[u], hi[u], hi[u], lo[u]};
+            const float vs[4] = {lo[v], lo[v], hi[v], hi[v]};
+            for (int k = 0; k < 4; ++k) {
+                face[static_cast<size_t>(k)][a] = side;
+                face[static_cast<size_t>(k)][u] = us[k];
+                face[static_cast<size_t>(k)][v] = vs[k];
+            }
+            clip_all(std::move(face), hs.size(), false);
+        }
+    }
+    // Each half-space's plane: a square around the box centre's foot on it, larger than the
+    // box's section (which lies within `radius` of that foot), clipped by the box and the others.
+    const float half = 1.01f * radius + 1e-4f * scale + 1e-30f;
+    for (size_t i = 0; i < hs.size(); ++i) {
+        const glm::vec3 n(hs[i]);
+        const glm::vec3 foot = centre - signed_distance(hs[i], centre) * n;
+        const glm::vec3 t1 = glm::normalize(glm::cross(n, std::fabs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
+        const glm::vec3 t2 = glm::cross(n, t1);
+        clip_all({foot - half * t1 - half * t2, foot + half * t1 - half * t2, foot + half * t1 + half * t2,
+                  foot - half * t1 + half * t2},
+                 i, true);
+    }
+    return out;
+}
+
+// ---- 2D ----------------------------------------------------------------------------------------
+
+namespace {
+
+float cross2(const glm::vec2& o, const glm::vec2& a, const glm::vec2& b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+}  // namespace
+
+std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> p) {
+    std::sort(p.begin(), p.end(), [](const glm::vec2& a, const glm::vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    if (p.size() < 3) return p;
+    std::vector<glm::vec2> h(2 * p.size());
+    size_t k = 0;
+    for (size_t i = 0; i < p.size(); ++i) {  // lower hull
+        while (k >= 2 && cross2(h[k - 2], h[k - 1], p[i]) <= 0.0f) --k;
+        h[k++] = p[i];
+    }
+    for (size_t i = p.size() - 1, t = k + 1; i-- > 0;) {  // upper hull
+        while (k >= t && cross2(h[k - 2], h[k - 1], p[i]) <= 0.0f) --k;
+        h[k++] = p[i];
+    }
+    h.resize(k - 1);  // the last point is the first
+    return h;
+}
+
+std::vector<glm::vec2> clip_to_rect(const std::vector<glm::vec2>& poly, const glm::vec2& lo, const glm::vec2& hi) {
+    std::vector<glm::vec2> cur = poly;
+    // Keep sign * (p[axis] - bound) >= 0 for each of the four edges.
+    const struct {
+        int axis;
+        float bound;
+        float sign;
+    } edges[4] = {{0, lo.x, 1.0f}, {0, hi.x, -1.0f}, {1, lo.y, 1.0f}, {1, hi.y, -1.0f}};
+    for (const auto& e : edges) {
+        if (cur.empty()) break;
+        std::vector<glm::vec2> next;
+        for (size_t i = 0; i < cur.size(); ++i) {
+            const glm::vec2& a = cur[i];
+            const glm::vec2& b = cur[(i + 1) % cur.size()];
+            const float da = e.sign * (a[e.axis] - e.bound);
+            const float db = e.sign * (b[e.axis] - e.bound);
+            if (da >= 0.0f) next.push_back(a);
+            if ((da >= 0.0f) != (db >= 0.0f)) next.push_back(a + (da / (da - db)) * (b - a));
+        }
+        cur = std::move(next);
+    }
+    return cur;
+}
+
+float polygon_area(const std::vector<glm::vec2>& poly) {
+    double twice = 0.0;
+    for (size_t i = 0; i < poly.size(); ++i) {
+        const glm::vec2& a = poly[i];
+        const glm::vec2& b = poly[(i + 1) % poly.size()];
+        twice += static_cast<double>(a.x) * static_cast<double>(b.y) - static_cast<double>(b.x) * static_cast<double>(a.y);
+    }
+    return static_cast<float>(std::fabs(twice) * 0.5);
+}
+
+}  // namespace penumbra::shadow

@@ -1,0 +1,48 @@
+// Small convex geometry for fitting the light's frustum: half-spaces, a box clipped by them
+// (the part of a receiver the camera sees, the part of a caster inside the light's window), and
+// in 2D a convex hull, a polygon clipped to a rectangle and its area (the share of the shadow map
+// the receivers in view cover).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace penumbra::shadow {
+
+// The half-space n.p + d >= 0 as (n, d): the normal points inside.
+using HalfSpace = glm::vec4;
+
+inline float signed_distance(const HalfSpace& h, const glm::vec3& p) { return glm::dot(glm::vec3(h), p) + h.w; }
+
+// The six half-spaces of a view-projection matrix's clip volume (-w <= x, y, z <= w), normals of
+// unit length: left, right, bottom, top, near, far. A row that gives no plane (a degenerate
+// matrix) gives (0, 0, 0, 1), which holds everything.
+std::array<HalfSpace, 6> clip_volume_half_spaces(const glm::mat4& view_proj);
+
+// The points of `poly` (a planar convex polygon, in order) inside `h`, Sutherland-Hodgman; a point
+// up to `eps` outside counts as inside.
+std::vector<glm::vec3> clip_polygon(const std::vector<glm::vec3>& poly, const HalfSpace& h, float eps = 0.0f);
+
+// The vertices of the convex polytope box & every half-space: each face of the box clipped by the
+// half-spaces, and a polygon on each half-space's plane (wide enough to hold the box's section)
+// clipped by the box and the other half-spaces. Empty when they do not meet (or the box is empty);
+// a flat box gives the polygon it is. Points may repeat.
+std::vector<glm::vec3> clip_box(const scene::Bounds& box, const std::vector<HalfSpace>& half_spaces);
+
+// ---- 2D ----------------------------------------------------------------------------------------
+
+// The convex hull, counter-clockwise, without collinear points (Andrew's monotone chain). Fewer
+// than three distinct points: those points.
+std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> points);
+
+// A convex polygon clipped to the rectangle [lo, hi] (Sutherland-Hodgman).
+std::vector<glm::vec2> clip_to_rect(const std::vector<glm::vec2>& poly, const glm::vec2& lo, const glm::vec2& hi);
+
+// The area of a simple polygon (either orientation).
+float polygon_area(const std::vector<glm::vec2>& poly);
+
+}  // namespace penumbra::shadow

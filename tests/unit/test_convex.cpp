@@ -1,0 +1,179 @@
+// The small convex geometry behind the tight light frustum (src/shadow/convex.h): half-spaces of
+// a clip volume, a box clipped by half-spaces, and the 2D hull, rectangle clip and area that
+// measure the shadow map's texel use.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "shadow/convex.h"
+
+using namespace penumbra;
+using namespace penumbra::shadow;
+
+namespace {
+
+scene::Bounds box(const glm::vec3& lo, const glm::vec3& hi) {
+    scene::Bounds b;
+    b.add(lo);
+    b.add(hi);
+    return b;
+}
+
+bool has_point(const std::vector<glm::vec3>& pts, const glm::vec3& p, float tol = 1e-4f) {
+    return std::any_of(pts.begin(), pts.end(), [&](const glm::vec3& q) { return glm::length(q - p) < tol; });
+}
+
+bool has_point(const std::vector<glm::vec2>& pts, const glm::vec2& p, float tol = 1e-5f) {
+    return std::any_of(pts.begin(), pts.end(), [&](const glm::vec2& q) { return glm::length(q - p) < tol; });
+}
+
+}  // namespace
+
+TEST(Convex, HullDropsInnerAndCollinearPoints) {
+    const std::vector<glm::vec2> pts = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5f, 0.5f}, {0.5f, 0}, {0, 0.25f}, {1, 1}, {0.2f, 0.7f}};
+    const auto h = convex_hull(pts);
+    ASSERT_EQ(h.size(), 4u);
+    for (const glm::vec2 c : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 1)}) EXPECT_TRUE(has_point(h, c));
+    // Counter-clockwise: the signed area is positive.
+    double twice = 0.0;
+    for (size_t i = 0; i < h.size(); ++i) twice += h[i].x * h[(i + 1) % h.size()].y - h[(i + 1) % h.size()].x * h[i].y;
+    EXPECT_GT(twice, 0.0);
+    EXPECT_FLOAT_EQ(polygon_area(h), 1.0f);
+}
+
+TEST(Convex, HullOfFewOrCollinearPointsHasNoArea) {
+    EXPECT_TRUE(convex_hull({}).empty());
+    EXPECT_EQ(convex_hull({{1, 2}}).size(), 1u);
+    EXPECT_EQ(convex_hull({{1, 2}, {1, 2}, {1, 2}}).size(), 1u);
+    EXPECT_FLOAT_EQ(polygon_area(convex_hull({{0, 0}, {1, 1}, {2, 2}, {3, 3}})), 0.0f);
+}
+
+TEST(Convex, HullOfRandomPointsHoldsThemAll) {
+    std::mt19937 gen(5);
+    const auto unit = [&gen] { return static_cast<float>(gen() >> 8) * (1.0f / 16777216.0f); };
+    for (int trial = 0; trial < 20; ++trial) {
+        std::vector<glm::vec2> pts;
+        for (int i = 0; i < 50; ++i) pts.emplace_back(4.0f * unit() - 2.0f, 4.0f * unit() - 2.0f);
+        const auto h = convex_hull(pts);
+        ASSERT_GE(h.size(), 3u);
+        for (const auto& p : pts)
+            for (size_t i = 0; i < h.size(); ++i) {
+                const glm::vec2 a = h[i], b = h[(i + 1) % h.size()];
+                EXPECT_GE((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x), -1e-5f);
+            }
+    }
+}
+
+TEST(Convex, ClipToRect) {
+    // A square larger than the rectangle: the rectangle.
+    const std::vector<glm::vec2> big = {{-3, -3}, {3, -3}, {3, 3}, {-3, 3}};
+    EXPECT_FLOAT_EQ(polygon_area(clip_to_rect(big, glm::vec2(-1), glm::vec2(1))), 4.0f);
+    // A triangle half outside: (0,0), (2,0), (0,2) clipped to [-1,1]^2 keeps 1 - 0.5 * 0 ... the
+    // unit square minus nothing, since x + y <= 2 holds on all of [0,1]^2.
+    const std::vector<glm::vec2> tri = {{0, 0}, {2, 0}, {0, 2}};
+    EXPECT_FLOAT_EQ(polygon_area(clip_to_rect(tri, glm::vec2(-1), glm::vec2(1))), 1.0f);
+    // The triangle (0,0), (4,0), (0,4): [0,1]^2 again.
+    const std::vector<glm::vec2> tri2 = {{0, 0}, {4, 0}, {0, 4}};
+    const auto c = clip_to_rect(tri2, glm::vec2(-1), glm::vec2(1));
+    EXPECT_FLOAT_EQ(polygon_area(c), 1.0f);
+    EXPECT_TRUE(has_point(c, {1, 1}));
+    // A triangle cut by one edge: (0,-1), (2,-1), (0,1) keeps x <= 1: 2 - 0.5.
+    const std::vector<glm::vec2> tri3 = {{0, -1}, {2, -1}, {0, 1}};
+    EXPECT_NEAR(polygon_area(clip_to_rect(tri3, glm::vec2(-1), glm::vec2(1))), 1.5f, 1e-6f);
+    // Outside: nothing.
+    const std::vector<glm::vec2> far = {{2, 2}, {3, 2}, {3, 3}};
+    EXPECT_TRUE(clip_to_rect(far, glm::vec2(-1), glm::vec2(1)).empty());
+    EXPECT_FLOAT_EQ(polygon_area({}), 0.0f);
+}
+
+TEST(Convex, ClipVolumeHalfSpacesOfAPerspective) {
+    const glm::mat4 vp = glm::perspective(glm::radians(60.0f), 1.5f, 0.5f, 20.0f) *
+                         glm::lookAt(glm::vec3(1, 2, 5), glm::vec3(0, 0, 0), glm::vec3(0, 1, 0));
+    const auto hs = clip_volume_half_spaces(vp);
+    std::mt19937 gen(9);
+    const auto unit = [&gen] { return static_cast<float>(gen() >> 8) * (1.0f / 16777216.0f); };
+    for (int i = 0; i < 500; ++i) {
+        const glm::vec3 p(20.0f * unit() - 10.0f, 20.0f * unit() - 10.0f, 20.0f * unit() - 10.0f);
+        const glm::vec4 c = vp * glm::vec4(p, 1.0f);
+        const bool inside = c.w > 0.0f && std::fabs(c.x) <= c.w && std::fabs(c.y) <= c.w && std::fabs(c.z) <= c.w;
+        const bool all = std::all_of(hs.begin(), hs.end(), [&](const HalfSpace& h) { return signed_distance(h, p) >= 0.0f; });
+        EXPECT_EQ(inside, all) << p.x << " " << p.y << " " << p.z;
+    }
+    for (const HalfSpace& h : hs) EXPECT_NEAR(glm::length(glm::vec3(h)), 1.0f, 1e-5f);
+}
+
+TEST(Convex, ClipBoxWithoutHalfSpacesIsTheBox) {
+    const scene::Bounds b = box({-1, 0, 2}, {3, 1, 4});
+    const auto pts = clip_box(b, {});
+    for (const auto& c : scene::corners(b)) EXPECT_TRUE(has_point(pts, c));
+    for (const auto& p : pts) {
+        EXPECT_TRUE(glm::all(glm::greaterThanEqual(p, b.min - 1e-5f)));
+        EXPECT_TRUE(glm::all(glm::lessThanEqual(p, b.max + 1e-5f)));
+    }
+    EXPECT_TRUE(clip_box(scene::Bounds{}, {}).empty());
+}
+
+TEST(Convex, ClipBoxByOnePlane) {
+    const scene::Bounds b = box(glm::vec3(-1), glm::vec3(1));
+    // x + y >= 0.5: the corner (1, 1, z) stays, the cut passes through (1, -0.5, z) and (-0.5, 1, z).
+    const HalfSpace h = glm::vec4(1, 1, 0, -0.5f) / std::sqrt(2.0f);
+    const auto pts = clip_box(b, {h});
+    ASSERT_FALSE(pts.empty());
+    for (const auto& p : pts) EXPECT_GE(signed_distance(h, p), -1e-5f);
+    for (const float z : {-1.0f, 1.0f}) {
+        EXPECT_TRUE(has_point(pts, {1, 1, z}));
+        EXPECT_TRUE(has_point(pts, {1, -0.5f, z}));
+        EXPECT_TRUE(has_point(pts, {-0.5f, 1, z}));
+        EXPECT_FALSE(has_point(pts, {-1, -1, z}));
+    }
+    // A half-space the box lies beyond: nothing.
+    EXPECT_TRUE(clip_box(b, {glm::vec4(1, 0, 0, -2)}).empty());
+    // A degenerate half-space that holds nothing, and one that holds everything.
+    EXPECT_TRUE(clip_box(b, {glm::vec4(0, 0, 0, -1)}).empty());
+    EXPECT_EQ(clip_box(b, {glm::vec4(0, 0, 0, 1)}).size(), clip_box(b, {}).size());
+}
+
+TEST(Convex, ClipBoxHoldsAFrustumInsideIt) {
+    // A small camera frustum entirely inside a big box: the result is the frustum, corners included,
+    // which only the half-spaces' own polygons give.
+    const glm::mat4 vp = glm::perspective(glm::radians(50.0f), 1.0f, 0.5f, 3.0f) *
+                         glm::lookAt(glm::vec3(0, 0, 0), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0));
+    const auto hs = clip_volume_half_spaces(vp);
+    const auto pts = clip_box(box(glm::vec3(-10), glm::vec3(10)), {hs.begin(), hs.end()});
+    const glm::mat4 inv = glm::inverse(vp);
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 c = inv * glm::vec4((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f, 1.0f);
+        EXPECT_TRUE(has_point(pts, glm::vec3(c) / c.w, 1e-3f)) << i;
+    }
+    for (const auto& p : pts)
+        for (const HalfSpace& h : hs) EXPECT_GE(signed_distance(h, p), -1e-3f);
+}
+
+TEST(Convex, ClipFlatBoxGivesItsPolygon) {
+    // A table top at y = 0 (no thickness) under a camera that sees part of it.
+    const scene::Bounds table = box({-2, 0, -2}, {2, 0, 2});
+    const glm::mat4 vp = glm::perspective(glm::radians(45.0f), 1.0f, 0.1f, 30.0f) *
+                         glm::lookAt(glm::vec3(0, 1, 3), glm::vec3(0, 0, 0), glm::vec3(0, 1, 0));
+    const auto hs = clip_volume_half_spaces(vp);
+    const auto pts = clip_box(table, {hs.begin(), hs.end()});
+    ASSERT_GE(pts.size(), 3u);
+    for (const auto& p : pts) {
+        EXPECT_NEAR(p.y, 0.0f, 1e-5f);
+        for (const HalfSpace& h : hs) EXPECT_GE(signed_distance(h, p), -1e-4f);
+    }
+    // The point the camera looks at is inside the hull of the result (seen from above: x-z).
+    std::vector<glm::vec2> xz;
+    for (const auto& p : pts) xz.emplace_back(p.x, p.z);
+    const auto h = convex_hull(xz);
+    for (size_t i = 0; i < h.size(); ++i) {
+        const glm::vec2 a = h[i], b = h[(i + 1) % h.size()];
+        EXPECT_GE((b.x - a.x) * (0.0f - a.y) - (b.y - a.y) * (0.0f - a.x), 0.0f);
+    }
+    EXPECT_GT(polygon_area(h), 0.5f);
+}
