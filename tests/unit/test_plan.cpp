@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bitset>
+#include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "render/plan.h"
@@ -246,12 +249,62 @@ TEST(PcfKernel, TheShaderAndTheCpuMirrorShareTheTaps) {
             EXPECT_NE(defines[1].find(tap), std::string::npos) << tap;
         }
     }
-    // The mirror: a step in the stored depth halfway across the 4x4 kernel lights half the taps.
+    // The mirror: a step in the stored depth halfway across the 4x4 kernel lights half the taps
+    // (its corners disagree, so the early exit reads them all too).
     const auto step = [](glm::vec2 uv) { return uv.x < 0.5f ? 0.2f : 1.0f; };
     const glm::vec2 texel(1.0f / 64.0f);
-    EXPECT_FLOAT_EQ(shadow::pcf_visibility(shadow::Filter::PCF4x4, glm::vec2(0.5f), 0.6f, 0.001f, texel, step), 0.5f);
-    EXPECT_FLOAT_EQ(shadow::pcf_visibility(shadow::Filter::Hard, glm::vec2(0.25f), 0.6f, 0.001f, texel, step), 0.0f);
+    for (auto k : shadow::kAllPcfKernels) {
+        EXPECT_FLOAT_EQ(shadow::pcf_visibility(shadow::Filter::PCF4x4, k, glm::vec2(0.5f), 0.6f, 0.001f, texel, step), 0.5f);
+        EXPECT_FLOAT_EQ(shadow::pcf_visibility(shadow::Filter::Hard, k, glm::vec2(0.25f), 0.6f, 0.001f, texel, step), 0.0f);
+    }
     EXPECT_FLOAT_EQ(shadow::kernel_reach_texels(shadow::Filter::PCF4x4), 2.5f);
+}
+
+// Every one of the 2^16 lit/shadowed patterns of the 4x4 kernel's taps, through the CPU mirror:
+// the early exit equals the full kernel wherever the corners disagree or all 16 taps agree, and
+// differs exactly where the corners agree and an inner tap does not (it returns the corners'
+// 0 or 1 where the full kernel has a fraction strictly between).
+TEST(PcfKernel, TheEarlyExitDiffersOnlyWhereTheCornersAgreeAndAnInnerTapDoesNot) {
+    const auto taps = shadow::pcf_offsets(shadow::Filter::PCF4x4);
+    ASSERT_EQ(taps.size(), 16u);
+    const glm::vec2 uv(0.5f), texel(1.0f / 64.0f);
+    const float z = 0.5f, bias = 0.001f;
+    unsigned corner_bits = 0;
+    for (size_t i = 0; i < taps.size(); ++i)
+        if (shadow::pcf_is_corner(shadow::Filter::PCF4x4, taps[i])) corner_bits |= 1u << i;
+    ASSERT_EQ(corner_bits, (1u << 0) | (1u << 3) | (1u << 12) | (1u << 15));
+    int differ = 0, corners_agree_inner_not = 0;
+    for (unsigned lit = 0; lit < (1u << 16); ++lit) {
+        // Bit i set: tap i sees a far caster (lit); clear: a near one (shadowed).
+        const auto depth = [&](glm::vec2 at) {
+            const glm::vec2 o = (at - uv) / texel;
+            for (size_t i = 0; i < taps.size(); ++i)
+                if (taps[i] == o) return (lit >> i) & 1u ? 1.0f : 0.1f;
+            ADD_FAILURE() << "a tap off the kernel: " << o.x << ", " << o.y;
+            return 1.0f;
+        };
+        const float full = shadow::pcf_visibility(shadow::Filter::PCF4x4, shadow::PcfKernel::Full, uv, z, bias, texel, depth);
+        const float early =
+            shadow::pcf_visibility(shadow::Filter::PCF4x4, shadow::PcfKernel::EarlyExit, uv, z, bias, texel, depth);
+        const unsigned corners = lit & corner_bits;
+        const bool agree = corners == 0 || corners == corner_bits;
+        const bool all_agree = lit == 0 || lit == 0xffffu;
+        EXPECT_FLOAT_EQ(full, static_cast<float>(std::bitset<16>(lit).count()) / 16.0f);
+        if (!agree || all_agree) {
+            EXPECT_EQ(early, full) << std::hex << lit;
+        } else {
+            ++corners_agree_inner_not;
+            EXPECT_EQ(early, corners ? 1.0f : 0.0f) << std::hex << lit;
+            EXPECT_GT(full, 0.0f);
+            EXPECT_LT(full, 1.0f);
+            // At most the 12 inner taps' worth: full lies in [4/16, 15/16] or [1/16, 12/16].
+            EXPECT_LE(std::fabs(early - full), 12.0f / 16.0f);
+        }
+        differ += early != full;
+    }
+    // Corners all lit or all shadowed, the 12 inner taps anything but all the same: 2 (2^12 - 1).
+    EXPECT_EQ(corners_agree_inner_not, 2 * 4095);
+    EXPECT_EQ(differ, 2 * 4095);
 }
 
 }  // namespace
