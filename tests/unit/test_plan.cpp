@@ -124,6 +124,7 @@ TEST_F(PlanTest, AnUnchangedMapIsReusedAndAMovedOneIsNot) {
     EXPECT_FALSE(second.drawn("shadow-map"));
     // The camera's side of the settings does not touch the map.
     s.filter = shadow::Filter::PCF4x4;
+    s.pcf_kernel = shadow::PcfKernel::Full;
     s.bias = 0.01f;
     EXPECT_TRUE(make(&second).passes[0].skipped);
     // The light, a caster, the encoding or the map size do.
@@ -260,6 +261,50 @@ TEST(PcfKernel, TheShaderAndTheCpuMirrorShareTheTaps) {
     EXPECT_FLOAT_EQ(shadow::kernel_reach_texels(shadow::Filter::PCF4x4), 2.5f);
 }
 
+// The taps named in one generated sum, as "vec2(x, y)" strings.
+std::vector<std::string> taps_in(const std::string& define) {
+    std::vector<std::string> out;
+    for (size_t at = define.find("vec2("); at != std::string::npos; at = define.find("vec2(", at + 1))
+        out.push_back(define.substr(at, define.find(')', at) + 1 - at));
+    return out;
+}
+
+std::string tap_text(glm::vec2 t) {
+    char tap[48];
+    std::snprintf(tap, sizeof tap, "vec2(%.1f, %.1f)", static_cast<double>(t.x), static_cast<double>(t.y));
+    return tap;
+}
+
+TEST(PcfKernel, TheEarlyExitSplitsTheSameTapsIntoCornersAndRest) {
+    // PCF 4x4: the 16 taps, the 4 at (+-1.5, +-1.5) in PCF_CORNERS and the other 12 in PCF_REST.
+    const auto taps = shadow::pcf_offsets(shadow::Filter::PCF4x4);
+    const auto d = render::pcf_kernel_defines(shadow::Filter::PCF4x4, shadow::PcfKernel::EarlyExit);
+    ASSERT_EQ(d.size(), 4u);
+    EXPECT_EQ(d[0], "PCF_TAPS 16");
+    EXPECT_EQ(d[1], "PCF_EARLY_EXIT");
+    ASSERT_EQ(d[2].rfind("PCF_CORNERS(F, uv, z, bias) (", 0), 0u) << d[2];
+    ASSERT_EQ(d[3].rfind("PCF_REST(F, uv, z, bias) (", 0), 0u) << d[3];
+    EXPECT_EQ(taps_in(d[2]), (std::vector<std::string>{"vec2(-1.5, -1.5)", "vec2(1.5, -1.5)", "vec2(-1.5, 1.5)",
+                                                       "vec2(1.5, 1.5)"}));
+    auto all = taps_in(d[2]);
+    const auto rest = taps_in(d[3]);
+    EXPECT_EQ(rest.size(), 12u);
+    all.insert(all.end(), rest.begin(), rest.end());
+    std::vector<std::string> expected;
+    for (const auto& t : taps) expected.push_back(tap_text(t));
+    std::sort(all.begin(), all.end());
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(all, expected) << "every tap once, in one of the two sums";
+    // Hard and PCF 2x2 have no taps besides their corners: the same defines either way.
+    for (auto f : {shadow::Filter::Hard, shadow::Filter::PCF2x2}) {
+        EXPECT_FALSE(shadow::pcf_early_exit_applies(f));
+        EXPECT_EQ(render::pcf_kernel_defines(f, shadow::PcfKernel::EarlyExit),
+                  render::pcf_kernel_defines(f, shadow::PcfKernel::Full));
+        for (const auto& t : shadow::pcf_offsets(f)) EXPECT_TRUE(shadow::pcf_is_corner(f, t));
+    }
+    EXPECT_TRUE(shadow::pcf_early_exit_applies(shadow::Filter::PCF4x4));
+}
+
 // Every one of the 2^16 lit/shadowed patterns of the 4x4 kernel's taps, through the CPU mirror:
 // the early exit equals the full kernel wherever the corners disagree or all 16 taps agree, and
 // differs exactly where the corners agree and an inner tap does not (it returns the corners'
@@ -305,6 +350,39 @@ TEST(PcfKernel, TheEarlyExitDiffersOnlyWhereTheCornersAgreeAndAnInnerTapDoesNot)
     // Corners all lit or all shadowed, the 12 inner taps anything but all the same: 2 (2^12 - 1).
     EXPECT_EQ(corners_agree_inner_not, 2 * 4095);
     EXPECT_EQ(differ, 2 * 4095);
+}
+
+TEST_F(PlanTest, PcfKernelChoosesTheLookupsVariant) {
+    s.filter = shadow::Filter::PCF4x4;
+    const FramePlan early = make();
+    for (const auto& d : early.passes.back().draws) {
+        if (!has_define(d, "SHADOW_MAP")) continue;
+        EXPECT_TRUE(has_define(d, "PCF_EARLY_EXIT")) << d.label;
+        EXPECT_TRUE(has_define(d, "PCF_CORNERS(F,")) << d.label;
+        EXPECT_FALSE(has_define(d, "PCF_SUM(F,")) << d.label;
+    }
+    EXPECT_NE(early.passes.back().detail.find("pcf4x4 early-exit"), std::string::npos) << early.passes.back().detail;
+    s.pcf_kernel = shadow::PcfKernel::Full;
+    const FramePlan full = make();
+    for (const auto& d : full.passes.back().draws) {
+        if (!has_define(d, "SHADOW_MAP")) continue;
+        EXPECT_FALSE(has_define(d, "PCF_EARLY_EXIT")) << d.label;
+        EXPECT_TRUE(has_define(d, "PCF_SUM(F,")) << d.label;
+    }
+    EXPECT_NE(full.passes.back().detail.find("pcf4x4 full"), std::string::npos) << full.passes.back().detail;
+    // PCF 2x2 has only corners: its variant is the same under either kernel.
+    s.filter = shadow::Filter::PCF2x2;
+    const FramePlan two_full = make();
+    s.pcf_kernel = shadow::PcfKernel::EarlyExit;
+    const FramePlan two_early = make();
+    ASSERT_EQ(two_full.passes.back().draws.size(), two_early.passes.back().draws.size());
+    for (size_t i = 0; i < two_full.passes.back().draws.size(); ++i)
+        EXPECT_EQ(two_full.passes.back().draws[i].variant, two_early.passes.back().draws[i].variant);
+    // Every variant either kernel asks for is among those the shader tests compile.
+    const auto all = render::all_variants();
+    for (const FramePlan* p : {&early, &full})
+        for (const auto& d : p->passes.back().draws)
+            EXPECT_NE(std::find(all.begin(), all.end(), d.variant), all.end()) << d.variant.key();
 }
 
 }  // namespace
