@@ -1,6 +1,7 @@
 // Shadow-map lookup for the camera pass. The encoding (ENC_R8, ENC_RGBA, else a depth texture),
-// the filter's kernel (PCF_TAPS, PCF_SUM) and the bias rule (BIAS_AUTO or a constant) are chosen
-// by #define when the variant is compiled, so no shader branches on settings at run time.
+// the filter's kernel (PCF_TAPS with PCF_SUM, or PCF_EARLY_EXIT's split) and the bias rule
+// (BIAS_AUTO or a constant) are chosen by #define when the variant is compiled, so no shader
+// branches on settings at run time.
 #include "pack.glsl"
 
 uniform sampler2D u_shadow_map;
@@ -67,11 +68,20 @@ float litTap(vec2 offset, vec2 uv, float z, float bias) {
 // world space (for BIAS_AUTO). The kernel's taps (PCF_TAPS, PCF_SUM) are written into the variant
 // from shadow::pcf_offsets (render/variants.cpp): hard is one tap at the lookup point, PCF 2x2 four
 // at +-0.5 texel, PCF 4x4 sixteen at +-0.5 and +-1.5 texels (Bunnell & Pellacini).
+// PCF_EARLY_EXIT (PCF 4x4 unless --pcf-kernel full): the 4 corner taps (PCF_CORNERS) first; where
+// they agree the fragment is taken as wholly lit or wholly shadowed and the other 12 taps
+// (PCF_REST) are not read. Where they disagree the sum is that of the full kernel.
 float shadowVisibility(vec4 shadowCoord, vec3 normal) {
     if (shadowCoord.w <= 0.0) return 1.0;
     vec3 c = MP(shadowCoord.xyz / shadowCoord.w);
     if (c.x < 0.0 || c.x > 1.0 || c.y < 0.0 || c.y > 1.0 || c.z < 0.0 || c.z > 1.0) return 1.0;
     float bias = shadowBias(normal, c);
+#ifdef PCF_EARLY_EXIT
+    float corners = PCF_CORNERS(litTap, c.xy, c.z, bias);
+    if (corners == 0.0 || corners == 4.0) return corners * 0.25;
+    return (corners + PCF_REST(litTap, c.xy, c.z, bias)) / float(PCF_TAPS);
+#else
     return PCF_SUM(litTap, c.xy, c.z, bias) / float(PCF_TAPS);
+#endif
 }
 #endif

@@ -38,8 +38,9 @@ std::string_view to_string(Aov a) {
 }
 
 bool Settings::operator==(const Settings& o) const {
-    return technique == o.technique && encoding == o.encoding && filter == o.filter && map_size == o.map_size &&
-           bias == o.bias && bias_auto == o.bias_auto && map_faces == o.map_faces && light_fit == o.light_fit && precision == o.precision && aov == o.aov;
+    return technique == o.technique && encoding == o.encoding && filter == o.filter && pcf_kernel == o.pcf_kernel &&
+           map_size == o.map_size && bias == o.bias && bias_auto == o.bias_auto && map_faces == o.map_faces &&
+           light_fit == o.light_fit && precision == o.precision && aov == o.aov;
 }
 
 bool Job::operator==(const Job& o) const {
@@ -255,6 +256,14 @@ std::vector<Option<Options>> make_table() {
                       {{"hard", "hard: one tap"}, {"pcf2x2", "2x2 PCF"}, {"pcf4x4", "4x4 PCF"}});
     add(filter, [](Options& o, std::string_view v) { o.settings.filter = enum_of(v, shadow::kAllFilters); },
         [](const Options& o) { return std::string(shadow::to_string(o.settings.filter)); });
+
+    OptionInfo pcf_kernel = make_option_info("pcf-kernel", P::Technique, T::Choice,
+                          "how pcf4x4 reads its 16 taps: the 4 corners first, the rest only where they disagree "
+                          "(early-exit), or always all (full, the course's kernel)",
+                          "PCF kernel",
+                          {{"early-exit", "early exit: the 4 corner taps first"}, {"full", "full: every tap"}});
+    add(pcf_kernel, [](Options& o, std::string_view v) { o.settings.pcf_kernel = enum_of(v, shadow::kAllPcfKernels); },
+        [](const Options& o) { return std::string(shadow::to_string(o.settings.pcf_kernel)); });
 
     OptionInfo map_size = make_option_info("map-size", P::Technique, T::Integer, "shadow map width = height in texels", "Map size");
     map_size.min = 1;

@@ -43,6 +43,8 @@ struct Settings {
     Technique technique = Technique::ShadowMap;
     shadow::Encoding encoding = shadow::Encoding::RGBA;
     shadow::Filter filter = shadow::Filter::Hard;
+    // PCF 4x4's corners-first early exit, or every tap (the course's kernel); shadow/pcf.h.
+    shadow::PcfKernel pcf_kernel = shadow::PcfKernel::EarlyExit;
     int map_size = 1024;
     std::optional<float> bias;  // a constant offset; absent (and not auto): the sheet's (shadow::sheet_bias)
     bool bias_auto = true;      // --bias auto (the default): the encoding's quantum plus a receiver slope term

@@ -52,20 +52,32 @@ std::string Variant::name() const {
     return k + "]";
 }
 
-std::vector<std::string> pcf_kernel_defines(shadow::Filter f) {
+std::vector<std::string> pcf_kernel_defines(shadow::Filter f, shadow::PcfKernel kernel) {
     const auto taps = shadow::pcf_offsets(f);
-    std::string sum = "PCF_SUM(F, uv, z, bias) (";
-    for (size_t i = 0; i < taps.size(); ++i)
-        sum += std::string(i ? " + " : "") + "F(vec2(" + glsl_float(taps[i].x) + ", " + glsl_float(taps[i].y) +
-               "), uv, z, bias)";
-    return {"PCF_TAPS " + std::to_string(taps.size()), sum + ")"};
+    // The sum of F over the taps `pick` keeps, in pcf_offsets' order, as a function-like macro.
+    const auto sum_of = [&](const std::string& name, auto pick) {
+        std::string sum = name + "(F, uv, z, bias) (";
+        bool first = true;
+        for (const glm::vec2& t : taps) {
+            if (!pick(t)) continue;
+            sum += std::string(first ? "" : " + ") + "F(vec2(" + glsl_float(t.x) + ", " + glsl_float(t.y) + "), uv, z, bias)";
+            first = false;
+        }
+        return sum + ")";
+    };
+    const std::string count = "PCF_TAPS " + std::to_string(taps.size());
+    if (kernel == shadow::PcfKernel::EarlyExit && shadow::pcf_early_exit_applies(f))
+        return {count, "PCF_EARLY_EXIT",
+                sum_of("PCF_CORNERS", [&](glm::vec2 t) { return shadow::pcf_is_corner(f, t); }),
+                sum_of("PCF_REST", [&](glm::vec2 t) { return !shadow::pcf_is_corner(f, t); })};
+    return {count, sum_of("PCF_SUM", [](glm::vec2) { return true; })};
 }
 
 Variant lit_variant(const LitFeatures& f) {
     Variant v{"lit.vert", "lit.frag", {}};
     if (f.shadow_map) {
         v.defines = {"SHADOW_MAP", encoding_define(f.encoding), filter_define(f.filter)};
-        for (auto& d : pcf_kernel_defines(f.filter)) v.defines.push_back(std::move(d));
+        for (auto& d : pcf_kernel_defines(f.filter, f.pcf_kernel)) v.defines.push_back(std::move(d));
         if (f.bias_auto) {
             v.defines.emplace_back("BIAS_AUTO");
             if (f.light_perspective) v.defines.emplace_back("LIGHT_PERSPECTIVE");
@@ -112,17 +124,21 @@ std::vector<Variant> all_variants() {
     shadowing.push_back(planar);
     for (auto e : shadow::kAllEncodings)
         for (auto f : shadow::kAllFilters)
-            for (int bias = 0; bias < 3; ++bias)  // constant, auto orthographic, auto perspective
-                for (bool mediump : {false, true}) {
-                    LitFeatures sm;
-                    sm.shadow_map = true;
-                    sm.encoding = e;
-                    sm.filter = f;
-                    sm.bias_auto = bias > 0;
-                    sm.light_perspective = bias == 2;
-                    sm.mediump = mediump;
-                    shadowing.push_back(sm);
-                }
+            for (auto k : shadow::kAllPcfKernels) {
+                if (k != shadow::PcfKernel::Full && !shadow::pcf_early_exit_applies(f)) continue;  // the same variant
+                for (int bias = 0; bias < 3; ++bias)  // constant, auto orthographic, auto perspective
+                    for (bool mediump : {false, true}) {
+                        LitFeatures sm;
+                        sm.shadow_map = true;
+                        sm.encoding = e;
+                        sm.filter = f;
+                        sm.pcf_kernel = k;
+                        sm.bias_auto = bias > 0;
+                        sm.light_perspective = bias == 2;
+                        sm.mediump = mediump;
+                        shadowing.push_back(sm);
+                    }
+            }
     for (LitFeatures base : shadowing)
         for (int bits = 0; bits < 8; ++bits) {
             base.textured = bits & 1;

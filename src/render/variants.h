@@ -28,6 +28,7 @@ struct LitFeatures {
     bool shadow_map = false;  // with encoding and filter
     shadow::Encoding encoding = shadow::Encoding::RGBA;
     shadow::Filter filter = shadow::Filter::Hard;
+    shadow::PcfKernel pcf_kernel = shadow::PcfKernel::Full;  // EarlyExit changes only kernels it applies to (PCF 4x4)
     bool in_shadow = false;   // planar: the region the stencil marked
     bool textured = false;
     bool spot = false;
@@ -54,8 +55,10 @@ Variant probe_variant();
 Variant ramp_variant(shadow::Encoding e, const DepthPath& path);
 
 // The PCF kernel of `f` as the shader's defines: PCF_TAPS (the count) and PCF_SUM(F, uv, z, bias),
-// the sum of F(offset, uv, z, bias) over shadow::pcf_offsets(f).
-std::vector<std::string> pcf_kernel_defines(shadow::Filter f);
+// the sum of F(offset, uv, z, bias) over shadow::pcf_offsets(f). With the early exit (where it
+// applies, shadow::pcf_early_exit_applies) PCF_EARLY_EXIT and, instead of PCF_SUM, the same sum
+// split in two: PCF_CORNERS over the 4 corner taps and PCF_REST over the others.
+std::vector<std::string> pcf_kernel_defines(shadow::Filter f, shadow::PcfKernel kernel = shadow::PcfKernel::Full);
 
 // Every variant the renderer can build.
 std::vector<Variant> all_variants();

@@ -23,6 +23,8 @@ std::string_view to_string(Filter f) {
     return "?";
 }
 
+std::string_view to_string(PcfKernel k) { return k == PcfKernel::EarlyExit ? "early-exit" : "full"; }
+
 std::string_view to_string(Precision p) { return p == Precision::Highp ? "highp" : "mediump"; }
 std::string_view to_string(UnormRounding r) { return r == UnormRounding::Round ? "round" : "floor"; }
 

@@ -21,12 +21,20 @@ enum class Filter {
     PCF4x4   // 16 taps at +-0.5, +-1.5 texel (Bunnell & Pellacini, GPU Gems ch. 11)
 };
 
+// How a PCF kernel with taps inside its corners (PCF 4x4) is evaluated (shadow/pcf.h).
+enum class PcfKernel {
+    EarlyExit,  // the 4 corner taps first; where they agree (all lit or all shadowed), that is the answer
+    Full        // every tap, always (the course's kernel)
+};
+
 // Every value, in the order they are listed to users and swept.
 inline constexpr Encoding kAllEncodings[] = {Encoding::R8, Encoding::RGBA, Encoding::DepthTex};
 inline constexpr Filter kAllFilters[] = {Filter::Hard, Filter::PCF2x2, Filter::PCF4x4};
+inline constexpr PcfKernel kAllPcfKernels[] = {PcfKernel::EarlyExit, PcfKernel::Full};
 
 std::string_view to_string(Encoding e);
 std::string_view to_string(Filter f);
+std::string_view to_string(PcfKernel k);
 
 // The sheet's thresholds: 8 bits -> 2^-8 + e = 0.005; bit-shift packing read under mediump,
 // whose 10-bit mantissa bounds the unpacked value -> 2^-10 + e = 0.0015. The depth texture is

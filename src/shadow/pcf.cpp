@@ -24,18 +24,38 @@ std::vector<glm::vec2> pcf_offsets(Filter filter) {
     return out;
 }
 
-float kernel_reach_texels(Filter filter) {
+namespace {
+// The largest tap offset on either axis, in texels.
+float largest_offset(Filter filter) {
     float reach = 0.0f;
     for (const glm::vec2& o : pcf_offsets(filter)) reach = std::max({reach, std::fabs(o.x), std::fabs(o.y)});
-    return reach + 1.0f;
+    return reach;
+}
+}  // namespace
+
+float kernel_reach_texels(Filter filter) { return largest_offset(filter) + 1.0f; }
+
+bool pcf_early_exit_applies(Filter filter) { return pcf_offsets(filter).size() > 4; }
+
+bool pcf_is_corner(Filter filter, glm::vec2 offset) {
+    const float reach = largest_offset(filter);
+    return std::fabs(offset.x) == reach && std::fabs(offset.y) == reach;
 }
 
-float pcf_visibility(Filter filter, glm::vec2 uv, float z, float bias, glm::vec2 texel,
+float pcf_visibility(Filter filter, PcfKernel kernel, glm::vec2 uv, float z, float bias, glm::vec2 texel,
                      const std::function<float(glm::vec2)>& stored_depth) {
     const auto taps = pcf_offsets(filter);
-    float lit = 0.0f;
-    for (const glm::vec2& o : taps) lit += z > stored_depth(uv + o * texel) + bias ? 0.0f : 1.0f;
-    return lit / static_cast<float>(taps.size());
+    const auto lit = [&](glm::vec2 o) { return z > stored_depth(uv + o * texel) + bias ? 0.0f : 1.0f; };
+    // The shader's order: the corners, then (unless they agree) the rest. Sums of 0s and 1s are
+    // exact in float, so the order does not change the full kernel's value.
+    float corners = 0.0f, rest = 0.0f;
+    for (const glm::vec2& o : taps)
+        if (pcf_is_corner(filter, o)) corners += lit(o);
+    if (kernel == PcfKernel::EarlyExit && pcf_early_exit_applies(filter) && (corners == 0.0f || corners == 4.0f))
+        return corners / 4.0f;
+    for (const glm::vec2& o : taps)
+        if (!pcf_is_corner(filter, o)) rest += lit(o);
+    return (corners + rest) / static_cast<float>(taps.size());
 }
 
 }  // namespace penumbra::shadow

@@ -73,6 +73,17 @@ TEST(ExerciseOptions, SettingsOutsideThePageSurviveTheQuery) {
     EXPECT_NE(a.query().find("encoding=r8"), std::string::npos) << a.query();
 }
 
+TEST(ExerciseOptions, ThePcfKernelIsReachableByUrlOnTheShadowMapPage) {
+    // No control on W09P2c: the course's full kernel is one URL parameter away, and kept there.
+    CourseApp a(Exercise::W09P2c);
+    EXPECT_EQ(a.settings().pcf_kernel, penumbra::shadow::PcfKernel::EarlyExit);
+    EXPECT_EQ(a.query().find("pcf-kernel"), std::string::npos) << "the default is not written: " << a.query();
+    ASSERT_EQ(a.set_option("pcf-kernel", "full"), "");
+    EXPECT_EQ(a.settings().pcf_kernel, penumbra::shadow::PcfKernel::Full);
+    EXPECT_NE(a.query().find("pcf-kernel=full"), std::string::npos) << a.query();
+    EXPECT_NE(a.set_option("pcf-kernel", "fast"), "");
+}
+
 TEST(ExerciseOptions, BadValuesChangeNothing) {
     CourseApp a(Exercise::W09P2c);
     const std::string before = a.query();

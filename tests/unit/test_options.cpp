@@ -29,6 +29,7 @@ TEST(Options, EveryOptionRoundTrips) {
     o.job.height = 360;
     o.settings.encoding = Encoding::DepthTex;
     o.settings.filter = Filter::PCF2x2;
+    o.settings.pcf_kernel = penumbra::shadow::PcfKernel::Full;
     o.settings.map_size = 2048;
     o.settings.bias = 0.0023f;
     o.settings.bias_auto = false;
@@ -95,6 +96,8 @@ TEST(Options, DefaultsAreAutoBiasWithTheSheetsConstantsOneChoiceAway) {
     EXPECT_EQ(o.job.scene, "teapot");
     EXPECT_EQ(o.settings.technique, Technique::ShadowMap);
     EXPECT_EQ(o.settings.map_size, 1024);
+    // PCF 4x4 takes the early exit unless --pcf-kernel full asks for the course's kernel.
+    EXPECT_EQ(o.settings.pcf_kernel, penumbra::shadow::PcfKernel::EarlyExit);
     EXPECT_TRUE(o.settings.bias_auto);
     EXPECT_FLOAT_EQ(o.settings.effective_bias(), auto_bias_constant(Encoding::RGBA, penumbra::shadow::Precision::Highp));
     Settings sheet = o.settings;
@@ -116,6 +119,7 @@ TEST(Options, BadValuesAreNamedAndLeaveTheOptionsAlone) {
     } bad[] = {
         {"encoding", "r16", "--encoding: unknown value 'r16' (r8, rgba, depthtex)"},
         {"filter", "pcf8x8", "--filter: unknown value 'pcf8x8' (hard, pcf2x2, pcf4x4)"},
+        {"pcf-kernel", "fast", "--pcf-kernel: unknown value 'fast' (early-exit, full)"},
         {"size", "0x100", "--size: width and height must be at least 1, got '0x100'"},
         {"size", "100", "--size: expected WIDTHxHEIGHT, got '100'"},
         {"size", "10x10x10", "--size: expected WIDTHxHEIGHT, got '10x10x10'"},
@@ -144,11 +148,12 @@ TEST(Options, ArgsLabelTheResult) {
     Options o;
     o.settings.encoding = Encoding::R8;
     EXPECT_EQ(to_args(o),
-              "--scene teapot --time 0 --size 512x512 --encoding r8 --filter hard --map-size 1024 --bias auto --map-faces auto "
-              "--precision highp --aov color --technique shadowmap --frames 1");
+              "--scene teapot --time 0 --size 512x512 --encoding r8 --filter hard --pcf-kernel early-exit "
+              "--map-size 1024 --bias auto --map-faces auto --light-fit tight --precision highp --aov color "
+              "--technique shadowmap --frames 1");
     EXPECT_EQ(to_args(o.settings),
-              "--encoding r8 --filter hard --map-size 1024 --bias auto --map-faces auto --precision highp --aov color "
-              "--technique shadowmap");
+              "--encoding r8 --filter hard --pcf-kernel early-exit --map-size 1024 --bias auto --map-faces auto "
+              "--light-fit tight --precision highp --aov color --technique shadowmap");
 }
 
 TEST(Options, AcceptedValuesAndListsComeFromTheTable) {

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bitset>
+#include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -123,6 +126,7 @@ TEST_F(PlanTest, AnUnchangedMapIsReusedAndAMovedOneIsNot) {
     EXPECT_FALSE(second.drawn("shadow-map"));
     // The camera's side of the settings does not touch the map.
     s.filter = shadow::Filter::PCF4x4;
+    s.pcf_kernel = shadow::PcfKernel::Full;
     s.bias = 0.01f;
     EXPECT_TRUE(make(&second).passes[0].skipped);
     // The light, a caster, the encoding or the map size do.
@@ -280,12 +284,139 @@ TEST(PcfKernel, TheShaderAndTheCpuMirrorShareTheTaps) {
             EXPECT_NE(defines[1].find(tap), std::string::npos) << tap;
         }
     }
-    // The mirror: a step in the stored depth halfway across the 4x4 kernel lights half the taps.
+    // The mirror: a step in the stored depth halfway across the 4x4 kernel lights half the taps
+    // (its corners disagree, so the early exit reads them all too).
     const auto step = [](glm::vec2 uv) { return uv.x < 0.5f ? 0.2f : 1.0f; };
     const glm::vec2 texel(1.0f / 64.0f);
-    EXPECT_FLOAT_EQ(shadow::pcf_visibility(shadow::Filter::PCF4x4, glm::vec2(0.5f), 0.6f, 0.001f, texel, step), 0.5f);
-    EXPECT_FLOAT_EQ(shadow::pcf_visibility(shadow::Filter::Hard, glm::vec2(0.25f), 0.6f, 0.001f, texel, step), 0.0f);
+    for (auto k : shadow::kAllPcfKernels) {
+        EXPECT_FLOAT_EQ(shadow::pcf_visibility(shadow::Filter::PCF4x4, k, glm::vec2(0.5f), 0.6f, 0.001f, texel, step), 0.5f);
+        EXPECT_FLOAT_EQ(shadow::pcf_visibility(shadow::Filter::Hard, k, glm::vec2(0.25f), 0.6f, 0.001f, texel, step), 0.0f);
+    }
     EXPECT_FLOAT_EQ(shadow::kernel_reach_texels(shadow::Filter::PCF4x4), 2.5f);
+}
+
+// The taps named in one generated sum, as "vec2(x, y)" strings.
+std::vector<std::string> taps_in(const std::string& define) {
+    std::vector<std::string> out;
+    for (size_t at = define.find("vec2("); at != std::string::npos; at = define.find("vec2(", at + 1))
+        out.push_back(define.substr(at, define.find(')', at) + 1 - at));
+    return out;
+}
+
+std::string tap_text(glm::vec2 t) {
+    char tap[48];
+    std::snprintf(tap, sizeof tap, "vec2(%.1f, %.1f)", static_cast<double>(t.x), static_cast<double>(t.y));
+    return tap;
+}
+
+TEST(PcfKernel, TheEarlyExitSplitsTheSameTapsIntoCornersAndRest) {
+    // PCF 4x4: the 16 taps, the 4 at (+-1.5, +-1.5) in PCF_CORNERS and the other 12 in PCF_REST.
+    const auto taps = shadow::pcf_offsets(shadow::Filter::PCF4x4);
+    const auto d = render::pcf_kernel_defines(shadow::Filter::PCF4x4, shadow::PcfKernel::EarlyExit);
+    ASSERT_EQ(d.size(), 4u);
+    EXPECT_EQ(d[0], "PCF_TAPS 16");
+    EXPECT_EQ(d[1], "PCF_EARLY_EXIT");
+    ASSERT_EQ(d[2].rfind("PCF_CORNERS(F, uv, z, bias) (", 0), 0u) << d[2];
+    ASSERT_EQ(d[3].rfind("PCF_REST(F, uv, z, bias) (", 0), 0u) << d[3];
+    EXPECT_EQ(taps_in(d[2]), (std::vector<std::string>{"vec2(-1.5, -1.5)", "vec2(1.5, -1.5)", "vec2(-1.5, 1.5)",
+                                                       "vec2(1.5, 1.5)"}));
+    auto all = taps_in(d[2]);
+    const auto rest = taps_in(d[3]);
+    EXPECT_EQ(rest.size(), 12u);
+    all.insert(all.end(), rest.begin(), rest.end());
+    std::vector<std::string> expected;
+    for (const auto& t : taps) expected.push_back(tap_text(t));
+    std::sort(all.begin(), all.end());
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(all, expected) << "every tap once, in one of the two sums";
+    // Hard and PCF 2x2 have no taps besides their corners: the same defines either way.
+    for (auto f : {shadow::Filter::Hard, shadow::Filter::PCF2x2}) {
+        EXPECT_FALSE(shadow::pcf_early_exit_applies(f));
+        EXPECT_EQ(render::pcf_kernel_defines(f, shadow::PcfKernel::EarlyExit),
+                  render::pcf_kernel_defines(f, shadow::PcfKernel::Full));
+        for (const auto& t : shadow::pcf_offsets(f)) EXPECT_TRUE(shadow::pcf_is_corner(f, t));
+    }
+    EXPECT_TRUE(shadow::pcf_early_exit_applies(shadow::Filter::PCF4x4));
+}
+
+// Every one of the 2^16 lit/shadowed patterns of the 4x4 kernel's taps, through the CPU mirror:
+// the early exit equals the full kernel wherever the corners disagree or all 16 taps agree, and
+// differs exactly where the corners agree and an inner tap does not (it returns the corners'
+// 0 or 1 where the full kernel has a fraction strictly between).
+TEST(PcfKernel, TheEarlyExitDiffersOnlyWhereTheCornersAgreeAndAnInnerTapDoesNot) {
+    const auto taps = shadow::pcf_offsets(shadow::Filter::PCF4x4);
+    ASSERT_EQ(taps.size(), 16u);
+    const glm::vec2 uv(0.5f), texel(1.0f / 64.0f);
+    const float z = 0.5f, bias = 0.001f;
+    unsigned corner_bits = 0;
+    for (size_t i = 0; i < taps.size(); ++i)
+        if (shadow::pcf_is_corner(shadow::Filter::PCF4x4, taps[i])) corner_bits |= 1u << i;
+    ASSERT_EQ(corner_bits, (1u << 0) | (1u << 3) | (1u << 12) | (1u << 15));
+    int differ = 0, corners_agree_inner_not = 0;
+    for (unsigned lit = 0; lit < (1u << 16); ++lit) {
+        // Bit i set: tap i sees a far caster (lit); clear: a near one (shadowed).
+        const auto depth = [&](glm::vec2 at) {
+            const glm::vec2 o = (at - uv) / texel;
+            for (size_t i = 0; i < taps.size(); ++i)
+                if (taps[i] == o) return (lit >> i) & 1u ? 1.0f : 0.1f;
+            ADD_FAILURE() << "a tap off the kernel: " << o.x << ", " << o.y;
+            return 1.0f;
+        };
+        const float full = shadow::pcf_visibility(shadow::Filter::PCF4x4, shadow::PcfKernel::Full, uv, z, bias, texel, depth);
+        const float early =
+            shadow::pcf_visibility(shadow::Filter::PCF4x4, shadow::PcfKernel::EarlyExit, uv, z, bias, texel, depth);
+        const unsigned corners = lit & corner_bits;
+        const bool agree = corners == 0 || corners == corner_bits;
+        const bool all_agree = lit == 0 || lit == 0xffffu;
+        EXPECT_FLOAT_EQ(full, static_cast<float>(std::bitset<16>(lit).count()) / 16.0f);
+        if (!agree || all_agree) {
+            EXPECT_EQ(early, full) << std::hex << lit;
+        } else {
+            ++corners_agree_inner_not;
+            EXPECT_EQ(early, corners ? 1.0f : 0.0f) << std::hex << lit;
+            EXPECT_GT(full, 0.0f);
+            EXPECT_LT(full, 1.0f);
+            // At most the 12 inner taps' worth: full lies in [4/16, 15/16] or [1/16, 12/16].
+            EXPECT_LE(std::fabs(early - full), 12.0f / 16.0f);
+        }
+        differ += early != full;
+    }
+    // Corners all lit or all shadowed, the 12 inner taps anything but all the same: 2 (2^12 - 1).
+    EXPECT_EQ(corners_agree_inner_not, 2 * 4095);
+    EXPECT_EQ(differ, 2 * 4095);
+}
+
+TEST_F(PlanTest, PcfKernelChoosesTheLookupsVariant) {
+    s.filter = shadow::Filter::PCF4x4;
+    const FramePlan early = make();
+    for (const auto& d : early.passes.back().draws) {
+        if (!has_define(d, "SHADOW_MAP")) continue;
+        EXPECT_TRUE(has_define(d, "PCF_EARLY_EXIT")) << d.label;
+        EXPECT_TRUE(has_define(d, "PCF_CORNERS(F,")) << d.label;
+        EXPECT_FALSE(has_define(d, "PCF_SUM(F,")) << d.label;
+    }
+    EXPECT_NE(early.passes.back().detail.find("pcf4x4 early-exit"), std::string::npos) << early.passes.back().detail;
+    s.pcf_kernel = shadow::PcfKernel::Full;
+    const FramePlan full = make();
+    for (const auto& d : full.passes.back().draws) {
+        if (!has_define(d, "SHADOW_MAP")) continue;
+        EXPECT_FALSE(has_define(d, "PCF_EARLY_EXIT")) << d.label;
+        EXPECT_TRUE(has_define(d, "PCF_SUM(F,")) << d.label;
+    }
+    EXPECT_NE(full.passes.back().detail.find("pcf4x4 full"), std::string::npos) << full.passes.back().detail;
+    // PCF 2x2 has only corners: its variant is the same under either kernel.
+    s.filter = shadow::Filter::PCF2x2;
+    const FramePlan two_full = make();
+    s.pcf_kernel = shadow::PcfKernel::EarlyExit;
+    const FramePlan two_early = make();
+    ASSERT_EQ(two_full.passes.back().draws.size(), two_early.passes.back().draws.size());
+    for (size_t i = 0; i < two_full.passes.back().draws.size(); ++i)
+        EXPECT_EQ(two_full.passes.back().draws[i].variant, two_early.passes.back().draws[i].variant);
+    // Every variant either kernel asks for is among those the shader tests compile.
+    const auto all = render::all_variants();
+    for (const FramePlan* p : {&early, &full})
+        for (const auto& d : p->passes.back().draws)
+            EXPECT_NE(std::find(all.begin(), all.end(), d.variant), all.end()) << d.variant.key();
 }
 
 }  // namespace

@@ -237,12 +237,16 @@ public:
             lf.shadow_map = true;
             lf.encoding = s.encoding;
             lf.filter = s.filter;
+            lf.pcf_kernel = s.pcf_kernel;
             lf.bias_auto = s.bias_auto;
             lf.light_perspective = f.perspective;
             lf.mediump = s.precision == shadow::Precision::Mediump;
             it.bindings |= bit;
         }
-        cam.detail += ", shadow lookup " + std::string(shadow::to_string(s.filter)) + " " +
+        // The kernel is named where it makes a difference (PCF 4x4): "pcf4x4 early-exit", "pcf4x4 full".
+        const std::string kernel =
+            shadow::pcf_early_exit_applies(s.filter) ? " " + std::string(shadow::to_string(s.pcf_kernel)) : "";
+        cam.detail += ", shadow lookup " + std::string(shadow::to_string(s.filter)) + kernel + " " +
                       std::string(shadow::to_string(s.encoding)) + ", bias " +
                       (s.bias_auto ? "auto (" + number(static_cast<double>(s.effective_bias())) + " + slope)"
                                    : number(static_cast<double>(s.effective_bias()))) +
