@@ -290,9 +290,9 @@ std::vector<Option<Options>> make_table() {
         });
 
     OptionInfo map_faces = make_option_info("map-faces", P::Technique, T::Choice,
-                         "which faces of each caster go into the shadow map: auto = front faces of closed meshes (the same "
-                         "depths for half the triangles), both faces of open ones", "Faces in the map",
-                         {{"auto", "auto: front faces of closed meshes, both of open ones"},
+                         "which faces of each caster go into the shadow map: auto = back faces of closed meshes (no "
+                         "self-shadowing of lit surfaces), both faces of open ones", "Faces in the map",
+                         {{"auto", "auto: back faces of closed meshes, both of open ones"},
                           {"front", "front faces (towards the light)"},
                           {"back", "back faces (away from the light)"},
                           {"both", "both faces"}});

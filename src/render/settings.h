@@ -19,7 +19,7 @@ enum class Aov {
 };
 // Which faces of each caster go into the shadow map.
 enum class MapFaces {
-    Auto,   // the front faces of a closed mesh (scene::Mesh::closed), both faces of an open one
+    Auto,   // the back faces of a closed mesh (scene::Mesh::closed), both faces of an open one
     Front,  // the faces towards the light (what the sheet draws)
     Back,   // the faces away from it: a lit surface is compared with its object's far side
     Both    // every face: open meshes (the teapot's rim, a sheet of paper) cast from either side

@@ -19,8 +19,8 @@ struct Mesh {
     std::vector<glm::vec3> normals;
     std::vector<glm::vec2> uvs;
     std::vector<std::uint32_t> indices;  // three per triangle
-    // A closed surface (is_closed below): seen from any light, its nearest surface is a front face,
-    // so a shadow map may take the front faces alone instead of both sides. Set where the mesh is made.
+    // A closed surface (is_closed below): its back faces alone hold its silhouette from any light,
+    // so a shadow map may take them instead of both sides. Set where the mesh is made.
     bool closed = false;
 };
 

@@ -100,7 +100,7 @@ TEST(MeshClosure, ClosedMeshesAreFoundFromTheirIndices) {
     EXPECT_FALSE(scene::is_closed(scene::Mesh{}));
 }
 
-TEST_F(MapFaces, AutoTakesTheFrontFacesOfAClosedMeshAndBothOfAnOpenOne) {
+TEST_F(MapFaces, AutoTakesTheBackFacesOfAClosedMeshAndBothOfAnOpenOne) {
     const scene::Scene sc = sphere_and_sheet();
     ASSERT_TRUE(sc.meshes[1].closed);
     ASSERT_FALSE(sc.meshes[2].closed);
@@ -109,18 +109,17 @@ TEST_F(MapFaces, AutoTakesTheFrontFacesOfAClosedMeshAndBothOfAnOpenOne) {
     const Result front = run(sc, "front");
     const Result back = run(sc, "back");
     const Result sheet_auto = run(sc, "auto", "sheet");
-    const Result sheet_back = run(sc, "back", "sheet");
-    EXPECT_EQ(a.cull.at("box"), gl::Cull::Back);  // front faces in
+    const Result sheet_both = run(sc, "both", "sheet");
+    EXPECT_EQ(a.cull.at("box"), gl::Cull::Front);  // back faces in
     EXPECT_EQ(a.cull.at("sheet"), gl::Cull::None);
     EXPECT_EQ(a.cull.at("ground"), gl::Cull::None);
-    // The nearest surface along any light ray into the box is a front face: the same map.
-    EXPECT_EQ(a.vis, both.vis);
+    EXPECT_EQ(a.vis, back.vis);
     // Front faces alone lose the sheet's shadow (its front face looks away from the light).
     EXPECT_GT(front.score.false_lit_pct, a.score.false_lit_pct + 1.0);
-    // Back faces alone: no better with the slope bias, and with the sheet's constant (0.0015 of
-    // the perspective depth) the ground beside the box's contact peter-pans.
-    EXPECT_GE(back.score.error_pct, a.score.error_pct);
-    EXPECT_GT(sheet_back.score.false_lit_pct, sheet_auto.score.false_lit_pct + 0.5);
+    // With the slope bias, the back faces do as well as both; with the sheet's constant they keep the
+    // box's lit top from shadowing itself (acne) where both faces do not.
+    EXPECT_LE(a.score.error_pct, both.score.error_pct + 0.02);
+    EXPECT_LT(sheet_auto.score.false_shadow_pct + 0.1, sheet_both.score.false_shadow_pct);
     EXPECT_LT(a.score.error_pct, 0.5);
 }
 

@@ -27,14 +27,14 @@ std::string number(double v) {
 
 // The faces of a caster that go into the map, as the culling that leaves them: front faces (those
 // towards the light) with back-face culling, back faces with front-face culling, both with none.
-// Auto takes the front faces of a closed mesh (the nearest surface along a light ray into a closed
-// mesh is a front face, so the map holds the same depths for half the triangles) and both faces of
-// an open one (the teapot's rim, a glTF sheet must cast from either side). Back faces lose to both
-// against the ray-traced truth on every bench scene (docs/threejs.md): the contacts peter-pan. A
-// mirroring world matrix turns the winding over.
+// Auto takes the back faces of a closed mesh (a lit surface is then compared with its object's far
+// side, so it cannot shadow itself whatever the bias; half the triangles) and both faces of an open
+// one (the teapot's rim, a glTF sheet must cast from either side). Against the ray-traced truth with
+// the tight light frustum: as good as both faces under --bias auto, far better under the sheet's
+// constant (docs/threejs.md). A mirroring world matrix turns the winding over.
 gl::Cull map_cull(MapFaces faces, const scene::Scene& scene, const Draw& d) {
     if (faces == MapFaces::Auto)
-        faces = scene.meshes[static_cast<size_t>(d.mesh)].closed ? MapFaces::Front : MapFaces::Both;
+        faces = scene.meshes[static_cast<size_t>(d.mesh)].closed ? MapFaces::Back : MapFaces::Both;
     if (faces == MapFaces::Both) return gl::Cull::None;
     const bool mirrored = glm::determinant(glm::mat3(d.world)) < 0.0f;
     return (faces == MapFaces::Front) != mirrored ? gl::Cull::Back : gl::Cull::Front;
