@@ -27,8 +27,8 @@ std::string_view to_string(Aov a) {
 
 bool Settings::operator==(const Settings& o) const {
     return technique == o.technique && encoding == o.encoding && filter == o.filter && pcf_kernel == o.pcf_kernel &&
-           map_size == o.map_size &&
-           bias == o.bias && bias_auto == o.bias_auto && precision == o.precision && aov == o.aov;
+           map_size == o.map_size && bias == o.bias && bias_auto == o.bias_auto && precision == o.precision &&
+           aov == o.aov;
 }
 
 bool Job::operator==(const Job& o) const {
