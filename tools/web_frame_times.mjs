@@ -6,8 +6,10 @@
 //      finish() only flushes in Chromium), median of the last 60
 //      frames of the animation loop (requestAnimationFrame, 60 Hz);
 //   b) back to back: N frames drawn by the test hook in one JavaScript loop, median of the frames.
-// Each figure is the median over ROUNDS interleaved rounds.
-// usage: node tools/web_frame_times.mjs [ROUNDS] [FRAMES]   (needs build-web/site; prints Markdown)
+// Each figure is the median over ROUNDS interleaved rounds; a second table gives each round's figures.
+// pcf4x4 is measured with the early exit (the default) and with the full kernel (pcf-kernel=full).
+// usage: node tools/web_frame_times.mjs [ROUNDS] [FRAMES] [MATCH]   (needs build-web/site; prints
+// Markdown; MATCH: only the rows whose settings contain it, e.g. pcf4x4)
 import { serve, launch, openPage, siteDir, waitFrames } from '../tests/web/harness.mjs';
 
 const rounds = Number(process.argv[2] || 5);
@@ -17,10 +19,12 @@ const CONFIGS = [
   { page: 'w09p2a', label: 'no shadows, perspective light view (filter n/a)', query: 'projection=persp' },
   { page: 'w09p2b', label: 'FBO 1024 + camera (filter n/a)', query: 'map-size=1024' },
   { page: 'w09p2c', label: 'rgba hard, map 1024, map view on', query: 'encoding=rgba&filter=hard&map-size=1024&map-view=on' },
-  { page: 'w09p2c', label: 'rgba pcf4x4, map 1024, map view on', query: 'encoding=rgba&filter=pcf4x4&map-size=1024&map-view=on' },
+  { page: 'w09p2c', label: 'rgba pcf4x4 early-exit, map 1024, map view on', query: 'encoding=rgba&filter=pcf4x4&map-size=1024&map-view=on' },
+  { page: 'w09p2c', label: 'rgba pcf4x4 full, map 1024, map view on', query: 'encoding=rgba&filter=pcf4x4&pcf-kernel=full&map-size=1024&map-view=on' },
   { page: 'w09p2c', label: 'r8 hard, map 1024, map view on', query: 'encoding=r8&filter=hard&map-size=1024&map-view=on' },
-  { page: 'w09p2c', label: 'r8 pcf4x4, map 1024, map view on', query: 'encoding=r8&filter=pcf4x4&map-size=1024&map-view=on' },
-];
+  { page: 'w09p2c', label: 'r8 pcf4x4 early-exit, map 1024, map view on', query: 'encoding=r8&filter=pcf4x4&map-size=1024&map-view=on' },
+  { page: 'w09p2c', label: 'r8 pcf4x4 full, map 1024, map view on', query: 'encoding=r8&filter=pcf4x4&pcf-kernel=full&map-size=1024&map-view=on' },
+].filter((c) => !process.argv[4] || c.label.includes(process.argv[4]));
 const median = (v) => { const s = [...v].sort((a, b) => a - b); const n = s.length; return n % 2 ? s[(n - 1) / 2] : (s[n / 2 - 1] + s[n / 2]) / 2; };
 
 const server = await serve(siteDir());
@@ -58,3 +62,9 @@ console.log('| page | settings | readout ms/frame (rAF loop, median of 60) | bac
 console.log('|---|---|---|---|');
 for (const [i, c] of CONFIGS.entries())
   console.log(`| ${c.page} | ${c.label} | ${median(results[i].readout).toFixed(2)} | ${median(results[i].loop).toFixed(2)} |`);
+console.log('\nEach round, readout / back to back ms/frame:\n');
+console.log('| page | settings | ' + results[0].loop.map((_, r) => `round ${r + 1}`).join(' | ') + ' |');
+console.log('|---|---|' + results[0].loop.map(() => '---|').join(''));
+for (const [i, c] of CONFIGS.entries())
+  console.log(`| ${c.page} | ${c.label} | ` +
+              results[i].loop.map((l, r) => `${results[i].readout[r].toFixed(2)} / ${l.toFixed(2)}`).join(' | ') + ' |');

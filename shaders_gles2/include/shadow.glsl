@@ -70,7 +70,10 @@ float litTap(vec2 offset, vec2 uv, float z, float bias) {
 // at +-0.5 texel, PCF 4x4 sixteen at +-0.5 and +-1.5 texels (Bunnell & Pellacini).
 // PCF_EARLY_EXIT (PCF 4x4 unless --pcf-kernel full): the 4 corner taps (PCF_CORNERS) first; where
 // they agree the fragment is taken as wholly lit or wholly shadowed and the other 12 taps
-// (PCF_REST) are not read. Where they disagree the sum is that of the full kernel.
+// (PCF_REST) are not needed. Where they disagree the sum is that of the full kernel. Whether the 12
+// are then skipped is the driver's business: llvmpipe runs both sides of the branch under a lane
+// mask, SwiftShader skips the samples of a 2x2 quad whose corners all agree, a GPU those of a warp
+// (docs/pcf_early_exit.md).
 float shadowVisibility(vec4 shadowCoord, vec3 normal) {
     if (shadowCoord.w <= 0.0) return 1.0;
     vec3 c = MP(shadowCoord.xyz / shadowCoord.w);
