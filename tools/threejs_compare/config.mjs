@@ -10,7 +10,8 @@ export const MAP = 1024;
 // defaults (bias auto, the tight light frustum, faces auto, PCF's early exit, map 1024); the
 // 'sheet' rows are the settings before issue 9 (the sheet's bias, both faces, the frustum fitted
 // around the whole scene, the full PCF kernel); the 'matched' row is what three.js's matched rows
-// are given, to check pixel by pixel that both renderers see the same map.
+// are given (the sheet's bias, both faces, the tight frustum three.js is fitted to as well), to
+// check pixel by pixel that both renderers see the same map.
 const BEFORE = { bias: 'sheet', 'map-faces': 'both', 'light-fit': 'scene', 'pcf-kernel': 'full' };
 export const OURS = [
   { id: 'rgba-hard', label: 'rgba hard, defaults', encoding: 'rgba', filter: 'hard', map: 1024 },
@@ -23,7 +24,7 @@ export const OURS = [
   { id: 'depthtex-pcf4x4', label: 'depthtex pcf4x4, defaults', encoding: 'depthtex', filter: 'pcf4x4', map: 1024 },
   { id: 'rgba-hard-sheet', label: 'rgba hard, before (sheet bias, scene fit)', encoding: 'rgba', filter: 'hard', map: 1024, ...BEFORE },
   { id: 'rgba-pcf4x4-sheet', label: 'rgba pcf4x4, before (sheet bias, scene fit, full kernel)', encoding: 'rgba', filter: 'pcf4x4', map: 1024, ...BEFORE },
-  { id: 'depthtex-hard-matched', label: 'depthtex hard, matched to three.js (as before)', encoding: 'depthtex', filter: 'hard', map: 1024, ...BEFORE },
+  { id: 'depthtex-hard-matched', label: 'depthtex hard, matched to three.js (sheet bias, both faces)', encoding: 'depthtex', filter: 'hard', map: 1024, ...BEFORE, 'light-fit': 'tight' },
 ];
 // The library's defaults of the options a row may set (src/render/options.cpp); a page reports an
 // option it has no control for only when it differs from its default.
@@ -39,7 +40,8 @@ export const oursOptions = (c) => {
 export const OUR_BIAS = 0.0015;
 // three.js: BasicShadowMap and PCFShadowMap, each at three.js's defaults (bias 0, normalBias 0, the
 // back faces into the map: shadowSide = the opposite of the material's side), and matched (the
-// sheet's bias, both faces into the map, penumbra's frustum fitted around the whole scene).
+// sheet's bias, both faces into the map). Both are given penumbra's tight light frustum
+// (tests/threejs/compare.js fits it as src/shadow/light_frustum.cpp does).
 export const THREE_CONFIGS = [
   { id: 'three-basic-default', label: 'three.js BasicShadowMap, defaults', type: 'basic', bias: 0, shadowSide: 'default', vs: 'rgba-hard' },
   { id: 'three-basic-matched', label: 'three.js BasicShadowMap, matched', type: 'basic', bias: -OUR_BIAS, shadowSide: 'double', vs: 'rgba-hard' },

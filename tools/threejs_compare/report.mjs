@@ -107,8 +107,9 @@ ${table}
 The ratios compare each three.js row with penumbra's rgba (and depthtex) encoding and the same
 kind of filter (BasicShadowMap with \`hard\`, PCFShadowMap with \`pcf4x4\`). *defaults*: three.js as it
 comes (\`shadow.bias\` 0, \`normalBias\` 0, \`shadowSide\` null, i.e. the back faces of a FrontSide
-material into the map). *bias -0.0015*: penumbra's default bias, three.js's sign. *matched*:
-penumbra's bias and both faces into the map, as penumbra draws them.
+material into the map). *matched*: the sheet's bias (0.0015, three.js's sign) and both faces into
+the map, as penumbra draws them with \`--bias sheet --map-faces both\`. Every row, three.js's too, uses
+penumbra's tight light frustum.
 
 What the figures say:
 
@@ -191,15 +192,16 @@ ${cam}
   highp, the same scores as its depthtex), r8 keeps 8 bits. Both compare in window depth [0, 1] over
   the same near and far planes, so the same bias means the same offset. Both run highp here
   (SwiftShader computes mediump at fp32 anyway).
-- **Bias.** three.js's defaults are \`bias\` 0 and \`normalBias\` 0; penumbra's default is 0.0015
-  (0.005 for r8). The *bias -0.0015* rows give three.js penumbra's. \`normalBias\` stays 0 (penumbra has
-  no normal offset).
+- **Bias.** three.js's defaults are \`bias\` 0 and \`normalBias\` 0; penumbra's default is \`auto\`
+  (a constant of the encoding's precision plus a term that grows with the slope of the receiver as
+  the light sees it); the sheet's constant (0.0015, 0.005 for r8) is \`--bias sheet\`, and the
+  *matched* rows give it to three.js. \`normalBias\` stays 0 (penumbra has no normal offset).
 - **Faces in the map.** three.js draws a FrontSide material's back faces into the map
   (\`shadowSide\` null), which moves the acne to the faces turned away from the light (left out of
   the score) and can leak light where a caster is thin or open, or touches a receiver (nothing
-  measurable on this scene, see t = 0); penumbra draws both faces (its open teapot must cast from
-  both sides), which costs three.js a little time too (*matched* against *bias -0.0015*). *matched*
-  sets \`shadowSide = DoubleSide\`.
+  measurable on this scene, see t = 0); penumbra (\`--map-faces auto\`) draws the back faces of a
+  closed mesh and both faces of an open one (the Newell teapot is open and must cast from both
+  sides; the table top is one face). *matched* sets \`shadowSide = DoubleSide\`.
 - **The PCF kernels.** penumbra's pcf4x4: 16 NEAREST taps in a 4x4 box at +-0.5 and +-1.5 texels,
   equal weights (17 levels of grey). three.js r${env.threeInfo?.revision}'s PCFShadowMap: 5 taps on a Vogel disk of radius
   \`shadow.radius\` (1 texel), rotated per pixel by interleaved gradient noise, each a hardware 2x2
@@ -235,7 +237,7 @@ function findings(rows, agreement, basicSame, basicMax) {
   const out = [];
   out.push(`- **Matched, three.js's BasicShadowMap is penumbra's hard filter**: ${basicSame ? 'the same pixels' : `the same pixels but ${basicMax} (of ${SIZE * SIZE}) in a frame`}, ` +
     `error ${pct(r['three-basic-matched'].score.error_pct)} against ${pct(r['depthtex-hard-matched'].score.error_pct)} (the sheet's bias, both faces, ` +
-    'the frustum fitted around the whole scene, as penumbra drew before issue 9). The frames, the camera, the light frustum ' +
+    'the tight light frustum in both). The frames, the camera, the light frustum ' +
     'and the depth test agree; what separates the other rows is settings, the filter kernels and the cost.');
   const hard = r['rgba-hard'], pcf = r['rgba-pcf4x4'], tb = r['three-basic-default'], tp = r['three-pcf-default'];
   out.push(`- **Accuracy at the defaults**: penumbra's rgba hard ${pct(hard.score.error_pct)} against three.js's BasicShadowMap ` +
