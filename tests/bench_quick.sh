@@ -24,8 +24,14 @@ python3 - "$work/bench" <<'PY' && ok || bad "bench outputs are not well-formed"
 import csv, struct, sys, xml.etree.ElementTree as ET, zlib
 d = sys.argv[1]
 rows = list(csv.DictReader(open(d + "/results.csv")))
-# 2 scenes x (3 encodings x 3 filters x 2 maps + none + planar)
-assert len(rows) == 2 * (3 * 3 * 2 + 2), len(rows)
+# 2 scenes x (3 encodings x 3 filters x 2 maps + rgba hard and pcf4x4 at map 1024 as before issue 9
+# + none + planar)
+assert len(rows) == 2 * (3 * 3 * 2 + 2 + 2), len(rows)
+before = [r for r in rows if r["technique"].endswith(" (before)")]
+assert sorted({r["technique"] for r in before}) == ["rgba hard (before)", "rgba pcf4x4 (before)"], before
+for r in before:
+    assert r["map_size"] == "1024" and "--bias sheet" in r["settings"] and "--light-fit scene" in r["settings"], r
+    assert "--map-faces both" in r["settings"] and "--pcf-kernel full" in r["settings"], r
 for r in rows:
     for k in ("false_shadow_pct", "false_lit_pct", "error_pct", "mae_pct", "truth_shadowed_pct"):
         v = float(r[k]); assert 0.0 <= v <= 100.0, (k, v)
@@ -43,6 +49,7 @@ for r in rows:
 md = open(d + "/results.md").read()
 assert md.startswith("# penumbra bench") and "| technique |" in md and "## The course scene, map 1024" in md
 assert "## Texel use" in md
+assert "## The defaults against the settings before issue 9" in md and "| rgba hard | 1024 |" in md
 svg = ET.parse(d + "/tradeoff.svg").getroot()
 assert svg.tag.endswith("svg") and len(svg.findall(".//{http://www.w3.org/2000/svg}polyline")) > 0
 png = open(d + "/tradeoff.png", "rb").read()

@@ -129,6 +129,42 @@ void turn_light(scene::Light& light, const scene::Light& original, const glm::ve
     light.direction = glm::normalize(glm::vec3(rot * glm::vec4(original.direction, 0.0f)));
 }
 
+// A run of the sweep: its settings and the technique column of its rows.
+struct Planned {
+    render::Settings settings;
+    std::string label;
+};
+
+// The defaults as they were before issue 9 ("Better than three.js on the same frames"): the
+// sheet's constant bias, both faces into the map, the frustum fitted around the whole scene and
+// PCF's full kernel. With the references, and unless --set changes one of these options itself,
+// the sweep also runs rgba hard and rgba pcf4x4 so at the map sizes 512, 1024 and 2048 it sweeps,
+// labelled "... (before)", so the report can set the defaults against them.
+std::vector<Planned> before_rows(const Sweep& w) {
+    std::vector<Planned> out;
+    const char* const kBefore[][2] = {{"bias", "sheet"}, {"map-faces", "both"}, {"light-fit", "scene"}, {"pcf-kernel", "full"}};
+    if (!w.o.references || std::find(w.encodings.begin(), w.encodings.end(), shadow::Encoding::RGBA) == w.encodings.end())
+        return out;
+    for (const auto& kv : w.o.set)
+        for (const auto& b : kBefore)
+            if (kv.rfind(std::string(b[0]) + "=", 0) == 0) return out;
+    for (auto f : {shadow::Filter::Hard, shadow::Filter::PCF4x4}) {
+        if (std::find(w.filters.begin(), w.filters.end(), f) == w.filters.end()) continue;
+        for (int m : w.o.maps) {
+            if (m != 512 && m != 1024 && m != 2048) continue;
+            render::Settings s = w.base.settings;
+            s.technique = render::Technique::ShadowMap;
+            s.encoding = shadow::Encoding::RGBA;
+            s.filter = f;
+            s.map_size = m;
+            for (const auto& b : kBefore)
+                if (const std::string err = render::parse_option(s, b[0], b[1]); !err.empty()) throw CommandError{err, 1};
+            out.push_back({s, technique_label(s) + std::string(kBeforeSuffix)});
+        }
+    }
+    return out;
+}
+
 struct Timing {
     double median_ms = 0.0;
     int redrawn = 0;
@@ -168,7 +204,7 @@ void run_sweep(Sweep& w) {
     w.load_before = load_average();
     const BenchOptions& o = w.o;
 
-    std::vector<render::Settings> techniques;
+    std::vector<Planned> techniques;
     for (auto e : w.encodings)
         for (auto f : w.filters)
             for (int m : o.maps) {
@@ -177,13 +213,14 @@ void run_sweep(Sweep& w) {
                 s.encoding = e;
                 s.filter = f;
                 s.map_size = m;
-                techniques.push_back(s);
+                techniques.push_back({s, technique_label(s)});
             }
+    for (Planned& b : before_rows(w)) techniques.push_back(std::move(b));
     if (o.references)
         for (auto t : {render::Technique::None, render::Technique::Planar}) {
             render::Settings s = w.base.settings;
             s.technique = t;
-            techniques.push_back(s);
+            techniques.push_back({s, technique_label(s)});
         }
     // Work units: one accuracy frame and `rounds` timing runs per technique and scene.
     const size_t total = techniques.size() * w.scenes.size() * static_cast<size_t>(1 + o.rounds);
@@ -246,8 +283,8 @@ void run_sweep(Sweep& w) {
         }
 
         // Accuracy: the visibility AOV of the very frame the truth shows, for every technique.
-        for (const render::Settings& base : techniques) {
-            render::Settings s = base;
+        for (const Planned& planned : techniques) {
+            render::Settings s = planned.settings;
             render::Options labelled = w.base;  // what the row was made with, as penumbra render takes it
             labelled.job.scene = spec.name;
             labelled.job.time = spec.time;
@@ -255,7 +292,7 @@ void run_sweep(Sweep& w) {
             Row row;
             row.scene = spec.label;
             row.time = spec.time;
-            row.technique = technique_label(s);
+            row.technique = planned.label;
             row.encoding = s.technique == render::Technique::ShadowMap ? std::string(shadow::to_string(s.encoding)) : "-";
             row.filter = s.technique == render::Technique::ShadowMap ? std::string(shadow::to_string(s.filter)) : "-";
             row.map = s.technique == render::Technique::ShadowMap ? s.map_size : 0;

@@ -95,6 +95,9 @@ struct Key {
 
 std::string key_label(const Key& k);
 
+// The technique column's suffix of the runs at the settings before issue 9 (bench.cpp, before_rows).
+inline constexpr const char* kBeforeSuffix = " (before)";
+
 // ---- bench_report.cpp ------------------------------------------------------------------------
 
 // Writes results.csv, results.md, tradeoff.svg/.png and tradeoff_mae.svg/.png into `dir`;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -112,6 +113,12 @@ std::vector<const Row*> select(const Sweep& w, bool (*pred)(const Row&)) {
     return out;
 }
 
+// A run at the settings before issue 9 (bench.cpp, before_rows).
+bool is_before(const std::string& technique) {
+    const std::string suffix = kBeforeSuffix;
+    return technique.size() > suffix.size() && technique.compare(technique.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
 // y: the error % (false shadow + false lit), or with `mae` the mean absolute visibility error.
 tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const std::string& title, bool mae,
                       std::vector<Key>* front_keys) {
@@ -124,7 +131,7 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
                  (w.gl_renderer.empty() ? "" : "; " + w.gl_renderer);
     p.xlabel = "ms per frame, light moving (log scale)";
     p.ylabel = mae ? "mean absolute visibility error %" : "error % (false shadow + false lit)";
-    p.colors = {"#d95f02", "#7570b3", "#1b9e77", "#666666", "#e7298a"};
+    p.colors = {"#d95f02", "#7570b3", "#1b9e77", "#666666", "#e7298a", "#e6ab02"};
     p.color_legend = {{"r8", 0}, {"rgba", 1}, {"depthtex", 2}, {"no shadow map", 3}};
     const auto known = [](const std::string& enc) {
         return enc == "r8" || enc == "rgba" || enc == "depthtex" || enc == "none" || enc == "planar";
@@ -134,10 +141,14 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
             p.color_legend.push_back({"other (e.g. three.js)", 4});
             break;
         }
+    const bool before_rows = std::any_of(keys.begin(), keys.end(), [](const Key& k) { return is_before(k.technique); });
+    if (before_rows) p.color_legend.push_back({"rgba before issue 9", 5});
     p.marker_legend = {{"hard", Marker::Circle}, {"pcf2x2", Marker::Square}, {"pcf4x4", Marker::Triangle},
                        {"planar", Marker::Diamond}, {"none", Marker::Cross}};
     p.notes = {"marker size: map 256 ... 4096", "front: shadow maps only;", "planar and none are references",
                "hover (SVG) for the exact", "settings of each point"};
+    if (before_rows)
+        p.notes.insert(p.notes.end(), {"dashed blue ring: the defaults", "and the settings before", "issue 9, at map 1024"});
     // The front is over the shadow-map techniques: planar shadows need a flat ground and cast no
     // shadow on anything else, and none is no answer; both are drawn as references.
     std::vector<measure::Point2> pts;
@@ -147,9 +158,14 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
         tools::PlotPoint pt;
         pt.x = m.moving;
         pt.y = mae ? m.score.mae_pct : m.score.error_pct;
-        const std::string enc = k.technique.substr(0, k.technique.find(' '));
-        const std::string fil = k.technique.find(' ') == std::string::npos ? "" : k.technique.substr(k.technique.find(' ') + 1);
-        pt.color = enc == "r8" ? 0 : enc == "rgba" ? 1 : enc == "depthtex" ? 2 : known(enc) ? 3 : 4;
+        const bool before = is_before(k.technique);
+        const std::string t = before ? k.technique.substr(0, k.technique.size() - std::string(kBeforeSuffix).size()) : k.technique;
+        const std::string enc = t.substr(0, t.find(' '));
+        const std::string fil = t.find(' ') == std::string::npos ? "" : t.substr(t.find(' ') + 1);
+        pt.color = before ? 5 : enc == "r8" ? 0 : enc == "rgba" ? 1 : enc == "depthtex" ? 2 : known(enc) ? 3 : 4;
+        // Where the defaults sit, and where they sat before issue 9 (map 1024).
+        if (before_rows && k.map == 1024 && enc == "rgba" && (fil == "hard" || fil == "pcf4x4"))
+            pt.callout = (before ? "before: " : "default: ") + t + " 1024";
         pt.marker = fil == "hard" ? Marker::Circle : fil == "pcf2x2" ? Marker::Square : fil == "pcf4x4" ? Marker::Triangle
                     : enc == "planar" ? Marker::Diamond : Marker::Cross;
         pt.radius = k.map ? 3.0 + 1.1 * std::log2(static_cast<double>(k.map) / 256.0) : 5.0;
@@ -165,6 +181,49 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
     if (front_keys)
         for (size_t i : p.front) front_keys->push_back(order[i]);
     return p;
+}
+
+// The defaults set against the settings before issue 9 (the "(before)" rows), over all scenes:
+// error, time, the shadow overhead (the frame's time over the time of the frame without shadows,
+// same run) and the texel use. Empty where the sweep ran no "(before)" rows.
+std::string defaults_against_before(const std::vector<const Row*>& all) {
+    const auto means = means_by_key(all);
+    const auto none = means.find({"none", 0});
+    std::map<Key, double> texel;  // mean texel use per key
+    {
+        std::map<Key, std::vector<double>> v;
+        for (const Row* r : all)
+            if (r->texel_use_pct >= 0.0) v[{r->technique, r->map}].push_back(r->texel_use_pct);
+        for (const auto& [k, xs] : v) texel[k] = std::accumulate(xs.begin(), xs.end(), 0.0) / static_cast<double>(xs.size());
+    }
+    std::ostringstream o;
+    bool any = false;
+    for (const auto& [k, m] : means) {
+        if (!is_before(k.technique)) continue;
+        const std::string now_name = k.technique.substr(0, k.technique.size() - std::string(kBeforeSuffix).size());
+        const auto now = means.find({now_name, k.map});
+        if (now == means.end()) continue;
+        if (!any) {
+            o << "\n## The defaults against the settings before issue 9 (all scenes)\n\n"
+                 "*now*: the defaults (`--bias auto --map-faces auto --light-fit tight --pcf-kernel early-exit`); *before*: "
+                 "`--bias sheet --map-faces both --light-fit scene --pcf-kernel full`. Shadow overhead: ms/frame over the "
+                 "ms/frame of `none` (no shadows) in the same run, the light moving (the map redrawn) and still (the map reused). "
+                 "Texel use: the share of the map covered by the receivers in view.\n\n"
+                 "| technique | map | error % now | before | mean abs error % now | before | ms/frame moving now | before | "
+                 "overhead moving now | before | overhead still now | texel use % now | before |\n"
+                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+            any = true;
+        }
+        const Mean& n = now->second;
+        const auto ratio = [&](double a, double b) { return b > 0.0 ? fixed(a / b, 2) + "x" : std::string("-"); };
+        const auto use = [&](const Key& key) { const auto it = texel.find(key); return it == texel.end() ? std::string("-") : fixed(it->second, 1); };
+        o << "| " << now_name << " | " << k.map << " | " << fixed(n.score.error_pct, 2) << " | " << fixed(m.score.error_pct, 2) << " | "
+          << fixed(n.score.mae_pct, 2) << " | " << fixed(m.score.mae_pct, 2) << " | " << fixed(n.moving, 2) << " | " << fixed(m.moving, 2)
+          << " | " << (none == means.end() ? "-" : ratio(n.moving, none->second.moving)) << " | "
+          << (none == means.end() ? "-" : ratio(m.moving, none->second.moving)) << " | "
+          << (none == means.end() ? "-" : ratio(n.still, none->second.still)) << " | " << use({now_name, k.map}) << " | " << use(k) << " |\n";
+    }
+    return o.str();
 }
 
 std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& front) {
@@ -235,6 +294,8 @@ std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& fro
             }
         }
     }
+
+    o << defaults_against_before(all);
 
     // Error % per scene at one map size (the middle of the sweep), and error and time by map size.
     const int mid_map = w.o.maps[w.o.maps.size() / 2];

@@ -252,6 +252,16 @@ private:
                     ring.width = 1.6;
                     items_.push_back(ring);
                 }
+                if (!pt.callout.empty()) {
+                    Item ring;
+                    ring.kind = Item::Circle;
+                    ring.pts = {{cx, cy}};
+                    ring.radius = pt.radius + (on_front[i] ? 7.5 : 4.5);
+                    ring.stroke = "#1f4e79";
+                    ring.width = 1.6;
+                    ring.dashed = true;
+                    items_.push_back(ring);
+                }
                 marker(cx, cy, pt.marker, pt.radius, color(pt.color), "#222222", 0.7, pt.tooltip);
             }
         // Labels on the front, each at the first of eight places around its point that overlaps
@@ -261,15 +271,21 @@ private:
             bool hits(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
         };
         std::vector<Box> taken;
-        for (size_t i : p_.front) {
+        std::vector<size_t> labelled = p_.front;  // the front's points, then the other callouts
+        for (size_t i = 0; i < p_.points.size(); ++i)
+            if (!p_.points[i].callout.empty() && !on_front[i] && std::isfinite(p_.points[i].x) && std::isfinite(p_.points[i].y) &&
+                !(p_.log_x && p_.points[i].x <= 0.0))
+                labelled.push_back(i);
+        for (size_t i : labelled) {
             const PlotPoint& pt = p_.points[i];
             const double r = pt.radius + 5.0;
             taken.push_back({px(pt.x) - r, py(pt.y) - r, px(pt.x) + r, py(pt.y) + r});
         }
         constexpr double kSize = 10.5, kCharW = 6.3, kHeight = 11.0;
-        for (size_t i : p_.front) {
+        for (size_t i : labelled) {
             const PlotPoint& pt = p_.points[i];
-            const double w = kCharW * static_cast<double>(pt.label.size()), r = pt.radius + 6.0;
+            const std::string& label = pt.callout.empty() ? pt.label : pt.callout;
+            const double w = kCharW * static_cast<double>(label.size()), r = pt.radius + 6.0;
             const double cx = px(pt.x), cy = py(pt.y);
             // Baseline positions: right above, right below, left above, left below, then farther out.
             const double places[][2] = {{cx + r, cy - r}, {cx + r, cy + r + kHeight}, {cx - r - w, cy - r},
@@ -286,7 +302,7 @@ private:
                 }
             }
             taken.push_back(chosen);
-            text(chosen.x0, chosen.y1 - 2.0, pt.label, kSize, "#7b241c");
+            text(chosen.x0, chosen.y1 - 2.0, label, kSize, pt.callout.empty() ? "#7b241c" : "#1f4e79");
         }
     }
 

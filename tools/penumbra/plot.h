@@ -20,6 +20,7 @@ struct PlotPoint {
     Marker marker = Marker::Circle;
     double radius = 4.0;  // marker size in pixels
     std::string label;    // drawn beside the point when it is on the front
+    std::string callout;  // drawn beside the point (and the point ringed) wherever it is
     std::string tooltip;  // SVG <title>
 };
 
