@@ -320,6 +320,7 @@ void run_sweep(Sweep& w) {
             if (pictures && (s.map_size == 1024 || s.technique != render::Technique::ShadowMap)) {
                 std::string name = spec.label + "-" + row.technique + (row.map ? "-" + std::to_string(row.map) : "") + "-errors.png";
                 std::replace(name.begin(), name.end(), ' ', '-');
+                name.erase(std::remove_if(name.begin(), name.end(), [](char ch) { return ch == '(' || ch == ')'; }), name.end());
                 write_or_throw((images / name).string(), error_image(vis, truth));
             }
             std::fprintf(stderr, "[%4zu/%zu] %-12s %-16s %-9s error %6.2f %% (false shadow %5.2f, false lit %5.2f) | %s elapsed\n",
