@@ -81,6 +81,13 @@ struct Bounds {
     void add(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
     void add(const Bounds& b) { if (!b.empty()) { add(b.min); add(b.max); } }
     glm::vec3 center() const { return 0.5f * (min + max); }
+    // The box around two corners, in any order.
+    static Bounds around(const glm::vec3& a, const glm::vec3& b) {
+        Bounds r;
+        r.add(a);
+        r.add(b);
+        return r;
+    }
 };
 
 struct Scene {

@@ -15,6 +15,22 @@ namespace penumbra::shadow {
 
 namespace {
 
+// The points' extent in an eye space: x and y as they are, z as the distance in front (-z).
+struct Extent {
+    glm::vec3 lo{std::numeric_limits<float>::max()};
+    glm::vec3 hi{std::numeric_limits<float>::lowest()};
+};
+Extent eye_extent(const glm::mat4& view, const std::vector<glm::vec3>& points) {
+    Extent r;
+    for (const glm::vec3& p : points) {
+        glm::vec3 e = glm::vec3(view * glm::vec4(p, 1.0f));
+        e.z = -e.z;
+        r.lo = glm::min(r.lo, e);
+        r.hi = glm::max(r.hi, e);
+    }
+    return r;
+}
+
 // Half-angle cap for a perspective fit: 75 degrees (a 150 degree frustum). Beyond that the map's
 // texels near the edge stretch so much (tan grows without bound) that a wider frustum buys
 // nothing; a light that needs more is inside the scene and really wants a cube map.
@@ -146,17 +162,9 @@ LightFrustum fit_orthographic(const scene::Light& light, const std::vector<glm::
 
     float xmin = 0.0f, xmax = 0.0f, ymin = 0.0f, ymax = 0.0f, zmin = big_r, zmax = big_r;
     if (!points.empty()) {
-        xmin = ymin = zmin = std::numeric_limits<float>::max();
-        xmax = ymax = zmax = std::numeric_limits<float>::lowest();
-        for (const auto& p : points) {
-            const glm::vec3 e = glm::vec3(f.view * glm::vec4(p, 1.0f));
-            xmin = std::min(xmin, e.x);
-            xmax = std::max(xmax, e.x);
-            ymin = std::min(ymin, e.y);
-            ymax = std::max(ymax, e.y);
-            zmin = std::min(zmin, -e.z);
-            zmax = std::max(zmax, -e.z);
-        }
+        const Extent e = eye_extent(f.view, points);
+        xmin = e.lo.x, ymin = e.lo.y, zmin = e.lo.z;
+        xmax = e.hi.x, ymax = e.hi.y, zmax = e.hi.z;
     }
 
     // Tight x/y (widened by a hair so the outermost points are strictly inside); a flat or
@@ -339,18 +347,9 @@ void fit_tight_orthographic(const scene::Light& light, const std::vector<glm::ve
     f.perspective = false;
     f.view = look_along(centroid - dir * back, dir);
 
-    float xl = std::numeric_limits<float>::max(), xr = std::numeric_limits<float>::lowest();
-    float yb = xl, yt = xr;
-    float zmin = xl, zmax = xr;
-    for (const glm::vec3& p : visible) {
-        const glm::vec3 e = glm::vec3(f.view * glm::vec4(p, 1.0f));
-        xl = std::min(xl, e.x);
-        xr = std::max(xr, e.x);
-        yb = std::min(yb, e.y);
-        yt = std::max(yt, e.y);
-        zmin = std::min(zmin, -e.z);
-        zmax = std::max(zmax, -e.z);
-    }
+    const Extent ext = eye_extent(f.view, visible);
+    float xl = ext.lo.x, xr = ext.hi.x, yb = ext.lo.y, yt = ext.hi.y;
+    float zmin = ext.lo.z, zmax = ext.hi.z;
     widen_window(xl, xr, tiny);
     widen_window(yb, yt, tiny);
 

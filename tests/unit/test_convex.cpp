@@ -18,12 +18,7 @@ using namespace penumbra::shadow;
 
 namespace {
 
-scene::Bounds box(const glm::vec3& lo, const glm::vec3& hi) {
-    scene::Bounds b;
-    b.add(lo);
-    b.add(hi);
-    return b;
-}
+scene::Bounds box(const glm::vec3& lo, const glm::vec3& hi) { return scene::Bounds::around(lo, hi); }
 
 bool has_point(const std::vector<glm::vec3>& pts, const glm::vec3& p, float tol = 1e-4f) {
     return std::any_of(pts.begin(), pts.end(), [&](const glm::vec3& q) { return glm::length(q - p) < tol; });

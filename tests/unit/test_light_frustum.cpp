@@ -333,12 +333,7 @@ TEST(LightFrustumCourse, ContainsEveryCasterAndReceiverVertex) {
 
 namespace {
 
-scene::Bounds box(const glm::vec3& lo, const glm::vec3& hi) {
-    scene::Bounds b;
-    b.add(lo);
-    b.add(hi);
-    return b;
-}
+scene::Bounds box(const glm::vec3& lo, const glm::vec3& hi) { return scene::Bounds::around(lo, hi); }
 
 // Inside -w <= x, y, z <= w with w > 0, with a relative tolerance for float rounding.
 bool in_clip_volume(const glm::mat4& vp, const glm::vec3& p, float tol = 1e-4f) {
