@@ -138,7 +138,7 @@ struct Planned {
 // The defaults as they were before issue 9 ("Better than three.js on the same frames"): the
 // sheet's constant bias, both faces into the map, the frustum fitted around the whole scene and
 // PCF's full kernel. With the references, and unless --set changes one of these options itself,
-// the sweep also runs rgba hard and rgba pcf4x4 so at the map sizes 512, 1024 and 2048 it sweeps,
+// the sweep also runs rgba hard and rgba pcf4x4 at those of the map sizes 512, 1024 and 2048 it sweeps,
 // labelled "... (before)", so the report can set the defaults against them.
 std::vector<Planned> before_rows(const Sweep& w) {
     std::vector<Planned> out;

@@ -264,8 +264,8 @@ private:
                 }
                 marker(cx, cy, pt.marker, pt.radius, color(pt.color), "#222222", 0.7, pt.tooltip);
             }
-        // Labels on the front, each at the first of eight places around its point that overlaps
-        // no label already placed and no marker of the front (greedy, in order of x).
+        // Labels on the front, then the callouts, each at the first of eight places around its
+        // point that overlaps no label already placed and no labelled marker (greedy, in order).
         struct Box {
             double x0, y0, x1, y1;
             bool hits(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
