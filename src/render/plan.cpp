@@ -294,15 +294,19 @@ scene::Bounds shadowed_bounds(const scene::Scene& scene) {
     return b;
 }
 
-shadow::LightFrustum fit_light_view(const scene::Scene& scene, const scene::Light& light, const glm::mat4& camera_view_proj) {
-    std::vector<scene::Bounds> receivers;
-    std::vector<scene::Bounds> casters;
+ShadowBounds shadow_bounds(const scene::Scene& scene) {
+    ShadowBounds b;
     for (const auto& o : scene.objects) {
         if (!valid_mesh(scene, o.mesh)) continue;
-        if (o.receives_shadow) receivers.push_back(scene::object_bounds(scene, o));
-        if (o.casts_shadow) casters.push_back(scene::object_bounds(scene, o));
+        if (o.receives_shadow) b.receivers.push_back(scene::object_bounds(scene, o));
+        if (o.casts_shadow) b.casters.push_back(scene::object_bounds(scene, o));
     }
-    return shadow::fit_light_frustum_tight(light, receivers, casters, camera_view_proj).frustum;
+    return b;
+}
+
+shadow::LightFrustum fit_light_view(const scene::Scene& scene, const scene::Light& light, const glm::mat4& camera_view_proj) {
+    const ShadowBounds b = shadow_bounds(scene);
+    return shadow::fit_light_frustum_tight(light, b.receivers, b.casters, camera_view_proj).frustum;
 }
 
 namespace {
@@ -315,7 +319,7 @@ struct Planning {
 
     Planning(const scene::Scene& scene, const Settings& s, const gl::Caps& caps, const FrameInputs& in,
              const FramePlan* previous)
-        : ctx{scene, s, caps, in, previous, plan, in.light ? *in.light : scene.light, {}, {}, {}, {}, {}},
+        : ctx{scene, s, caps, in, previous, plan, in.light ? *in.light : scene.light, {}, {}, {}, {}},
           module(technique_module(s.technique)) {
         plan.settings = s;
         plan.output = output_name(in.output);
@@ -324,7 +328,6 @@ struct Planning {
             if (!valid_mesh(scene, o.mesh)) continue;
             ctx.drawable.push_back(static_cast<int>(i));
             if (o.casts_shadow) ctx.casters.push_back(static_cast<int>(i));
-            if (o.casts_shadow || o.receives_shadow) ctx.shadowed.add(scene::object_bounds(scene, o));
         }
         ctx.depth_path = {s.precision == shadow::Precision::Mediump, caps.unorm_floor};
         plan.camera = camera_view(scene, in);

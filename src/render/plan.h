@@ -234,6 +234,13 @@ CameraView camera_view(const scene::Scene& scene, const FrameInputs& inputs);
 
 // The world bounds of every object that casts or receives shadows.
 scene::Bounds shadowed_bounds(const scene::Scene& scene);
+// The world bounds of the objects (with a valid mesh) that receive shadows and of those that cast
+// them, each in scene order (PlanContext::casters' order).
+struct ShadowBounds {
+    std::vector<scene::Bounds> receivers;
+    std::vector<scene::Bounds> casters;
+};
+ShadowBounds shadow_bounds(const scene::Scene& scene);
 // The light's frustum fitted tightly around the receivers a camera with this view-projection
 // sees and the casters that can shadow them (shadow::fit_light_frustum_tight): the shadow map's
 // fit, and exercise W09P2a's view from the light.

@@ -11,7 +11,6 @@ namespace penumbra::render {
 
 namespace {
 
-
 bool power_of_two(int v) { return v > 0 && (v & (v - 1)) == 0; }
 
 const scene::Material& material_of(const scene::Scene& s, int material) {

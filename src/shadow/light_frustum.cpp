@@ -15,6 +15,16 @@ namespace penumbra::shadow {
 
 namespace {
 
+// Half-angle cap for a perspective fit: 75 degrees (a 150 degree frustum). Beyond that the map's
+// texels near the edge stretch so much (tan grows without bound) that a wider frustum buys
+// nothing; a light that needs more is inside the scene and really wants a cube map.
+const float kMaxTanHalfAngle = std::tan(glm::radians(75.0f));
+// Smallest tangent kept, so a single point on the view axis still gives an invertible matrix.
+constexpr float kMinTanHalfAngle = 1e-3f;
+// Relative widening of the fitted half-angles and ortho extents: every point is strictly
+// inside the clip volume, and the tightest point still lands beyond 0.99 of the edge.
+constexpr float kSideMargin = 1.01f;
+
 // The points' extent in an eye space: x and y as they are, z as the distance in front (-z).
 struct Extent {
     glm::vec3 lo{std::numeric_limits<float>::max()};
@@ -31,15 +41,14 @@ Extent eye_extent(const glm::mat4& view, const std::vector<glm::vec3>& points) {
     return r;
 }
 
-// Half-angle cap for a perspective fit: 75 degrees (a 150 degree frustum). Beyond that the map's
-// texels near the edge stretch so much (tan grows without bound) that a wider frustum buys
-// nothing; a light that needs more is inside the scene and really wants a cube map.
-const float kMaxTanHalfAngle = std::tan(glm::radians(75.0f));
-// Smallest tangent kept, so a single point on the view axis still gives an invertible matrix.
-constexpr float kMinTanHalfAngle = 1e-3f;
-// Relative widening of the fitted half-angles and ortho extents: every point is strictly
-// inside the clip volume, and the tightest point still lands beyond 0.99 of the edge.
-constexpr float kSideMargin = 1.01f;
+// A window of the light's view (tangents for perspective, eye-space x and y for orthographic)
+// widened by the side margin around its middle, each half at least `min_half`.
+void widen_window(float& lo, float& hi, float min_half) {
+    const float half = std::max(0.5f * (hi - lo) * kSideMargin, min_half);
+    const float mid = 0.5f * (lo + hi);
+    lo = mid - half;
+    hi = mid + half;
+}
 
 glm::vec3 safe_normalize(const glm::vec3& v, const glm::vec3& fallback) {
     const float len = glm::length(v);
@@ -169,14 +178,8 @@ LightFrustum fit_orthographic(const scene::Light& light, const std::vector<glm::
 
     // Tight x/y (widened by a hair so the outermost points are strictly inside); a flat or
     // single-point extent is opened to `tiny` so the matrix stays invertible.
-    const auto widen = [tiny](float& lo, float& hi) {
-        const float half = std::max(0.5f * (hi - lo) * kSideMargin, tiny);
-        const float mid = 0.5f * (lo + hi);
-        lo = mid - half;
-        hi = mid + half;
-    };
-    widen(xmin, xmax);
-    widen(ymin, ymax);
+    widen_window(xmin, xmax, tiny);
+    widen_window(ymin, ymax, tiny);
     const float zpad = std::max(0.01f * (zmax - zmin), tiny);
     f.znear = zmin - zpad;
     f.zfar = zmax + zpad;
@@ -185,15 +188,6 @@ LightFrustum fit_orthographic(const scene::Light& light, const std::vector<glm::
 }
 
 // ---- the tight fit ----------------------------------------------------------------------------
-
-// A window of the light's view (tangents for perspective, eye-space x and y for orthographic)
-// widened by the side margin around its middle, each half at least `min_half`.
-void widen_window(float& lo, float& hi, float min_half) {
-    const float half = std::max(0.5f * (hi - lo) * kSideMargin, min_half);
-    const float mid = 0.5f * (lo + hi);
-    lo = mid - half;
-    hi = mid + half;
-}
 
 // A half-space given in the light's eye space, in world space: (n, d).(V p) = (V^T (n, d)).p.
 HalfSpace to_world(const glm::mat4& view, const glm::vec4& eye_half_space) { return glm::transpose(view) * eye_half_space; }
@@ -419,16 +413,21 @@ TightFit fit_light_frustum_tight(const scene::Light& light, const std::vector<sc
             r.tight = fit_tight_perspective(light, r.visible, receivers, casters, r);
         }
     }
-    if (!r.tight) {
-        // The fallback: the old fit around the corners of the bounds of everything, every caster drawn.
-        scene::Bounds all;
-        for (const auto* boxes : {&receivers, &casters})
-            for (const scene::Bounds& b : *boxes) all.add(b);
-        r.frustum = all.empty() ? fit_light_frustum(light, {}, light.position + light.direction)
-                                : fit_light_frustum(light, scene::corners(all), all.center());
-        r.casters.clear();
-        for (size_t k = 0; k < casters.size(); ++k) r.casters.push_back(static_cast<int>(k));
-    }
+    if (!r.tight) return fit_light_frustum_scene(light, receivers, casters, camera_view_proj);
+    r.texel_use = texel_use(r.frustum, r.visible);
+    return r;
+}
+
+TightFit fit_light_frustum_scene(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                 const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj) {
+    TightFit r;
+    scene::Bounds all;
+    for (const auto* boxes : {&receivers, &casters})
+        for (const scene::Bounds& b : *boxes) all.add(b);
+    r.frustum = all.empty() ? fit_light_frustum(light, {}, light.position + light.direction)
+                            : fit_light_frustum(light, scene::corners(all), all.center());
+    for (size_t k = 0; k < casters.size(); ++k) r.casters.push_back(static_cast<int>(k));
+    r.visible = visible_receiver_points(light, receivers, camera_view_proj);
     r.texel_use = texel_use(r.frustum, r.visible);
     return r;
 }

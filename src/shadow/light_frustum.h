@@ -65,6 +65,12 @@ float texel_use(const LightFrustum& f, const std::vector<glm::vec3>& points);
 TightFit fit_light_frustum_tight(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                  const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj);
 
+// The fit before the tight one (--light-fit scene), also the tight fit's fallback:
+// fit_light_frustum around the bounds of every receiver and caster, every caster drawn; `visible`
+// and `texel_use` as the tight fit reports them, `tight` false.
+TightFit fit_light_frustum_scene(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                 const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj);
+
 // Matrix that maps clip space [-1,1] to texture space [0,1] (the sheet's B).
 glm::mat4 clip_to_texture();
 

@@ -65,24 +65,13 @@ std::string caster_count(size_t drawn, size_t all) {
                         : std::to_string(drawn) + " of " + std::to_string(all) + " caster(s)";
 }
 
-// The tight fit for this frame's camera: receivers and casters by their world bounds.
+// The light's frustum for this frame's camera (--light-fit): receivers and casters by their world
+// bounds; TightFit::casters indexes PlanContext::casters (both in scene order).
 shadow::TightFit fit_to_view(const PlanContext& c) {
-    std::vector<scene::Bounds> receivers;
-    std::vector<scene::Bounds> casters;
-    for (int i : c.drawable) {
-        const scene::Object& o = c.scene.objects[static_cast<size_t>(i)];
-        if (o.receives_shadow) receivers.push_back(scene::object_bounds(c.scene, o));
-    }
-    for (int i : c.casters) casters.push_back(scene::object_bounds(c.scene, c.scene.objects[static_cast<size_t>(i)]));
-    if (c.settings.light_fit == LightFit::Tight)
-        return shadow::fit_light_frustum_tight(c.light, receivers, casters, c.plan.camera.view_proj);
-    // --light-fit scene: the frustum around every caster and receiver, every caster drawn.
-    shadow::TightFit fit;
-    fit.frustum = shadow::fit_light_frustum(c.light, scene::corners(c.shadowed), c.shadowed.center());
-    fit.visible = shadow::visible_receiver_points(c.light, receivers, c.plan.camera.view_proj);
-    fit.texel_use = shadow::texel_use(fit.frustum, fit.visible);
-    for (size_t k = 0; k < casters.size(); ++k) fit.casters.push_back(static_cast<int>(k));
-    return fit;
+    const ShadowBounds b = shadow_bounds(c.scene);
+    return c.settings.light_fit == LightFit::Tight
+               ? shadow::fit_light_frustum_tight(c.light, b.receivers, b.casters, c.plan.camera.view_proj)
+               : shadow::fit_light_frustum_scene(c.light, b.receivers, b.casters, c.plan.camera.view_proj);
 }
 
 class ShadowMapModule : public Module {

@@ -58,7 +58,6 @@ struct PlanContext {
     scene::Light light;           // the scene's, or the inputs'
     std::vector<int> drawable;    // objects with a mesh, in scene order
     std::vector<int> casters;     // ... that cast shadows
-    scene::Bounds shadowed;       // the world bounds of every caster and receiver
     DepthPath depth_path;         // how depth is packed on this context
     TargetRef camera_target;      // where the camera pass draws
 
