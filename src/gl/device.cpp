@@ -1,5 +1,6 @@
 #include "gl/device.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "gl/check.h"
@@ -30,6 +31,8 @@ GLenum to_gl(StencilOp op) {
         case StencilOp::Replace: return GL_REPLACE;
         case StencilOp::Incr: return GL_INCR;
         case StencilOp::Decr: return GL_DECR;
+        case StencilOp::IncrWrap: return GL_INCR_WRAP;
+        case StencilOp::DecrWrap: return GL_DECR_WRAP;
     }
     return GL_KEEP;
 }
@@ -67,6 +70,9 @@ void Device::invalidate() {
     glStencilMask(0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glDisable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(0.0f, 0.0f);
     glDisable(GL_SCISSOR_TEST);
     scissor_ = false;
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -164,8 +170,21 @@ void Device::apply(const PipelineState& s) {
     if (a.enabled != b.enabled) set_enabled(GL_STENCIL_TEST, a.enabled);
     if (a.func != b.func || a.ref != b.ref || a.read_mask != b.read_mask) glStencilFunc(to_gl(a.func), a.ref, a.read_mask);
     if (a.write_mask != b.write_mask) glStencilMask(a.write_mask);
-    if (a.fail != b.fail || a.depth_fail != b.depth_fail || a.pass != b.pass)
-        glStencilOp(to_gl(a.fail), to_gl(a.depth_fail), to_gl(a.pass));
+    if (a.fail != b.fail || a.depth_fail != b.depth_fail || a.pass != b.pass || a.two_sided != b.two_sided ||
+        a.back_fail != b.back_fail || a.back_depth_fail != b.back_depth_fail || a.back_pass != b.back_pass) {
+        if (a.two_sided) {
+            glStencilOpSeparate(GL_FRONT, to_gl(a.fail), to_gl(a.depth_fail), to_gl(a.pass));
+            glStencilOpSeparate(GL_BACK, to_gl(a.back_fail), to_gl(a.back_depth_fail), to_gl(a.back_pass));
+        } else {
+            glStencilOp(to_gl(a.fail), to_gl(a.depth_fail), to_gl(a.pass));
+        }
+    }
+    if (s.blend != state_.blend) set_enabled(GL_BLEND, s.blend != Blend::Off);
+    const bool offset = s.offset_factor != 0.0f || s.offset_units != 0.0f;
+    const bool offset_was = state_.offset_factor != 0.0f || state_.offset_units != 0.0f;
+    if (offset != offset_was) set_enabled(GL_POLYGON_OFFSET_FILL, offset);
+    if (offset && (s.offset_factor != state_.offset_factor || s.offset_units != state_.offset_units))
+        glPolygonOffset(s.offset_factor, s.offset_units);
     state_ = s;
     check_errors("Device::apply", __FILE__, __LINE__);
 }
@@ -207,6 +226,22 @@ void Device::draw(const MeshBuffers& mesh) {
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh.indices.id());
     PENUMBRA_GL(glDrawElements(GL_TRIANGLES, mesh.index_count, mesh.index_u32 ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT,
                                nullptr));
+}
+
+void Device::draw_points(const std::vector<glm::vec4>& triangles) {
+    if (triangles.empty()) return;
+    const std::size_t bytes = triangles.size() * sizeof(glm::vec4);
+    if (stream_.id() == 0 || bytes > stream_bytes_) {
+        stream_bytes_ = std::max(bytes, stream_bytes_ * 2);
+        stream_ = Buffer(BufferKind::Vertex, nullptr, stream_bytes_, "streamed triangles", true);
+    }
+    stream_.update(triangles.data(), bytes);
+    glBindBuffer(GL_ARRAY_BUFFER, stream_.id());
+    glEnableVertexAttribArray(kPosition);
+    glVertexAttribPointer(kPosition, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
+    glDisableVertexAttribArray(kNormal);
+    glDisableVertexAttribArray(kUV);
+    PENUMBRA_GL(glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.size())));
 }
 
 void Device::draw_fullscreen() {

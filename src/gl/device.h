@@ -57,6 +57,9 @@ public:
     // Draws all triangles; the vertex shader reads a_position, a_normal and (when the mesh has
     // them) a_uv. uv is set to 0 for meshes without uvs.
     void draw(const MeshBuffers& mesh);
+    // Triangles of homogeneous points (x, y, z, w) in a_position, from a buffer refilled each call
+    // (shadow volumes, made per frame on the CPU).
+    void draw_points(const std::vector<glm::vec4>& triangles);
     // A single triangle that covers the viewport (positions in clip space in a_position.xy).
     void draw_fullscreen();
 
@@ -74,6 +77,8 @@ private:
     std::uint32_t program_ = 0;
     std::vector<std::uint32_t> bound_;  // the texture each unit holds, by unit (0: unknown)
     Buffer fullscreen_;
+    Buffer stream_;
+    std::size_t stream_bytes_ = 0;
 };
 
 }  // namespace penumbra::gl

@@ -23,14 +23,22 @@ GLsizei isize(T v) { return static_cast<GLsizei>(v); }
 
 // ---- Buffer ---------------------------------------------------------------------------------
 
-Buffer::Buffer(BufferKind kind, const void* data, std::size_t bytes, const char* label) : kind_(kind), bytes_(bytes) {
+Buffer::Buffer(BufferKind kind, const void* data, std::size_t bytes, const char* label, bool dynamic)
+    : kind_(kind), bytes_(bytes) {
     GLuint id = 0;
     glGenBuffers(1, &id);
     h_ = Handle<BufferDeleter>(id);
     const GLenum target = kind == BufferKind::Vertex ? GL_ARRAY_BUFFER : GL_ELEMENT_ARRAY_BUFFER;
     PENUMBRA_GL(glBindBuffer(target, id));
-    PENUMBRA_GL(glBufferData(target, static_cast<GLsizeiptr>(bytes), data, GL_STATIC_DRAW));
+    PENUMBRA_GL(glBufferData(target, static_cast<GLsizeiptr>(bytes), data, dynamic ? GL_DYNAMIC_DRAW : GL_STATIC_DRAW));
     check_errors(label, __FILE__, __LINE__);
+}
+
+void Buffer::update(const void* data, std::size_t bytes) {
+    if (bytes > bytes_) throw Error("Buffer::update: " + std::to_string(bytes) + " bytes into a buffer of " + std::to_string(bytes_));
+    const GLenum target = kind_ == BufferKind::Vertex ? GL_ARRAY_BUFFER : GL_ELEMENT_ARRAY_BUFFER;
+    PENUMBRA_GL(glBindBuffer(target, id()));
+    PENUMBRA_GL(glBufferSubData(target, 0, static_cast<GLsizeiptr>(bytes), data));
 }
 
 // ---- Texture --------------------------------------------------------------------------------

@@ -55,7 +55,10 @@ enum class BufferKind { Vertex, Index };
 class Buffer {
 public:
     Buffer() = default;
-    Buffer(BufferKind kind, const void* data, std::size_t bytes, const char* label);
+    // `dynamic`: refilled often (GL_DYNAMIC_DRAW) with update().
+    Buffer(BufferKind kind, const void* data, std::size_t bytes, const char* label, bool dynamic = false);
+    // Replaces the first `bytes` (at most bytes()) of its contents.
+    void update(const void* data, std::size_t bytes);
     std::uint32_t id() const { return h_.id(); }
     BufferKind kind() const { return kind_; }
     std::size_t bytes() const { return bytes_; }

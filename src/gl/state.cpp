@@ -6,12 +6,15 @@ namespace penumbra::gl {
 
 bool StencilState::operator==(const StencilState& o) const {
     return enabled == o.enabled && func == o.func && ref == o.ref && read_mask == o.read_mask &&
-           write_mask == o.write_mask && fail == o.fail && depth_fail == o.depth_fail && pass == o.pass;
+           write_mask == o.write_mask && fail == o.fail && depth_fail == o.depth_fail && pass == o.pass &&
+           two_sided == o.two_sided && back_fail == o.back_fail && back_depth_fail == o.back_depth_fail &&
+           back_pass == o.back_pass;
 }
 
 bool PipelineState::operator==(const PipelineState& o) const {
     return depth_test == o.depth_test && depth_func == o.depth_func && depth_write == o.depth_write &&
-           color_write == o.color_write && cull == o.cull && stencil == o.stencil;
+           color_write == o.color_write && cull == o.cull && stencil == o.stencil && blend == o.blend &&
+           offset_factor == o.offset_factor && offset_units == o.offset_units;
 }
 
 std::string to_string(Compare c) {
@@ -35,6 +38,8 @@ std::string to_string(StencilOp o) {
         case StencilOp::Replace: return "replace";
         case StencilOp::Incr: return "incr";
         case StencilOp::Decr: return "decr";
+        case StencilOp::IncrWrap: return "incr-wrap";
+        case StencilOp::DecrWrap: return "decr-wrap";
     }
     return "?";
 }
@@ -60,7 +65,14 @@ int state_calls(const PipelineState& from, const PipelineState& to) {
     n += a.enabled != b.enabled;
     n += a.func != b.func || a.ref != b.ref || a.read_mask != b.read_mask;
     n += a.write_mask != b.write_mask;
-    n += a.fail != b.fail || a.depth_fail != b.depth_fail || a.pass != b.pass;
+    if (a.fail != b.fail || a.depth_fail != b.depth_fail || a.pass != b.pass || a.two_sided != b.two_sided ||
+        a.back_fail != b.back_fail || a.back_depth_fail != b.back_depth_fail || a.back_pass != b.back_pass)
+        n += a.two_sided ? 2 : 1;
+    n += from.blend != to.blend;
+    const bool offset_from = from.offset_factor != 0.0f || from.offset_units != 0.0f;
+    const bool offset_to = to.offset_factor != 0.0f || to.offset_units != 0.0f;
+    n += offset_from != offset_to;
+    n += offset_to && (from.offset_factor != to.offset_factor || from.offset_units != to.offset_units);
     return n;
 }
 
@@ -69,13 +81,26 @@ std::string to_string(const PipelineState& s) {
     out += s.depth_write ? ", write" : ", no write";
     out += s.color_write ? "; colour on" : "; colour off";
     out += "; cull " + to_string(s.cull);
+    if (s.blend == Blend::Alpha) out += "; blend alpha";
+    if (s.offset_factor != 0.0f || s.offset_units != 0.0f) {
+        char offset[64];
+        std::snprintf(offset, sizeof offset, "; depth offset %g, %g", static_cast<double>(s.offset_factor),
+                      static_cast<double>(s.offset_units));
+        out += offset;
+    }
     const StencilState& st = s.stencil;
     if (!st.enabled) return out + "; stencil off";
     char masks[48];
     std::snprintf(masks, sizeof masks, " (read %02x, write %02x)", static_cast<unsigned>(st.read_mask),
                   static_cast<unsigned>(st.write_mask));
     out += "; stencil " + to_string(st.func) + " " + std::to_string(st.ref) + masks;
-    out += ", fail " + to_string(st.fail) + ", depth fail " + to_string(st.depth_fail) + ", pass " + to_string(st.pass);
+    const auto ops = [](StencilOp f, StencilOp z, StencilOp p) {
+        return "fail " + to_string(f) + ", depth fail " + to_string(z) + ", pass " + to_string(p);
+    };
+    if (st.two_sided)
+        return out + ", front: " + ops(st.fail, st.depth_fail, st.pass) + "; back: " +
+               ops(st.back_fail, st.back_depth_fail, st.back_pass);
+    out += ", " + ops(st.fail, st.depth_fail, st.pass);
     return out;
 }
 

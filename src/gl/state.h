@@ -9,7 +9,7 @@
 namespace penumbra::gl {
 
 enum class Compare { Never, Less, LEqual, Equal, GEqual, Greater, NotEqual, Always };
-enum class StencilOp { Keep, Zero, Replace, Incr, Decr };
+enum class StencilOp { Keep, Zero, Replace, Incr, Decr, IncrWrap, DecrWrap };
 enum class Cull { None, Back, Front };
 
 struct StencilState {
@@ -19,6 +19,9 @@ struct StencilState {
     std::uint32_t read_mask = 0xFF;
     std::uint32_t write_mask = 0xFF;
     StencilOp fail = StencilOp::Keep, depth_fail = StencilOp::Keep, pass = StencilOp::Keep;
+    // Two-sided: the back faces' ops (glStencilOpSeparate); the ones above are then the front's.
+    bool two_sided = false;
+    StencilOp back_fail = StencilOp::Keep, back_depth_fail = StencilOp::Keep, back_pass = StencilOp::Keep;
     bool operator==(const StencilState& o) const;
     bool operator!=(const StencilState& o) const { return !(*this == o); }
 };
@@ -33,6 +36,27 @@ inline StencilState stencil_test(Compare func, int ref, StencilOp pass = Stencil
     return s;
 }
 
+// Two-sided stencil counting (shadow volumes): front faces `front`, back faces `back`, applied where
+// the depth test passes (depth-pass) or where it fails (depth-fail); wrapping, so that any order of
+// increments and decrements sums right.
+inline StencilState stencil_count(bool on_depth_fail) {
+    StencilState s;
+    s.enabled = true;
+    s.func = Compare::Always;
+    s.two_sided = true;
+    if (on_depth_fail) {
+        s.depth_fail = StencilOp::DecrWrap;
+        s.back_depth_fail = StencilOp::IncrWrap;
+    } else {
+        s.pass = StencilOp::IncrWrap;
+        s.back_pass = StencilOp::DecrWrap;
+    }
+    return s;
+}
+
+// Blending of a colour over what the target holds: by the source's alpha.
+enum class Blend { Off, Alpha };
+
 struct PipelineState {
     bool depth_test = true;
     Compare depth_func = Compare::Less;
@@ -40,6 +64,10 @@ struct PipelineState {
     bool color_write = true;
     Cull cull = Cull::Back;
     StencilState stencil;
+    Blend blend = Blend::Off;
+    // glPolygonOffset(factor, units) with GL_POLYGON_OFFSET_FILL where either is non-zero: positive
+    // values push the fragments' depth away from the eye.
+    float offset_factor = 0.0f, offset_units = 0.0f;
     bool operator==(const PipelineState& o) const;
     bool operator!=(const PipelineState& o) const { return !(*this == o); }
 };

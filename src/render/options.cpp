@@ -11,6 +11,7 @@ std::string_view to_string(Technique t) {
     switch (t) {
         case Technique::ShadowMap: return "shadowmap";
         case Technique::Planar: return "planar";
+        case Technique::Volumes: return "volumes";
         case Technique::None: return "none";
     }
     return "?";
@@ -28,11 +29,21 @@ std::string_view to_string(MapFaces f) {
 
 std::string_view to_string(LightFit f) { return f == LightFit::Tight ? "tight" : "scene"; }
 
+std::string_view to_string(VolumeMethod m) {
+    switch (m) {
+        case VolumeMethod::Auto: return "auto";
+        case VolumeMethod::ZPass: return "zpass";
+        case VolumeMethod::ZFail: return "zfail";
+    }
+    return "?";
+}
+
 std::string_view to_string(Aov a) {
     switch (a) {
         case Aov::Color: return "color";
         case Aov::Visibility: return "visibility";
         case Aov::LightDepth: return "light-depth";
+        case Aov::StencilCount: return "stencil-count";
     }
     return "?";
 }
@@ -40,12 +51,13 @@ std::string_view to_string(Aov a) {
 bool Settings::operator==(const Settings& o) const {
     return technique == o.technique && encoding == o.encoding && filter == o.filter && pcf_kernel == o.pcf_kernel &&
            map_size == o.map_size && bias == o.bias && bias_auto == o.bias_auto && map_faces == o.map_faces &&
-           light_fit == o.light_fit && precision == o.precision && aov == o.aov;
+           light_fit == o.light_fit && precision == o.precision && volume_method == o.volume_method &&
+           show_volumes == o.show_volumes && aov == o.aov;
 }
 
 bool Job::operator==(const Job& o) const {
     return scene == o.scene && time == o.time && width == o.width && height == o.height && out == o.out &&
-           frames == o.frames;
+           frames == o.frames && eye_in_shadow == o.eye_in_shadow;
 }
 
 // ---- parsing ----------------------------------------------------------------------------------
@@ -316,16 +328,41 @@ std::vector<Option<Options>> make_table() {
         },
         [](const Options& o) { return std::string(shadow::to_string(o.settings.precision)); });
 
+    OptionInfo volume_method = make_option_info("volume-method", P::Technique, T::Choice,
+                         "shadow volumes: auto = depth-pass where no volume can reach the eye's near plane, depth-fail "
+                         "elsewhere; zpass = depth-pass (Heidmann), fails with the eye in a shadow; zfail = depth-fail "
+                         "(Carmack's reverse) with caps", "Volume method",
+                         {{"auto", "auto: depth-pass unless the eye may be in a shadow"},
+                          {"zpass", "depth-pass (counts in front of the surface)"},
+                          {"zfail", "depth-fail (counts behind the surface)"}});
+    add(volume_method, [](Options& o, std::string_view v) { o.settings.volume_method = enum_of(v, kAllVolumeMethods); },
+        [](const Options& o) { return std::string(to_string(o.settings.volume_method)); });
+
+    OptionInfo show_volumes = make_option_info("show-volumes", P::Technique, T::Choice,
+                         "shadow volumes: draw them translucent over the image (faces towards the eye orange, away blue)",
+                         "Show the volumes", {{"off", "off"}, {"on", "on"}});
+    add(show_volumes, [](Options& o, std::string_view v) { o.settings.show_volumes = v == "on"; },
+        [](const Options& o) { return std::string(o.settings.show_volumes ? "on" : "off"); });
+
     OptionInfo aov = make_option_info("aov", P::Technique, T::Choice, "what the image shows", "Show",
                    {{"color", "colour"}, {"visibility", "visibility (white lit, black shadowed)"},
-                    {"light-depth", "the shadow map's depth"}});
+                    {"light-depth", "the shadow map's depth"},
+                    {"stencil-count", "the stencil count of shadow volumes, in false colour"}});
     add(aov, [](Options& o, std::string_view v) { o.settings.aov = enum_of(v, kAllAovs); },
         [](const Options& o) { return std::string(to_string(o.settings.aov)); });
 
     OptionInfo technique = make_option_info("technique", P::Technique, T::Choice, "the shadow technique", "Technique",
-                         {{"shadowmap", "shadow map"}, {"planar", "planar projected shadows (stencil)"}, {"none", "no shadows"}});
+                         {{"shadowmap", "shadow map"}, {"planar", "planar projected shadows (stencil)"},
+                          {"volumes", "shadow volumes (stencil)"}, {"none", "no shadows"}});
     add(technique, [](Options& o, std::string_view v) { o.settings.technique = enum_of(v, kAllTechniques); },
         [](const Options& o) { return std::string(to_string(o.settings.technique)); });
+
+    OptionInfo eye = make_option_info("eye", P::Job, T::Choice,
+                   "scene = the scene's camera; in-shadow = inside the shadow of the largest caster, looking along "
+                   "it (where shadow volumes' depth-pass fails)", "Eye",
+                   {{"scene", "the scene's camera"}, {"in-shadow", "inside the teapot's shadow"}});
+    add(eye, [](Options& o, std::string_view v) { o.job.eye_in_shadow = v == "in-shadow"; },
+        [](const Options& o) { return std::string(o.job.eye_in_shadow ? "in-shadow" : "scene"); });
 
     OptionInfo out = make_option_info("out", P::Job, T::Text, "FILE.png (top row first); none: write nothing", "Output");
     out.may_be_empty = true;

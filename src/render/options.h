@@ -25,6 +25,7 @@ struct Job {
     int height = 512;
     std::string out;  // PNG path; empty: write nothing
     int frames = 1;
+    bool eye_in_shadow = false;  // --eye in-shadow: scene::place_eye_in_shadow
     bool operator==(const Job& o) const;
 };
 

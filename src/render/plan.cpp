@@ -347,6 +347,8 @@ std::string check(const scene::Scene& scene, const Settings& s, const gl::Caps& 
             return "an object override names an object, mesh or material the scene does not have";
     if (s.aov == Aov::LightDepth && s.technique != Technique::ShadowMap)
         return "--aov light-depth: needs --technique shadowmap";
+    if (s.aov == Aov::StencilCount && s.technique != Technique::Volumes)
+        return "--aov stencil-count: needs --technique volumes";
     Planning p(scene, s, caps, in, nullptr);
     return p.module.check(p.ctx);
 }

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -155,6 +156,9 @@ struct Draw {
     int image = -1;              // Lit: the scene image sampled as base colour (-1: none)...
     int image_resource = -1;     // ...or this resource's texture instead (an ImageOverride)
     std::optional<gl::Cull> cull;  // the pass's state with this face culling instead (a shadow map's faces)
+    // Instead of a mesh: triangles of homogeneous world points made for this frame (a shadow
+    // volume), drawn with the pass's view_proj (ObjectUniforms::Mvp, world = identity).
+    std::shared_ptr<const std::vector<glm::vec4>> triangles;
 };
 
 struct Pass {
@@ -195,6 +199,15 @@ struct StateCounts {
     int draws = 0;
 };
 
+// What the shadow volumes of a frame cost (technique volumes).
+struct VolumeStats {
+    int zpass_casters = 0, zfail_casters = 0;
+    int silhouette_edges = 0;
+    int triangles = 0;           // sides and caps
+    double fill = 0.0;           // stencil fragments rasterised (covered pixels, every layer, no depth test)
+    double fill_per_pixel = 0.0;  // fill / the image's pixels
+};
+
 struct FramePlan {
     Settings settings;
     std::string output;  // "offscreen 512x512", "window 800x600", "texture w09p2b 1024x1024"
@@ -205,6 +218,7 @@ struct FramePlan {
     std::optional<shadow::LightFrustum> light_frustum;  // when a shadow map is drawn or read
     // With it: the share of the map (0..1) covered by the receivers the camera sees.
     std::optional<float> texel_use;
+    std::optional<VolumeStats> volumes;  // with technique volumes
 
     int resource_index(std::string_view name) const;  // -1 when absent
     const PlannedResource* resource(std::string_view name) const;

@@ -95,7 +95,12 @@ std::string json_state(const gl::PipelineState& st) {
            ",\"func\":" + json_quote(gl::to_string(s.func)) + ",\"ref\":" + std::to_string(s.ref) +
            ",\"read_mask\":" + std::to_string(s.read_mask) + ",\"write_mask\":" + std::to_string(s.write_mask) +
            ",\"fail\":" + json_quote(gl::to_string(s.fail)) + ",\"depth_fail\":" + json_quote(gl::to_string(s.depth_fail)) +
-           ",\"pass\":" + json_quote(gl::to_string(s.pass)) + "},\"text\":" + json_quote(gl::to_string(st)) + "}";
+           ",\"pass\":" + json_quote(gl::to_string(s.pass)) + ",\"two_sided\":" + json_bool(s.two_sided) +
+           ",\"back_fail\":" + json_quote(gl::to_string(s.back_fail)) +
+           ",\"back_depth_fail\":" + json_quote(gl::to_string(s.back_depth_fail)) +
+           ",\"back_pass\":" + json_quote(gl::to_string(s.back_pass)) + "},\"blend\":" +
+           json_bool(st.blend != gl::Blend::Off) + ",\"depth_offset\":[" + json_number(static_cast<double>(st.offset_factor)) +
+           "," + json_number(static_cast<double>(st.offset_units)) + "],\"text\":" + json_quote(gl::to_string(st)) + "}";
 }
 
 std::string json_pass(const FramePlan& p, const Pass& pass) {
@@ -134,6 +139,7 @@ std::string json_pass(const FramePlan& p, const Pass& pass) {
         for (size_t b = 0; b < pass.bindings.size(); ++b)
             if (d.bindings & (1u << b)) binds.push_back(pass.bindings[b].name);
         j += std::string(i ? "," : "") + "{\"object\":" + (d.fullscreen ? std::string("null") : json_quote(d.label)) +
+             ",\"triangles\":" + (d.triangles ? std::to_string(d.triangles->size() / 3) : std::string("null")) +
              ",\"fullscreen\":" + json_bool(d.fullscreen) + ",\"mesh\":" + std::to_string(d.mesh) +
              ",\"material\":" + std::to_string(d.material) + ",\"variant\":" + json_quote(d.variant.name()) +
              ",\"vertex\":" + json_quote(d.variant.vertex) + ",\"fragment\":" + json_quote(d.variant.fragment) +
@@ -173,6 +179,14 @@ std::string FramePlan::to_text() const {
                       static_cast<double>(light_frustum->zfar), 100.0 * static_cast<double>(texel_use.value_or(0.0f)));
         o << buf;
     }
+    if (volumes) {
+        std::snprintf(buf, sizeof buf,
+                      "shadow volumes: %d caster(s) depth-pass, %d depth-fail; %d silhouette edge(s), %d triangle(s), "
+                      "fill %.0f px (%.2f per pixel)\n",
+                      volumes->zpass_casters, volumes->zfail_casters, volumes->silhouette_edges, volumes->triangles,
+                      volumes->fill, volumes->fill_per_pixel);
+        o << buf;
+    }
     std::size_t total = 0;
     o << "resources:\n";
     for (const PlannedResource& r : resources) {
@@ -209,7 +223,9 @@ std::string FramePlan::to_text() const {
             o << "\n";
         }
         for (const Draw& d : p.draws)
-            o << "     draw " << (d.fullscreen ? std::string("full-screen triangle") : d.label) << ": " << d.variant.name()
+            o << "     draw " << (d.fullscreen ? std::string("full-screen triangle") : d.label)
+              << (d.triangles ? " (" + std::to_string(d.triangles->size() / 3) + " triangles)" : std::string()) << ": "
+              << d.variant.name()
               << " with " << binding_names(p, d.bindings) << (d.cull ? ", cull " + gl::to_string(*d.cull) : std::string())
               << "\n";
     }
@@ -231,6 +247,14 @@ std::string FramePlan::to_json() const {
              ",\"view_proj\":" + json_floats(light_frustum->view_proj()) + "}";
     else
         j += ",\"light_frustum\":null";
+    if (volumes)
+        j += ",\"volumes\":{\"zpass_casters\":" + std::to_string(volumes->zpass_casters) +
+             ",\"zfail_casters\":" + std::to_string(volumes->zfail_casters) +
+             ",\"silhouette_edges\":" + std::to_string(volumes->silhouette_edges) +
+             ",\"triangles\":" + std::to_string(volumes->triangles) + ",\"fill\":" + json_number(volumes->fill) +
+             ",\"fill_per_pixel\":" + json_number(volumes->fill_per_pixel) + "}";
+    else
+        j += ",\"volumes\":null";
     j += ",\"resources\":[";
     std::size_t total = 0;
     for (size_t i = 0; i < resources.size(); ++i) {

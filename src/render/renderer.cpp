@@ -182,6 +182,7 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
             }
         }
         if (d.fullscreen) device_.draw_fullscreen();
+        else if (d.triangles) device_.draw_points(*d.triangles);
         else device_.draw(meshes_[static_cast<size_t>(d.mesh)]);
     }
     gl::check_errors(("the " + pass.name + " pass").c_str());

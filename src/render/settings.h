@@ -11,12 +11,20 @@
 
 namespace penumbra::render {
 
-enum class Technique { ShadowMap, Planar, None };
+enum class Technique { ShadowMap, Planar, Volumes, None };
 enum class Aov {
-    Color,       // the shaded image
-    Visibility,  // 8-bit grey: 255 where the light reaches the surface seen at the pixel, 0 in shadow
-    LightDepth   // the shadow map, depth scaled for viewing
+    Color,        // the shaded image
+    Visibility,   // 8-bit grey: 255 where the light reaches the surface seen at the pixel, 0 in shadow
+    LightDepth,   // the shadow map, depth scaled for viewing
+    StencilCount  // shadow volumes: the stencil count in false colour over the unlit image
 };
+// How shadow volumes count in the stencil buffer.
+enum class VolumeMethod {
+    Auto,   // depth-pass for casters whose volume cannot reach the near plane, depth-fail for the rest
+    ZPass,  // depth-pass (Heidmann): wrong where the eye is inside a volume
+    ZFail   // depth-fail (Carmack's reverse), with caps and an infinite far plane
+};
+inline constexpr VolumeMethod kAllVolumeMethods[] = {VolumeMethod::Auto, VolumeMethod::ZPass, VolumeMethod::ZFail};
 // Which faces of each caster go into the shadow map.
 enum class MapFaces {
     Auto,   // the back faces of a closed mesh (scene::Mesh::closed), both faces of an open one
@@ -31,13 +39,15 @@ enum class LightFit {
 };
 inline constexpr LightFit kAllLightFits[] = {LightFit::Tight, LightFit::Scene};
 inline constexpr MapFaces kAllMapFaces[] = {MapFaces::Auto, MapFaces::Front, MapFaces::Back, MapFaces::Both};
-inline constexpr Technique kAllTechniques[] = {Technique::ShadowMap, Technique::Planar, Technique::None};
-inline constexpr Aov kAllAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth};
+inline constexpr Technique kAllTechniques[] = {Technique::ShadowMap, Technique::Planar, Technique::Volumes,
+                                              Technique::None};
+inline constexpr Aov kAllAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth, Aov::StencilCount};
 
 std::string_view to_string(Technique t);
 std::string_view to_string(Aov a);
 std::string_view to_string(MapFaces f);
 std::string_view to_string(LightFit f);
+std::string_view to_string(VolumeMethod m);
 
 struct Settings {
     Technique technique = Technique::ShadowMap;
@@ -51,6 +61,8 @@ struct Settings {
     MapFaces map_faces = MapFaces::Auto;
     LightFit light_fit = LightFit::Tight;
     shadow::Precision precision = shadow::Precision::Highp;  // mediump: emulated fp16 depth path
+    VolumeMethod volume_method = VolumeMethod::Auto;
+    bool show_volumes = false;  // the volumes drawn translucent over the image
     Aov aov = Aov::Color;
 
     // The constant bias: with bias_auto the quantum part, else the chosen one or the sheet's.

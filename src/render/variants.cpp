@@ -108,6 +108,8 @@ Variant light_depth_variant(shadow::Encoding e, bool perspective, const DepthPat
 
 Variant probe_variant() { return {"light_depth.vert", "probe.frag", {}}; }
 
+Variant volume_variant() { return {"volume.vert", "probe.frag", {}}; }
+
 Variant ramp_variant(shadow::Encoding e, const DepthPath& path) {
     Variant v{"light_depth.vert", "ramp.frag", {encoding_define(e)}};
     if (path.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
@@ -156,6 +158,7 @@ std::vector<Variant> all_variants() {
             out.push_back(light_depth_variant(e, true, {mediump, false}));
         }
     out.push_back(probe_variant());
+    out.push_back(volume_variant());
     return out;
 }
 

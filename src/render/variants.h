@@ -49,8 +49,10 @@ Variant lit_variant(const LitFeatures& f);
 // The light's pass (also the planar stencil pass with DepthTex: colour off).
 Variant depth_variant(shadow::Encoding e, const DepthPath& path = {});
 Variant light_depth_variant(shadow::Encoding e, bool perspective, const DepthPath& path = {});
-// The unorm8 rounding probe's program.
+// The unorm8 rounding probe's program (a full-screen triangle of one colour, u_value).
 Variant probe_variant();
+// Triangles of homogeneous points (Draw::triangles) through u_mvp, in one colour (u_value).
+Variant volume_variant();
 // The precision test pattern: a ramp of depths packed as `e` packs them (R8 or RGBA).
 Variant ramp_variant(shadow::Encoding e, const DepthPath& path);
 

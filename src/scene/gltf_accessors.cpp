@@ -275,7 +275,7 @@ Mesh convert_primitive(const tinygltf::Model& model, int mesh_index, size_t p) {
         mesh.uvs.resize(n);
         for (size_t i = 0; i < n; ++i) mesh.uvs[i] = glm::vec2(read_float(uv, i, 0), read_float(uv, i, 1));
     }
-    mesh.closed = is_closed(mesh);
+    seal(mesh);
     return mesh;
 }
 

@@ -78,7 +78,7 @@ Mesh make_sphere(float radius, int slices, int stacks) {
         // South cap: up-left, pole, up-right.
         m.indices.insert(m.indices.end(), {row(stacks - 1, j), u32(south + j), row(stacks - 1, j + 1)});
     }
-    m.closed = is_closed(m);
+    seal(m);
     return m;
 }
 
@@ -109,7 +109,7 @@ Mesh make_box(const glm::vec3& half_extent) {
         }
         m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
     }
-    m.closed = is_closed(m);
+    seal(m);
     return m;
 }
 

@@ -7,38 +7,61 @@
 
 namespace penumbra::scene {
 
-bool is_closed(const Mesh& mesh) {
-    if (mesh.indices.size() < 12 || mesh.indices.size() % 3 != 0) return false;  // fewer than 4 triangles
+Topology weld(const Mesh& mesh) {
+    Topology t;
     const Bounds b = mesh_bounds(mesh);
     const float size = glm::length(b.max - b.min);
-    if (!(size > 0.0f) || !std::isfinite(size)) return false;
+    if (!(size > 0.0f) || !std::isfinite(size) || mesh.indices.size() % 3 != 0) return t;
     const float cell = 1e-6f * size;
-    // Weld: one id per rounded position.
+    // One id per rounded position.
     std::map<std::tuple<long long, long long, long long>, std::uint32_t> ids;
-    std::vector<std::uint32_t> weld(mesh.positions.size());
+    std::vector<std::uint32_t> id(mesh.positions.size());
     for (size_t i = 0; i < mesh.positions.size(); ++i) {
         const glm::vec3 q = glm::round(mesh.positions[i] / cell);
         const auto key = std::make_tuple(static_cast<long long>(q.x), static_cast<long long>(q.y), static_cast<long long>(q.z));
-        weld[i] = ids.emplace(key, static_cast<std::uint32_t>(ids.size())).first->second;
+        const auto [it, added] = ids.emplace(key, static_cast<std::uint32_t>(t.positions.size()));
+        if (added) t.positions.push_back(mesh.positions[i]);
+        id[i] = it->second;
     }
+    for (size_t k = 0; k + 2 < mesh.indices.size(); k += 3) {
+        std::uint32_t v[3];
+        bool inside = true;
+        for (int j = 0; j < 3; ++j) {
+            const std::uint32_t i = mesh.indices[k + static_cast<size_t>(j)];
+            inside = inside && i < id.size();
+            v[j] = inside ? id[i] : 0;
+        }
+        if (!inside || v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) continue;
+        t.triangles.insert(t.triangles.end(), {v[0], v[1], v[2]});
+    }
+    return t;
+}
+
+bool is_closed(const Topology& t) {
+    if (t.triangles.size() < 12) return false;  // fewer than 4 triangles
     // Each directed edge once; its reverse once.
     std::unordered_map<std::uint64_t, int> edges;
     const auto key = [](std::uint32_t from, std::uint32_t to) { return (static_cast<std::uint64_t>(from) << 32) | to; };
-    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        std::uint32_t v[3];
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t i = mesh.indices[t + static_cast<size_t>(k)];
-            if (i >= weld.size()) return false;
-            v[k] = weld[i];
-        }
-        if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) continue;
-        for (int k = 0; k < 3; ++k)
-            if (++edges[key(v[k], v[(k + 1) % 3])] > 1) return false;  // an edge run twice the same way
-    }
-    if (edges.empty()) return false;
+    for (size_t k = 0; k + 2 < t.triangles.size(); k += 3)
+        for (size_t j = 0; j < 3; ++j)
+            if (++edges[key(t.triangles[k + j], t.triangles[k + (j + 1) % 3])] > 1) return false;  // run twice the same way
     for (const auto& [e, n] : edges)
         if (!edges.count(key(static_cast<std::uint32_t>(e & 0xffffffffu), static_cast<std::uint32_t>(e >> 32)))) return false;
     return true;
+}
+
+bool is_closed(const Mesh& mesh) {
+    for (std::uint32_t i : mesh.indices)
+        if (i >= mesh.positions.size()) return false;
+    return is_closed(weld(mesh));
+}
+
+void seal(Mesh& mesh) {
+    auto t = std::make_shared<Topology>(weld(mesh));
+    bool in_range = true;
+    for (std::uint32_t i : mesh.indices) in_range = in_range && i < mesh.positions.size();
+    mesh.closed = in_range && is_closed(*t);
+    mesh.topology = std::move(t);
 }
 
 Bounds mesh_bounds(const Mesh& mesh) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -22,12 +23,27 @@ struct Mesh {
     // A closed surface (is_closed below): its back faces alone hold its silhouette from any light,
     // so a shadow map may take them instead of both sides. Set where the mesh is made.
     bool closed = false;
+    // Its triangles over welded positions (weld below): what shadow volumes find silhouette edges
+    // in. Set with `closed` by seal(); absent in a mesh made by hand (weld() it when needed).
+    std::shared_ptr<const struct Topology> topology;
 };
 
-// Whether the triangles enclose a volume: with positions welded (within 1e-6 of the mesh's size,
-// so a sphere's duplicated seam counts as one edge), every edge is shared by exactly two triangles
-// that run it in opposite directions (consistent winding). Degenerate triangles are ignored.
+// A mesh's triangles over welded positions: positions within 1e-6 of the mesh's size are one
+// vertex (a sphere's duplicated seam, a box's split corners), so an edge is the same edge in
+// every triangle that uses it. Degenerate triangles (two corners welded) are dropped.
+struct Topology {
+    std::vector<glm::vec3> positions;      // one per welded vertex
+    std::vector<std::uint32_t> triangles;  // three per triangle, into positions, the mesh's winding
+};
+Topology weld(const Mesh& mesh);
+
+// Whether the triangles enclose a volume: with positions welded, every edge is shared by exactly
+// two triangles that run it in opposite directions (consistent winding).
 bool is_closed(const Mesh& mesh);
+bool is_closed(const Topology& topology);
+
+// Sets mesh.topology and mesh.closed from the mesh's triangles: call where a mesh is made.
+void seal(Mesh& mesh);
 
 // 8-bit RGBA image, rows stored top row first.
 struct Image {

@@ -11,19 +11,32 @@
 
 namespace penumbra::scene {
 
+// Where the eye is: the scene's camera, or inside the shadow of the scene's largest caster (the
+// view where shadow volumes' depth-pass fails: the near plane lies inside a volume).
+enum class Eye { Scene, InShadow };
+
+// Moves the camera of `scene` into the shadow of its largest caster (not the ground): just beyond
+// it on the ray from the light through its centre, kept above the ground plane, looking along the
+// shadow and down towards the ground. False (and the scene unchanged) when no such caster exists.
+bool place_eye_in_shadow(Scene& scene);
+
 class SceneSource {
 public:
     // Returns false with `error` set (one line) when the scene cannot be loaded; warnings are
     // the loader's notes (a missing camera or light replaced by a default).
     bool open(const std::string& name, std::string& error, std::vector<std::string>& warnings,
               int teapot_level = 10);
-    // The scene at time t (both the light's and the jump's clocks at t).
+    // The scene at time t (both the light's and the jump's clocks at t), seen from the eye.
     const Scene& at(double t);
+    // Where at() puts the eye from now on (Eye::Scene: the scene's own camera).
+    void set_eye(Eye eye);
     bool animated() const { return course_.has_value(); }
 
 private:
     std::optional<CourseScene> course_;
     Scene static_;
+    Eye eye_ = Eye::Scene;
+    Camera camera_;  // the scene's own
 };
 
 }  // namespace penumbra::scene

@@ -155,7 +155,7 @@ Mesh make_teapot(int level) {
         kept += 3;
     }
     mesh.indices.resize(kept);
-    mesh.closed = is_closed(mesh);  // the Newell teapot has no bottom and an open rim: false
+    seal(mesh);  // the Newell teapot has no bottom and an open rim: false
     return mesh;
 }
 

@@ -26,13 +26,14 @@ float parse_aspect(const std::string& option, const std::string& size) {
 
 }  // namespace
 
-scene::SceneSource open_scene(const std::string& name) {
+scene::SceneSource open_scene(const std::string& name, scene::Eye eye) {
     scene::SceneSource src;
     std::string error;
     std::vector<std::string> warnings;
     const bool ok = src.open(name, error, warnings);
     for (const auto& w : warnings) std::cerr << "penumbra: note: " << w << "\n";
     if (!ok) throw CommandError{"--scene: " + error, 2};
+    src.set_eye(eye);
     return src;
 }
 

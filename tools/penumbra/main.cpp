@@ -50,7 +50,7 @@ std::unique_ptr<platform::Platform> make_context() {
     return p;
 }
 
-int channels_for(render::Aov aov) { return aov == render::Aov::Color ? 3 : 1; }
+int channels_for(render::Aov aov) { return aov == render::Aov::Color || aov == render::Aov::StencilCount ? 3 : 1; }
 
 void write_image(render::Renderer& r, const render::Options& o, const std::string& path) {
     const auto px = measure::from_rgba(r.read_image(), o.job.width, o.job.height, channels_for(o.settings.aov));
@@ -69,7 +69,7 @@ int run_render(const render::Options& o, bool verbose) {
         if (out.has_parent_path() && !fs::is_directory(out.parent_path(), ec))
             throw Failure{"--out " + job.out + ": folder " + out.parent_path().string() + " does not exist", 2};
     }
-    scene::SceneSource src = open_scene(job.scene);
+    scene::SceneSource src = open_scene(job.scene, job.eye_in_shadow ? scene::Eye::InShadow : scene::Eye::Scene);
     auto ctx = make_context();
     render::Renderer r(gl::probe_caps(ctx->api()));
     const render::FrameInputs in = render::offscreen(job.width, job.height);
@@ -111,7 +111,7 @@ int run_render(const render::Options& o, bool verbose) {
 // shows what it reuses), as text or JSON, on the headless context's real capabilities.
 int run_plan(const render::Options& o, bool json) {
     const render::Job& job = o.job;
-    scene::SceneSource src = open_scene(job.scene);
+    scene::SceneSource src = open_scene(job.scene, job.eye_in_shadow ? scene::Eye::InShadow : scene::Eye::Scene);
     auto ctx = make_context();
     render::Renderer r(gl::probe_caps(ctx->api()));
     const render::FrameInputs in = render::offscreen(job.width, job.height);
@@ -128,7 +128,7 @@ int run_gallery(const std::string& dir, const render::Options& base) {
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec) throw Failure{"--out-dir " + dir + ": cannot create (" + ec.message() + ")", 2};
-    scene::SceneSource src = open_scene(base.job.scene);
+    scene::SceneSource src = open_scene(base.job.scene, base.job.eye_in_shadow ? scene::Eye::InShadow : scene::Eye::Scene);
     const scene::Scene& frame = src.at(base.job.time);
     const render::FrameInputs in = render::offscreen(base.job.width, base.job.height);
     auto ctx = make_context();
@@ -149,7 +149,7 @@ int run_gallery(const std::string& dir, const render::Options& base) {
             o.settings.filter = f;
             rows.push_back({std::string(shadow::to_string(e)) + "-" + std::string(shadow::to_string(f)), o});
         }
-    for (auto t : {render::Technique::Planar, render::Technique::None}) {
+    for (auto t : {render::Technique::Planar, render::Technique::Volumes, render::Technique::None}) {
         render::Options o = base;
         o.settings.technique = t;
         rows.push_back({std::string(render::to_string(t)), o});

@@ -16,7 +16,8 @@ struct CommandError {
 
 // Opens "teapot" or a glTF file; the loader's notes go to stderr; a failure is a CommandError
 // (exit status 2) naming the file.
-scene::SceneSource open_scene(const std::string& name);
+// The scene by name, seen from `eye` (--eye).
+scene::SceneSource open_scene(const std::string& name, scene::Eye eye = scene::Eye::Scene);
 
 struct ExportOptions {
     std::string scene = "teapot";
@@ -30,6 +31,7 @@ struct TruthCommandOptions {
     std::string scene = "teapot";
     double time = 0.0;
     std::string size = "512x512";
+    std::string eye = "scene";
     std::string out_dir = "out/truth";
     int soft_samples = 0;
     float light_radius = -1.0f;  // < 0: the bench's default for the scene

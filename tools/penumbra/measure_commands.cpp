@@ -32,6 +32,7 @@ std::shared_ptr<MeasureCommands> add_measure_commands(CLI::App& app) {
     auto& t = m->truth_options;
     m->truth_cmd->add_option("--scene", t.scene, "teapot or FILE.gltf / FILE.glb");
     m->truth_cmd->add_option("--time", t.time, "seconds (default 0)");
+    m->truth_cmd->add_option("--eye", t.eye, "scene or in-shadow, as the renderer's --eye (default scene)");
     m->truth_cmd->add_option("--size", t.size, "WxH, as the renderer's --size (default 512x512)");
     m->truth_cmd->add_option("--out-dir", t.out_dir, "folder for the PNGs (default out/truth)");
     m->truth_cmd->add_option("--soft-samples", t.soft_samples, "also an area light, this many samples per pixel (default 0: none)");

@@ -144,7 +144,8 @@ void run_truth(const TruthCommandOptions& o) {
     fs::create_directories(o.out_dir, ec);
     if (ec || !fs::is_directory(o.out_dir)) throw CommandError{"--out-dir " + o.out_dir + ": cannot create", 2};
 
-    scene::SceneSource src = open_scene(o.scene);
+    if (o.eye != "scene" && o.eye != "in-shadow") throw CommandError{"--eye: unknown value '" + o.eye + "' (scene, in-shadow)", 2};
+    scene::SceneSource src = open_scene(o.scene, o.eye == "in-shadow" ? scene::Eye::InShadow : scene::Eye::Scene);
     const scene::Scene s = src.at(o.time);
     measure::TruthOptions to;
     to.width = size.job.width;

@@ -8,7 +8,7 @@
 //   own_view      an AOV of its own instead of the camera pass (the light's depth)
 //   camera pass   built by plan(); the technique keeps objects out of it (keeps_out_of_camera) and
 //                 adds its bindings and each draw's shader features (shade)
-//   after_camera  passes after it: planar shadows through the stencil buffer
+//   after_camera  passes after it: planar shadows and shadow volumes through the stencil buffer
 //
 // Adding a technique: a file here with a Module subclass, its entry in techniques.cpp, its value in
 // render::Technique and the option table's choices (render/options.cpp).

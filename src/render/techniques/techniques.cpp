@@ -7,6 +7,7 @@ namespace penumbra::render {
 
 const Module& shadow_map_module();  // shadow_map.cpp
 const Module& planar_module();      // planar.cpp
+const Module& volumes_module();     // volumes.cpp
 
 namespace {
 
@@ -23,6 +24,7 @@ const Module& technique_module(Technique t) {
     switch (t) {
         case Technique::ShadowMap: return shadow_map_module();
         case Technique::Planar: return planar_module();
+        case Technique::Volumes: return volumes_module();
         case Technique::None: return none;
     }
     return none;
