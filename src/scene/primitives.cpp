@@ -30,6 +30,7 @@ Mesh make_quad(float size, float uv_repeat) {
         m.uvs.emplace_back((xs[i] > 0.0f ? 1.0f : 0.0f) * uv_repeat, (zs[i] > 0.0f ? 1.0f : 0.0f) * uv_repeat);
     }
     m.indices = {0, 1, 2, 0, 2, 3};
+    seal(m);
     return m;
 }
 
