@@ -1,4 +1,4 @@
-// penumbra-desktop: the course exercises W09P1, W09P2a, W09P2b and W09P2c in a desktop window
+// penumbra-desktop: the course exercises W09P1, W09P2a, W09P2b, W09P2c and volumes in a desktop window
 // (GLFW, GLES 2 through EGL), with keys for the same controls the web pages have.
 //
 //   penumbra-desktop [--exercise NAME] [--size WxH] [--frames N] [--screenshot FILE.png]
@@ -54,8 +54,10 @@ void print_help() {
         if (o.info.part == render::OptionPart::Technique && o.info.name != "technique")
             line(std::string(o.info.name), o.info.type == render::OptionType::Choice ? render::accepted_values(o.info) : "V",
                  o.info.help);
+    const render::OptionInfo& eye = render::option_info("eye");  // a job option the exercises take
+    line(std::string(eye.name), render::accepted_values(eye), eye.help);
     std::printf(
-        "penumbra-desktop: the W09 course exercises in a window (GLFW, GLES 2 through EGL)\n\n"
+        "penumbra-desktop: the course exercises (W09, shadow volumes) in a window (GLFW, GLES 2 through EGL)\n\n"
         "  --exercise E        %s (default w09p1)\n"
         "  --size WxH          window size (default 512x512)\n"
         "  --frames N          stop after N frames\n"

@@ -1,4 +1,4 @@
-// The course exercises in the browser: one WebGL 1 module for the four pages (web/*.html), which
+// The course exercises in the browser: one WebGL 1 module for the exercise pages (web/*.html), which
 // pass --exercise. The page's JavaScript (web/penumbra-page.js) drives it through the exported
 // C functions below: options from the URL and the controls, the state for the readouts, and a
 // small test hook (fixed time, synchronous frames, pixel readback, glGetError).

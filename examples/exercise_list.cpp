@@ -88,6 +88,26 @@ std::vector<ExerciseInfo> make_list() {
           {"map-size", "Shadow map", K::Select},
           {"aov", "View", K::Select, {"color", "visibility"}},
           {"map-view", "View", K::Checkbox, {"on", "off"}}}},
+        {Exercise::Volumes, "volumes", "Shadow volumes: counting shadows in the stencil buffer",
+         "Each silhouette edge of the teapot, seen from the light, is extruded away from the light into a shadow "
+         "volume. The stencil buffer counts, per pixel, the volume faces between the eye and the surface: a count above "
+         "zero means the surface is inside a volume, in shadow. Depth-pass counts the faces in front of the surface "
+         "(+1 entering, -1 leaving); it fails when the eye is inside a shadow volume: the count starts one too low, so "
+         "shadows vanish and lit ground turns dark. Depth-fail counts the faces behind the surface instead, with the "
+         "volumes closed by caps, and holds wherever the eye is. Auto takes depth-pass unless the eye may be inside "
+         "the volume. What to look for: move the eye into the teapot's shadow, then compare depth-pass with depth-fail "
+         "(the stencil count view shows the counts).",
+         "Shadow volumes counted in the stencil buffer: depth-pass against depth-fail with the eye inside a shadow, "
+         "the volumes drawn, and the stencil count in false colour.",
+         "The teapot on the table, shadowed by shadow volumes counted in the stencil buffer",
+         render::Technique::Volumes,
+         {light, jump,
+          {"volume-method", "Shadow volumes", K::Select, {}, {}, "depth-pass fails when the eye is inside a volume"},
+          {"show-volumes", "Shadow volumes", K::Checkbox, {"on", "off"}},
+          {"eye", "Shadow volumes", K::Checkbox, {"in-shadow", "scene"}, "Move the eye into a shadow",
+           "the eye inside the teapot's shadow, looking across it"},
+          {"aov", "View", K::Select, {"color", "visibility", "stencil-count"}, {},
+           "stencil count: 1 blue, 2 green, 3 yellow, 4 orange, 5 magenta, 6 white; below zero red"}}},
     };
 }
 
@@ -134,8 +154,11 @@ const std::vector<KeyBinding>& key_bindings() {
         {'F', "filter", "W09P2c: 4x4 PCF on/off"},
         {'R', "precision", "W09P2c: precision highp / emulated mediump (fp16 along the depth path, as on a phone)"},
         {'M', "map-size", "shadow map size (W09P2b: FBO size), Shift+M backwards"},
-        {'A', "aov", "W09P2c: view colour / visibility"},
+        {'A', "aov", "W09P2c: view colour / visibility (volumes: / stencil count)"},
         {'S', "map-view", "W09P2c: shadow map view on/off"},
+        {'Z', "volume-method", "volumes: method auto / depth-pass (zpass) / depth-fail (zfail)"},
+        {'G', "show-volumes", "volumes: show the volumes on/off"},
+        {'I', "eye", "volumes: the eye inside the teapot's shadow / the scene's camera"},
     };
     return keys;
 }

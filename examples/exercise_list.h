@@ -1,7 +1,8 @@
 // The course exercises, in one place: each exercise's name, title, text, technique and the
 // controls its page, its URL and the desktop app offer; the options only the exercises have (the
 // light's and the teapot's motion, the light's projection, what the off-screen buffer shows, the
-// shadow map's view), declared with the option table's types (render/options.h). No GL here: the
+// shadow map's view), declared with the option table's types (render/options.h). A control may
+// also name a job option the exercises take (time, eye: CourseApp::set_option). No GL here: the
 // pages are generated from this list at build time (web/CMakeLists.txt, catalog_main.cpp), and
 // course_desktop.cpp and exercises.cpp read it at run time.
 #pragma once
@@ -14,7 +15,7 @@
 
 namespace penumbra::examples {
 
-enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c };
+enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c, Volumes };
 
 // What the controls set besides render::Settings.
 struct Toggles {
@@ -36,7 +37,7 @@ enum class ControlKind {
 };
 
 struct Control {
-    std::string_view option;  // a render option or a toggle
+    std::string_view option;  // a render option (a technique option, or the job's eye) or a toggle
     std::string_view group;   // the fieldset it sits in
     ControlKind kind = ControlKind::Select;
     std::vector<std::string_view> values = {};  // Select: the choices offered (empty: all); Checkbox: on, off
@@ -58,7 +59,7 @@ struct ExerciseInfo {
 const std::vector<ExerciseInfo>& exercise_list();
 const ExerciseInfo& exercise_info(Exercise e);
 bool parse_exercise(std::string_view name, Exercise& out);
-std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c"
+std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c, volumes"
 
 // A desktop key bound to an option: pressing it steps the option to its next value (Shift: the
 // previous one) among the values `exercise`'s control offers, or all of them.

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "platform/platform.h"
+#include "scene/eye.h"
 #include "scene/primitives.h"
 #include "shadow/encoding.h"
 
@@ -18,11 +19,14 @@ constexpr float kTableSize = 4.0f;         // the course scene's table top (scen
 constexpr std::size_t kTimingWindow = 60;  // frames in the ms/frame median
 constexpr const char* kFboTexture = "w09p2b";
 
+// The job options the exercises take: time (both clocks, paused) and the eye.
+bool exercise_job_option(std::string_view name) { return name == "time" || name == "eye"; }
+
 // Settings the pages and the desktop never take: the exercise picks the scene and the technique,
 // the canvas or the window its size, and nothing is written to a file.
 bool set_by_the_exercise(std::string_view name) {
     const auto* o = render::find_option(render::option_table(), name);
-    return name == "technique" || (o && o->info.part == render::OptionPart::Job && name != "time");
+    return name == "technique" || (o && o->info.part == render::OptionPart::Job && !exercise_job_option(name));
 }
 
 std::string without_dashes(std::string err) { return err.rfind("--", 0) == 0 ? err.substr(2) : err; }
@@ -43,6 +47,7 @@ std::string setting_value(const render::Settings& s, std::string_view name) {
 }  // namespace
 
 CourseApp::CourseApp(Exercise e) : exercise_(e), course_(scene::make_course_scene()) {
+    scene_camera_ = course_.scene.camera;
     // W09P2b's ground: the table quad again with uvs 0..1, so the FBO's picture lies on the table
     // once, and a white material whose texture (a 1x1 placeholder) the FBO's texture replaces.
     scene::Scene& s = course_.scene;
@@ -79,6 +84,12 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
         paused_ = true;
         return {};
     }
+    if (name == "eye") {
+        render::Options t;
+        if (std::string err = render::parse_option(t, name, value); !err.empty()) return without_dashes(err);
+        eye_in_shadow_ = t.job.eye_in_shadow;
+        return {};
+    }
     if (set_by_the_exercise(name))
         return std::string(name) + ": set by the exercise (or the canvas, the window), not an option here";
     render::Settings t = settings_;
@@ -94,10 +105,7 @@ std::vector<std::pair<std::string, std::string>> CourseApp::options() const {
     for (const Control& c : exercise_info(exercise_).controls)
         if (std::find(shown.begin(), shown.end(), c.option) == shown.end()) shown.emplace_back(c.option);
     std::vector<std::pair<std::string, std::string>> out;
-    for (const auto& n : shown) {
-        if (const auto* t = render::find_option(toggle_table(), n)) out.emplace_back(n, t->print(toggles_));
-        else out.emplace_back(n, setting_value(settings_, n));
-    }
+    for (const auto& n : shown) out.emplace_back(n, value_of(n));
     // Any other setting that differs from its default keeps its value across a reload.
     const auto defaults = render::to_pairs(render::Settings{});
     const auto pairs = render::to_pairs(settings_);
@@ -106,8 +114,19 @@ std::vector<std::pair<std::string, std::string>> CourseApp::options() const {
         if (set_by_the_exercise(k) || std::find(shown.begin(), shown.end(), k) != shown.end()) continue;
         if (v != defaults[i].second) out.emplace_back(k, v);
     }
+    if (eye_in_shadow_ && std::find(shown.begin(), shown.end(), "eye") == shown.end()) out.emplace_back("eye", value_of("eye"));
     if (paused_ && light_time_ == jump_time_) out.emplace_back("time", format_number(light_time_));
     return out;
+}
+
+std::string CourseApp::value_of(std::string_view name) const {
+    if (const auto* t = render::find_option(toggle_table(), name)) return t->print(toggles_);
+    if (name == "eye") {
+        render::Options o;
+        o.job.eye_in_shadow = eye_in_shadow_;
+        return render::find_option(render::option_table(), name)->print(o);
+    }
+    return setting_value(settings_, name);
 }
 
 std::string CourseApp::query() const {
@@ -175,6 +194,9 @@ void CourseApp::draw(int width, int height) {
     if (!renderer_) throw std::runtime_error("no GL context");
     const auto start = std::chrono::steady_clock::now();
     scene::animate_course(course_, light_time_, jump_time_);
+    // The eye: the scene's camera, or (where the light now is) inside the teapot's shadow.
+    course_.scene.camera = scene_camera_;
+    if (eye_in_shadow_) scene::place_eye_in_shadow(course_.scene);
     const render::Output window = render::Output::to_window(width, height);
     render::Settings s = settings_;
     s.technique = exercise_info(exercise_).technique;
@@ -208,6 +230,7 @@ void CourseApp::draw(int width, int height) {
             break;
         }
         case Exercise::W09P2c: {
+            if (s.aov == render::Aov::StencilCount) s.aov = render::Aov::Color;  // no volumes here
             render(s, in);
             if (!toggles_.map_view) break;
             // The shadow map scaled for viewing, a quarter of the smaller side, in the top right corner.
@@ -219,6 +242,10 @@ void CourseApp::draw(int width, int height) {
             render(s, in);
             break;
         }
+        case Exercise::Volumes:  // colour, visibility or the stencil count; the volumes drawn or not
+            if (s.aov == render::Aov::LightDepth) s.aov = render::Aov::Color;  // no shadow map here
+            render(s, in);
+            break;
     }
     // Wait for the frame before the clock stops. glFinish would do on the desktop, but WebGL's
     // finish() returns at once in Chromium (it only flushes); reading one pixel back waits for the
@@ -287,9 +314,7 @@ std::string CourseApp::on_key(int key, bool shift) {
         if (k.key != key) continue;
         // The next value among those offered (Shift: the previous), skipping what the context refuses.
         const std::vector<std::string> values = key_values(k.option);
-        std::string current;
-        if (const auto* t = render::find_option(toggle_table(), k.option)) current = t->print(toggles_);
-        else current = setting_value(settings_, k.option);
+        const std::string current = value_of(k.option);
         const int n = static_cast<int>(values.size());
         int i = static_cast<int>(std::find(values.begin(), values.end(), current) - values.begin());
         if (i == n) {  // not among them (a map size off the list): step to the nearest ones

@@ -1,5 +1,5 @@
-// The course's four exercises of worksheet W09 (02561) over the library, shared by the browser
-// pages (course_web.cpp) and the desktop app (course_desktop.cpp):
+// The course's exercises over the library: the four of worksheet W09 (02561) and shadow volumes,
+// shared by the browser pages (course_web.cpp) and the desktop app (course_desktop.cpp):
 //   W09P1   jumping teapot on a marble table top, planar projected shadows (stencil), buttons to
 //           switch the light's circulation and the teapot's jump on and off;
 //   W09P2a  the scene from the light: its own view and projection fitted tightly around the
@@ -7,7 +7,10 @@
 //   W09P2b  the scene rendered into a framebuffer object, and that texture on the ground quad;
 //   W09P2c  shadow mapping: depth encoding, 4x4 PCF, bias (fixed, the encoding's default or auto),
 //           precision (highp or emulated mediump), map size, and the shadow map shown scaled for
-//           viewing in a corner.
+//           viewing in a corner;
+//   volumes shadow volumes counted in the stencil buffer: depth-pass, depth-fail or auto, the
+//           volumes drawn over the image, the stencil count in false colour, and the eye moved
+//           into the teapot's shadow (where depth-pass fails).
 // Each frame is one or two plans whose inputs carry what an exercise changes (a view from the
 // light, a texture on the ground, a region of the window); the scene itself is never edited.
 // No GL here: the renderer and the gl layer do the drawing; the platform owns the context.
@@ -40,7 +43,8 @@ public:
     void set_exercise(Exercise e) { exercise_ = e; }
 
     // One option by its URL / command-line name: a technique setting (render's option table), a
-    // toggle (exercise_list.h), or time=T (both clocks to T, paused). Returns "" or one line naming
+    // toggle (exercise_list.h), time=T (both clocks to T, paused) or eye=scene|in-shadow (the
+    // camera moved into the teapot's shadow each frame, after the light has moved). Returns "" or one line naming
     // the problem; nothing changes on a problem.
     std::string set_option(std::string_view name, std::string_view value);
     // The options this exercise shows, plus any other setting that differs from its default, as
@@ -49,6 +53,9 @@ public:
     std::string query() const;  // options() as "name=value&name=value"
     const render::Settings& settings() const { return settings_; }
     const Toggles& toggles() const { return toggles_; }
+    bool eye_in_shadow() const { return eye_in_shadow_; }
+    // One option's value as options() writes it ("" for a name it does not know).
+    std::string value_of(std::string_view name) const;
     // The bias in use (with bias=auto its constant part, the slope term is added per fragment),
     // and the chosen encoding's default (the sheet's 0.005 / 0.0015).
     float bias() const;
@@ -102,6 +109,8 @@ private:
     render::Settings settings_;
     Toggles toggles_;
     scene::CourseScene course_;
+    scene::Camera scene_camera_;  // the course scene's own camera (eye=scene)
+    bool eye_in_shadow_ = false;  // eye=in-shadow: scene::place_eye_in_shadow each frame
     int fbo_mesh_ = -1;      // the table quad with uvs 0..1 (the FBO image once over the table)
     int fbo_material_ = -1;  // white, textured with the placeholder image the FBO replaces
     int fbo_image_ = -1;

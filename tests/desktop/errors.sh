@@ -20,6 +20,8 @@ expect "unknown value 'w10'" --exercise w10
 expect "unknown value 'maybe' (on, off)" --light maybe
 expect "unknown value 'r16'" --encoding r16
 expect "unknown value 'lowp'" --precision lowp
+expect "unknown value 'inside' (scene, in-shadow)" --exercise volumes --eye inside
+expect "unknown value 'zmaybe' (auto, zpass, zfail)" --volume-method zmaybe
 expect "or 'auto', 'sheet'" --bias often
 expect "must end in .png" --frames 3 --screenshot "$out/x.jpg"
 expect "needs --frames" --screenshot "$out/x.png"

@@ -15,13 +15,15 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
     EXPECT_EQ(CourseApp(Exercise::W09P2c).query(),
               "light=on&jump=on&encoding=rgba&filter=hard&bias=auto&map-faces=auto&precision=highp&map-size=1024&aov=color&"
               "map-view=on");
+    EXPECT_EQ(CourseApp(Exercise::Volumes).query(),
+              "light=on&jump=on&volume-method=auto&show-volumes=off&eye=scene&aov=color");
 }
 
 TEST(ExerciseOptions, EveryChangeReadsBack) {
     const std::vector<std::pair<std::string, std::string>> changes = {
         {"light", "off"}, {"jump", "off"},   {"projection", "ortho"}, {"fbo-view", "camera"}, {"map-view", "off"},
         {"encoding", "r8"}, {"filter", "pcf4x4"}, {"bias", "0.003"},   {"map-size", "2048"},     {"aov", "visibility"},
-        {"precision", "mediump"}};
+        {"precision", "mediump"}, {"volume-method", "zfail"}, {"show-volumes", "on"}, {"eye", "in-shadow"}};
     for (const auto& x : exercise_list()) {
         const Exercise e = x.id;
         CourseApp a(e);
@@ -30,6 +32,7 @@ TEST(ExerciseOptions, EveryChangeReadsBack) {
         for (const auto& [k, v] : a.options()) ASSERT_EQ(b.set_option(k, v), "") << k << "=" << v;
         EXPECT_EQ(a.query(), b.query());
         EXPECT_EQ(a.settings(), b.settings());
+        EXPECT_TRUE(b.eye_in_shadow()) << x.name << ": " << a.query();
     }
     CourseApp c(Exercise::W09P2c);
     ASSERT_EQ(c.set_option("bias", "0.003"), "");
@@ -96,6 +99,48 @@ TEST(ExerciseOptions, BadValuesChangeNothing) {
     EXPECT_NE(a.set_option("nonsense", "1"), "");
     EXPECT_EQ(a.query(), before);
     EXPECT_EQ(a.set_option("encoding", "r16").rfind("encoding: ", 0), 0u) << "no leading -- in a URL's message";
+}
+
+// The eye is a job option the exercises take (like time): shown on the volumes page, kept in the
+// URL of the others once moved into the shadow, refused when misspelt.
+TEST(ExerciseOptions, TheEyeMovesIntoTheShadowAndIsKept) {
+    CourseApp a(Exercise::Volumes);
+    EXPECT_FALSE(a.eye_in_shadow());
+    ASSERT_EQ(a.set_option("eye", "in-shadow"), "");
+    EXPECT_TRUE(a.eye_in_shadow());
+    EXPECT_NE(a.query().find("eye=in-shadow"), std::string::npos) << a.query();
+    ASSERT_EQ(a.set_option("eye", "scene"), "");
+    EXPECT_NE(a.query().find("eye=scene"), std::string::npos) << a.query();
+    EXPECT_EQ(a.set_option("eye", "inside").rfind("eye: ", 0), 0u) << a.set_option("eye", "inside");
+    EXPECT_FALSE(a.eye_in_shadow());
+    CourseApp b(Exercise::W09P1);
+    EXPECT_EQ(b.query().find("eye"), std::string::npos) << "the default is not written: " << b.query();
+    ASSERT_EQ(b.set_option("eye", "in-shadow"), "");
+    EXPECT_NE(b.query().find("eye=in-shadow"), std::string::npos) << b.query();
+    EXPECT_NE(b.set_option("out", "x.png"), "");  // the other job options stay the exercise's
+    EXPECT_NE(b.set_option("frames", "3"), "");
+}
+
+TEST(ExerciseOptions, VolumeKeys) {
+    CourseApp a(Exercise::W09P1);
+    EXPECT_EQ(a.on_key('5', false).rfind("Shadow volumes", 0), 0u);
+    EXPECT_EQ(a.exercise(), Exercise::Volumes);
+    EXPECT_EQ(a.on_key('Z', false), "volume-method = zpass");
+    EXPECT_EQ(a.on_key('Z', false), "volume-method = zfail");
+    EXPECT_EQ(a.on_key('Z', false), "volume-method = auto");
+    EXPECT_EQ(a.on_key('Z', true), "volume-method = zfail");
+    EXPECT_EQ(a.settings().volume_method, penumbra::render::VolumeMethod::ZFail);
+    EXPECT_EQ(a.on_key('G', false), "show-volumes = on");
+    EXPECT_TRUE(a.settings().show_volumes);
+    EXPECT_EQ(a.on_key('I', false), "eye = in-shadow");
+    EXPECT_TRUE(a.eye_in_shadow());
+    EXPECT_EQ(a.on_key('I', false), "eye = scene");
+    // The volumes page's view offers the stencil count too.
+    EXPECT_EQ(a.on_key('A', false), "aov = visibility");
+    EXPECT_EQ(a.on_key('A', false), "aov = stencil-count");
+    EXPECT_EQ(a.on_key('A', false), "aov = color");
+    const std::string help = CourseApp::key_help();
+    for (const char* k : {"  5  ", "  Z  ", "  G  ", "  I  "}) EXPECT_NE(help.find(k), std::string::npos) << k << help;
 }
 
 TEST(ExerciseOptions, TimeFreezesAndIsKept) {
@@ -168,19 +213,24 @@ TEST(ExerciseOptions, Keys) {
 // names an option of a table, and every value a control offers is one that option accepts.
 TEST(ExerciseList, EveryControlNamesAnOptionAndOffersValidValues) {
     using namespace penumbra;
-    ASSERT_EQ(exercise_list().size(), 4u);
+    ASSERT_EQ(exercise_list().size(), 5u);
     for (const auto& x : exercise_list()) {
         Exercise parsed{};
         ASSERT_TRUE(examples::parse_exercise(x.name, parsed));
         EXPECT_EQ(parsed, x.id);
         EXPECT_FALSE(x.title.empty());
-        EXPECT_EQ(x.title.substr(0, 5), "W09P" + std::string(1, x.name[4])) << x.title;
+        if (x.name.rfind("w09p", 0) == 0) {
+            EXPECT_EQ(x.title.substr(0, 5), "W09P" + std::string(1, x.name[4])) << x.title;
+        }
         for (const auto& c : x.controls) {
             const render::OptionInfo* info = nullptr;
             if (const auto* t = render::find_option(examples::toggle_table(), c.option)) info = &t->info;
             else if (const auto* r = render::find_option(render::option_table(), c.option)) info = &r->info;
             ASSERT_NE(info, nullptr) << x.name << ": " << c.option;
-            EXPECT_EQ(info->part, render::OptionPart::Technique) << c.option << ": a page sets no job option";
+            // A page sets no job option but the eye (the exercises place it: CourseApp::set_option).
+            if (c.option != "eye") {
+                EXPECT_EQ(info->part, render::OptionPart::Technique) << c.option << ": a page sets no job option";
+            }
             for (std::string_view v : c.values) EXPECT_EQ(render::check_value(*info, v), "") << c.option << "=" << v;
             CourseApp a(x.id);
             EXPECT_NE(a.query().find(std::string(c.option) + "="), std::string::npos) << x.name << ": " << c.option;
