@@ -90,10 +90,17 @@ public:
         zpass.state.stencil = gl::stencil_count(false);
         Pass zfail = volume_pass(c, "volumes-zfail");
         zfail.state.stencil = gl::stencil_count(true);
+        // Near caps, pushed back by a depth offset (below). Depth-pass needs them for open meshes
+        // only: the camera pass culls back faces, so the eye sees past the inside of a bowl or a
+        // tube, through triangles whose caps then lie in front of what it sees.
+        Pass zpass_caps = volume_pass(c, "volumes-zpass-caps");
+        zpass_caps.state.stencil = gl::stencil_count(false);
         Pass caps = volume_pass(c, "volumes-zfail-caps");
         caps.state.stencil = gl::stencil_count(true);
-        caps.state.offset_factor = kCapOffsetFactor;
-        caps.state.offset_units = kCapOffsetUnits;
+        for (Pass* p : {&zpass_caps, &caps}) {
+            p->state.offset_factor = kCapOffsetFactor;
+            p->state.offset_units = kCapOffsetUnits;
+        }
         std::vector<glm::vec4> shown_front;  // every face, for --show-volumes
         const int w = c.camera_target.width, h = c.camera_target.height;
         double fill = 0.0;
@@ -106,7 +113,8 @@ public:
             const bool fail = s.volume_method == VolumeMethod::ZFail ||
                               (s.volume_method == VolumeMethod::Auto &&
                                shadow::may_shadow_near_plane(near, light, bounds.casters[k]));
-            shadow::ShadowVolume v = shadow::extrude_volume(topo, o.world, light, mesh.closed, fail);
+            shadow::ShadowVolume v = shadow::extrude_volume(topo, o.world, light, mesh.closed, fail || !mesh.closed);
+            if (!fail) v.far_cap.clear();  // at infinity: never in front of what the eye sees
             if (v.sides.empty() && v.near_cap.empty()) continue;
             ++(fail ? stats.zfail_casters : stats.zpass_casters);
             stats.silhouette_edges += v.silhouette_edges;
@@ -120,7 +128,7 @@ public:
                 shown_front.insert(shown_front.end(), v.near_cap.begin(), v.near_cap.end());
             }
             (fail ? zfail : zpass).draws.push_back(volume_draw(o.name, std::move(body)));
-            if (fail && !v.near_cap.empty()) caps.draws.push_back(volume_draw(o.name, std::move(v.near_cap)));
+            if (!v.near_cap.empty()) (fail ? caps : zpass_caps).draws.push_back(volume_draw(o.name, std::move(v.near_cap)));
         }
         stats.fill = fill;
         stats.fill_per_pixel = w > 0 && h > 0 ? fill / (static_cast<double>(w) * h) : 0.0;
@@ -133,6 +141,10 @@ public:
         if (!zpass.draws.empty()) {
             describe(zpass, "sides, front faces +1 / back faces -1 where the depth test passes; colour and depth off");
             c.add_pass(std::move(zpass));
+        }
+        if (!zpass_caps.draws.empty()) {
+            describe(zpass_caps, "near caps of open meshes, depth-pass counting, pushed back by a depth offset");
+            c.add_pass(std::move(zpass_caps));
         }
         if (!zfail.draws.empty()) {
             describe(zfail, "sides and far caps at infinity, back faces +1 / front faces -1 where the depth test fails");
