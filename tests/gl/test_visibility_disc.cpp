@@ -33,7 +33,7 @@ Tally score(const scene::Scene& s, const glm::mat4& view_proj, const std::vector
             const float nx = (static_cast<float>(x) + 0.5f) / static_cast<float>(w) * 2.0f - 1.0f;
             const float ny = 1.0f - (static_cast<float>(y) + 0.5f) / static_cast<float>(h) * 2.0f;
             glm::vec4 a = inv * glm::vec4(nx, ny, -1.0f, 1.0f);
-            glm::vec4 b = inv * glm::vec4(nx, ny, 1.0f, 1.0f);
+            glm::vec4 b = inv * glm::vec4(nx, ny, 0.0f, 1.0f);  // not the far plane: it may be at infinity
             const glm::vec3 o = glm::vec3(a) / a.w;
             const glm::vec3 d = glm::normalize(glm::vec3(b) / b.w - o);
             // Hidden behind the sphere? Then it is not a plane pixel.
@@ -59,6 +59,7 @@ struct DiscCase {
     render::Technique technique;
     shadow::Encoding encoding;
     shadow::Filter filter;
+    render::VolumeMethod method = render::VolumeMethod::Auto;  // technique volumes
 };
 
 void PrintTo(const DiscCase& c, std::ostream* os) {
@@ -76,6 +77,7 @@ TEST_P(VisibilityDisc, MatchesTheAnalyticDisc) {
     set.technique = c.technique;
     set.encoding = c.encoding;
     set.filter = c.filter;
+    set.volume_method = c.method;
     set.aov = render::Aov::Visibility;
     const render::FrameInputs in = render::offscreen(kSize, kSize);
     ASSERT_EQ(renderer->check(s, set, in), "");
@@ -91,13 +93,18 @@ TEST_P(VisibilityDisc, MatchesTheAnalyticDisc) {
 using E = shadow::Encoding;
 using F = shadow::Filter;
 using T = render::Technique;
+using M = render::VolumeMethod;
 INSTANTIATE_TEST_SUITE_P(
     All, VisibilityDisc,
     ::testing::Values(DiscCase{T::ShadowMap, E::R8, F::Hard}, DiscCase{T::ShadowMap, E::R8, F::PCF4x4},
                       DiscCase{T::ShadowMap, E::RGBA, F::Hard}, DiscCase{T::ShadowMap, E::RGBA, F::PCF2x2},
                       DiscCase{T::ShadowMap, E::RGBA, F::PCF4x4}, DiscCase{T::ShadowMap, E::DepthTex, F::Hard},
-                      DiscCase{T::ShadowMap, E::DepthTex, F::PCF4x4}, DiscCase{T::Planar, E::RGBA, F::Hard}),
+                      DiscCase{T::ShadowMap, E::DepthTex, F::PCF4x4}, DiscCase{T::Planar, E::RGBA, F::Hard},
+                      DiscCase{T::Volumes, E::RGBA, F::Hard, M::Auto}, DiscCase{T::Volumes, E::RGBA, F::Hard, M::ZPass},
+                      DiscCase{T::Volumes, E::RGBA, F::Hard, M::ZFail}),
     [](const ::testing::TestParamInfo<DiscCase>& i) {
+        if (i.param.technique == T::Volumes)
+            return std::string("volumes_") + std::string(render::to_string(i.param.method));
         return std::string(render::to_string(i.param.technique)) + "_" +
                std::string(shadow::to_string(i.param.encoding)) + "_" + std::string(shadow::to_string(i.param.filter));
     });
