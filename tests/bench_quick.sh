@@ -23,15 +23,41 @@ grep -q '^\[ *1/' "$work/bench.err" && ok || bad "no progress lines on stderr"
 python3 - "$work/bench" <<'PY' && ok || bad "bench outputs are not well-formed"
 import csv, struct, sys, xml.etree.ElementTree as ET, zlib
 d = sys.argv[1]
-rows = list(csv.DictReader(open(d + "/results.csv")))
+every = list(csv.DictReader(open(d + "/results.csv")))
+assert {r["section"] for r in every} == {"sweep", "silhouette"}, {r["section"] for r in every}
+rows = [r for r in every if r["section"] == "sweep"]
+sil = [r for r in every if r["section"] == "silhouette"]
 # 2 scenes x (3 encodings x 3 filters x 2 maps + rgba hard and pcf4x4 at map 1024 as before issue 9
-# + none + planar)
-assert len(rows) == 2 * (3 * 3 * 2 + 2 + 2), len(rows)
+# + volumes auto, zpass, zfail + none + planar)
+assert len(rows) == 2 * (3 * 3 * 2 + 2 + 3 + 2), len(rows)
+volumes = [r for r in rows if r["technique"].startswith("volumes ")]
+assert sorted({r["technique"] for r in volumes}) == ["volumes auto", "volumes zfail", "volumes zpass"], volumes
+for r in volumes:
+    assert "--technique volumes" in r["settings"] and "--volume-method " + r["technique"][8:] in r["settings"], r
+    assert r["map_size"] == "0" and r["shadow_map_bytes"] == "0" and r["texel_use_pct"] == "", r
+    assert int(r["silhouette_edges"]) > 0 and int(r["volume_triangles"]) > 0 and float(r["fill_per_pixel"]) > 0.0, r
+    casters = int(r["zpass_casters"]) + int(r["zfail_casters"])
+    assert casters > 0, r
+    if r["technique"] == "volumes zpass": assert r["zfail_casters"] == "0", r
+    if r["technique"] == "volumes zfail": assert r["zpass_casters"] == "0", r
+# the silhouette sweep: a sphere of 8 ... 128 segments, volumes (auto) and rgba hard 1024, each scored
+assert len(sil) == 5 * 2, len(sil)
+assert sorted({(r["technique"], r["map_size"]) for r in sil}) == [("rgba hard", "1024"), ("volumes auto", "0")], sil
+vs = sorted((r for r in sil if r["technique"] == "volumes auto"), key=lambda r: int(r["segments"]))
+assert [int(r["segments"]) for r in vs] == [8, 16, 32, 64, 128], vs
+edges = [int(r["silhouette_edges"]) for r in vs]
+assert all(a < b for a, b in zip(edges, edges[1:])) and edges[0] >= 8, edges
+for r in sil:
+    assert r["scene"] == "sphere-" + r["segments"] and int(r["valid_pixels"]) > 1000, r
+    assert 0.0 <= float(r["error_pct"]) <= 100.0 and float(r["ms_moving"]) >= 0.0, r
+    if r["technique"] == "volumes auto": assert float(r["fill_per_pixel"]) > 0.0, r
+    else: assert r["silhouette_edges"] == "" and int(r["shadow_map_bytes"]) >= 1024 ** 2, r
 before = [r for r in rows if r["technique"].endswith(" (before)")]
 assert sorted({r["technique"] for r in before}) == ["rgba hard (before)", "rgba pcf4x4 (before)"], before
 for r in before:
     assert r["map_size"] == "1024" and "--bias sheet" in r["settings"] and "--light-fit scene" in r["settings"], r
     assert "--map-faces both" in r["settings"] and "--pcf-kernel full" in r["settings"], r
+volumes_names = {r["technique"] for r in volumes}
 for r in rows:
     for k in ("false_shadow_pct", "false_lit_pct", "error_pct", "mae_pct", "truth_shadowed_pct"):
         v = float(r[k]); assert 0.0 <= v <= 100.0, (k, v)
@@ -40,23 +66,40 @@ for r in rows:
     for k in ("ms_moving", "ms_still", "ms_shadow_pass", "ms_camera_pass"):
         assert float(r[k]) >= 0.0
     assert r["settings"].startswith("--scene ") and "--technique " in r["settings"]
-    if r["technique"] not in ("none", "planar"):
+    if r["technique"] in volumes_names: pass
+    elif r["technique"] not in ("none", "planar"):
         assert int(r["shadow_map_bytes"]) >= int(r["map_size"]) ** 2, r
         assert int(r["redrawn_moving"]) == int(r["frames"]) and int(r["redrawn_still"]) == 0, r
         assert 0.0 < float(r["texel_use_pct"]) <= 100.0, r
+        assert r["silhouette_edges"] == "", r
     else:
-        assert r["texel_use_pct"] == "", r
+        assert r["texel_use_pct"] == "" and r["silhouette_edges"] == "", r
 md = open(d + "/results.md").read()
 assert md.startswith("# penumbra bench") and "| technique |" in md and "## The course scene, map 1024" in md
 assert "## Texel use" in md
+assert "## Shadow volumes against the shadow map (rgba hard, map 1024)" in md and "| course@0.60 | volumes auto |" in md
+assert "## Shadow volumes as the silhouette grows" in md and "| 128 | 16128 |" in md
 assert "## The defaults against the settings before issue 9" in md and "| rgba hard | 1024 |" in md
 svg = ET.parse(d + "/tradeoff.svg").getroot()
 assert svg.tag.endswith("svg") and len(svg.findall(".//{http://www.w3.org/2000/svg}polyline")) > 0
+texts = [t.text for t in svg.iter("{http://www.w3.org/2000/svg}text")]
+assert "shadow volumes" in texts and "volumes auto" in texts and "volumes zfail" in texts, texts
+titles = [t.text for t in svg.iter("{http://www.w3.org/2000/svg}title")]
+assert any(t.startswith("volumes zpass:") and "silhouette edges" in t for t in titles), titles
 png = open(d + "/tradeoff.png", "rb").read()
 assert png[:8] == b"\x89PNG\r\n\x1a\n"
 w, h = struct.unpack(">II", png[16:24]); assert w >= 400 and h >= 300, (w, h)
 print("outputs well-formed:", len(rows), "rows")
 PY
+
+# --from-csv: the same tables again from the rows, the silhouette sweep's included.
+if "$penumbra" bench --from-csv "$work/bench/results.csv" --out-dir "$work/again" >/dev/null 2>"$work/again.err" &&
+   grep -q "^## Shadow volumes as the silhouette grows" "$work/again/results.md" &&
+   grep -q "^## Shadow volumes against the shadow map" "$work/again/results.md" &&
+   cmp -s <(grep -A8 "^| segments" "$work/bench/results.md" | awk -F'|' '{print $2 $3 $(NF-3) $(NF-2) $(NF-1)}') \
+          <(grep -A8 "^| segments" "$work/again/results.md" | awk -F'|' '{print $2 $3 $(NF-3) $(NF-2) $(NF-1)}'); then ok
+else bad "bench --from-csv lost the volumes' tables: $(cat "$work/again.err")"; fi
+cmp -s "$work/bench/results.csv" "$work/again/results.csv" && ok || bad "bench --from-csv does not write the same CSV back"
 
 # export -> render and truth on the exported file -> score.
 if "$penumbra" export --scene teapot --time 0.6 --out "$work/course.gltf" >/dev/null; then ok; else bad "export failed"; fi

@@ -24,6 +24,8 @@
 #include "measure/ray_tracer.h"
 #include "render/options.h"
 #include "render/renderer.h"
+#include "scene/primitives.h"
+#include "scene/probe_scenes.h"
 #include "scene/scene_source.h"
 
 namespace fs = std::filesystem;
@@ -60,6 +62,7 @@ std::vector<std::uint8_t> red_channel(const std::vector<std::uint8_t>& rgba) {
 }
 
 std::string technique_label(const render::Settings& s) {
+    if (s.technique == render::Technique::Volumes) return kVolumesPrefix + std::string(render::to_string(s.volume_method));
     if (s.technique != render::Technique::ShadowMap) return std::string(render::to_string(s.technique));
     return std::string(shadow::to_string(s.encoding)) + " " + std::string(shadow::to_string(s.filter));
 }
@@ -107,7 +110,7 @@ Sweep configure(const BenchOptions& in) {
     w.width = w.base.job.width;
     w.height = w.base.job.height;
     // --set takes any technique option the sweep does not vary itself.
-    const std::vector<std::string> swept = {"encoding", "filter", "map-size", "aov", "technique"};
+    const std::vector<std::string> swept = {"encoding", "filter", "map-size", "aov", "technique", "volume-method"};
     for (const auto& kv : o.set) {
         const auto eq = kv.find('=');
         if (eq == std::string::npos) throw CommandError{"--set " + kv + ": expected NAME=VALUE", 2};
@@ -165,6 +168,14 @@ std::vector<Planned> before_rows(const Sweep& w) {
     return out;
 }
 
+void set_volume_stats(Row& row, const render::VolumeStats& v) {
+    row.silhouette_edges = v.silhouette_edges;
+    row.volume_triangles = v.triangles;
+    row.zpass_casters = v.zpass_casters;
+    row.zfail_casters = v.zfail_casters;
+    row.fill_per_pixel = v.fill_per_pixel;
+}
+
 struct Timing {
     double median_ms = 0.0;
     int redrawn = 0;
@@ -197,6 +208,123 @@ std::string load_average() {
     return f >> one ? one : std::string("?");
 }
 
+// The silhouette sweep's scene: a UV sphere of radius 1 with `segments` slices and segments / 2
+// stacks, its centre 2 above a 10 x 10 ground quad, under a point light up and to the side (its
+// shadow an ellipse on the ground), seen from above at about 35 degrees.
+scene::Scene sphere_scene(int segments) {
+    scene::Scene s = scene::make_sphere_over_plane();
+    s.meshes[1] = scene::make_sphere(1.0f, segments, segments / 2);
+    s.light = scene::Light{};
+    s.light.type = scene::LightType::Point;
+    s.light.position = glm::vec3(2.0f, 6.0f, 1.5f);
+    s.light.direction = glm::normalize(glm::vec3(0.0f, 2.0f, 0.0f) - s.light.position);
+    s.camera.view = glm::lookAt(glm::vec3(0.0f, 5.0f, 6.5f), glm::vec3(0.0f, 0.8f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    return s;
+}
+
+// Shadow volumes as the silhouette grows: the sphere at each of kSphereSegments, drawn with
+// volumes (auto) and with the shadow map (rgba hard, map 1024), scored against the hard truth of
+// each frame and timed in interleaved rounds like the sweep (the light turning for the moving frames).
+void silhouette_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) {
+    const BenchOptions& o = w.o;
+    std::vector<Planned> techniques;
+    {
+        render::Settings s = w.base.settings;
+        s.technique = render::Technique::Volumes;
+        s.volume_method = render::VolumeMethod::Auto;
+        techniques.push_back({s, technique_label(s)});
+        s = w.base.settings;
+        s.technique = render::Technique::ShadowMap;
+        s.encoding = shadow::Encoding::RGBA;
+        s.filter = shadow::Filter::Hard;
+        s.map_size = 1024;
+        techniques.push_back({s, technique_label(s)});
+    }
+    struct Case {
+        scene::Scene still, turning;
+        glm::vec3 centre{0.0f};
+        std::vector<Row> rows;
+        std::vector<std::vector<double>> moving, still_ms;
+    };
+    std::vector<Case> cases;
+    const auto t0 = Clock::now();
+    for (int segments : kSphereSegments) {
+        Case c;
+        c.still = sphere_scene(segments);
+        c.turning = c.still;
+        c.centre = scene::scene_bounds(c.still).center();
+        r.load(c.still);
+        measure::TruthOptions to;
+        to.width = w.width;
+        to.height = w.height;
+        to.view_proj = renderer_view_proj(c.still, w.width, w.height);
+        to.soft_samples = 0;  // the hard truth: the error column
+        const measure::TruthImage truth = measure::RayTracer(c.still).render(to);
+        const auto valid = truth.valid_mask();
+        for (const Planned& planned : techniques) {
+            render::Settings s = planned.settings;
+            Row row;
+            row.section = kSilhouetteSection;
+            row.segments = segments;
+            row.scene = "sphere-" + std::to_string(segments);
+            row.technique = planned.label;
+            const bool map = s.technique == render::Technique::ShadowMap;
+            row.encoding = map ? std::string(shadow::to_string(s.encoding)) : "-";
+            row.filter = map ? std::string(shadow::to_string(s.filter)) : "-";
+            row.map = map ? s.map_size : 0;
+            render::Options labelled = w.base;
+            labelled.job.scene = row.scene;  // made in code (sphere_scene), not a file
+            labelled.settings = s;
+            row.settings = render::to_args(labelled);
+            if (const std::string problem = r.check(c.still, s, in); !problem.empty())
+                throw CommandError{"bench: the silhouette sweep's " + row.scene + ": " + row.technique + ": " + problem, 1};
+            s.aov = render::Aov::Visibility;
+            const render::FramePlan& plan = r.render(c.still, s, in);
+            if (const auto* m = plan.resource("shadow-map")) row.bytes = m->desc.bytes();
+            if (plan.volumes) set_volume_stats(row, *plan.volumes);
+            row.score = measure::score(red_channel(r.read_image()), truth.lit, valid, nullptr);
+            std::fprintf(stderr, "silhouette %-10s %-12s error %6.2f %%%s\n", row.scene.c_str(), row.technique.c_str(),
+                         row.score.error_pct,
+                         row.silhouette_edges >= 0 ? (", " + std::to_string(row.silhouette_edges) + " silhouette edges, fill " +
+                                                      fixed(row.fill_per_pixel, 2) + " per pixel").c_str()
+                                                   : "");
+            c.rows.push_back(row);
+        }
+        c.moving.resize(techniques.size());
+        c.still_ms.resize(techniques.size());
+        cases.push_back(std::move(c));
+    }
+    gl::check_errors("the silhouette sweep's accuracy pass");
+    for (int round = 0; round < o.rounds; ++round)
+        for (Case& c : cases) {
+            r.load(c.still);
+            const auto moving_at = [&](int i) -> const scene::Scene& {
+                turn_light(c.turning.light, c.still.light, c.centre, i + 1);
+                return c.turning;
+            };
+            const auto still_at = [&](int) -> const scene::Scene& { return c.still; };
+            for (size_t t = 0; t < techniques.size(); ++t) {
+                render::Settings s = techniques[t].settings;
+                s.aov = render::Aov::Color;
+                c.moving[t].push_back(time_frames(r, s, in, 2, o.frames, moving_at).median_ms);
+                c.still_ms[t].push_back(time_frames(r, s, in, 1, o.frames, still_at).median_ms);
+            }
+            gl::check_errors("the silhouette sweep's timing pass");
+        }
+    for (Case& c : cases)
+        for (size_t t = 0; t < techniques.size(); ++t) {
+            Row& row = c.rows[t];
+            row.ms_moving = measure::median(c.moving[t]);
+            row.ms_still = measure::median(c.still_ms[t]);
+            row.ms_camera = row.ms_still;
+            row.ms_shadow = row.map ? std::max(0.0, row.ms_moving - row.ms_still) : 0.0;
+            row.frames = o.frames * o.rounds;
+            w.silhouette.push_back(row);
+        }
+    std::fprintf(stderr, "silhouette sweep: %zu spheres x %zu techniques in %s\n", cases.size(), techniques.size(),
+                 duration_str(seconds_since(t0)).c_str());
+}
+
 void run_sweep(Sweep& w) {
     const auto t0 = Clock::now();
     auto ctx = make_context();
@@ -216,6 +344,14 @@ void run_sweep(Sweep& w) {
                 techniques.push_back({s, technique_label(s)});
             }
     for (Planned& b : before_rows(w)) techniques.push_back(std::move(b));
+    // Shadow volumes, each way of counting: exact hard shadows at a cost that grows with the
+    // silhouettes and the shadows' area on screen rather than with a map.
+    for (auto m : render::kAllVolumeMethods) {
+        render::Settings s = w.base.settings;
+        s.technique = render::Technique::Volumes;
+        s.volume_method = m;
+        techniques.push_back({s, technique_label(s)});
+    }
     if (o.references)
         for (auto t : {render::Technique::None, render::Technique::Planar}) {
             render::Settings s = w.base.settings;
@@ -317,7 +453,11 @@ void run_sweep(Sweep& w) {
             row.score = measure::score(vis, truth.lit, valid, o.soft_samples > 0 ? &truth.soft : nullptr);
             row.bytes = map ? map->desc.bytes() : 0;
             if (map && plan.texel_use) row.texel_use_pct = 100.0 * static_cast<double>(*plan.texel_use);
-            if (pictures && (s.map_size == 1024 || s.technique != render::Technique::ShadowMap)) {
+            if (plan.volumes) set_volume_stats(row, *plan.volumes);
+            const bool pictured = s.technique == render::Technique::ShadowMap ? s.map_size == 1024
+                                  : s.technique == render::Technique::Volumes ? s.volume_method == render::VolumeMethod::Auto
+                                                                               : true;
+            if (pictures && pictured) {
                 std::string name = spec.label + "-" + row.technique + (row.map ? "-" + std::to_string(row.map) : "") + "-errors.png";
                 std::replace(name.begin(), name.end(), ' ', '-');
                 name.erase(std::remove_if(name.begin(), name.end(), [](char ch) { return ch == '(' || ch == ')'; }), name.end());
@@ -385,6 +525,7 @@ void run_sweep(Sweep& w) {
                                   std::to_string(row.redrawn_still) + " still frames");
             w.rows.push_back(row);
         }
+    silhouette_sweep(w, r, in);
     w.load_after = load_average();
 }
 

@@ -67,7 +67,18 @@ struct Row {
     int redrawn_moving = 0, redrawn_still = 0, frames = 0;
     std::size_t bytes = 0;
     double texel_use_pct = -1.0;  // the share of the map covered by the receivers in view; < 0: no map
+    // Shadow volumes (render::VolumeStats of the scored frame); silhouette_edges < 0: no volumes.
+    int silhouette_edges = -1, volume_triangles = 0, zpass_casters = 0, zfail_casters = 0;
+    double fill_per_pixel = 0.0;  // stencil fragments rasterised per pixel of the image
+    // Which table the row belongs to: "" the sweep's (every technique on the scene frames), or
+    // kSilhouetteSection (the sphere of a growing number of segments, bench.cpp silhouette_sweep).
+    std::string section;
+    int segments = 0;  // the silhouette sweep's sphere
 };
+
+inline constexpr const char* kSilhouetteSection = "silhouette";
+// The silhouette sweep's spheres: slices around, half as many stacks.
+inline constexpr int kSphereSegments[] = {8, 16, 32, 64, 128};
 
 // ---- the sweep -------------------------------------------------------------------------------
 
@@ -80,6 +91,7 @@ struct Sweep {
     render::Options base;  // the job's size and the --set options shared by every run
     std::string gl_renderer, context;
     std::vector<Row> rows;
+    std::vector<Row> silhouette;  // the silhouette sweep's rows (section kSilhouetteSection)
     std::vector<std::string> notes;
     std::string command_line;
     std::string from_csv;  // rows read back from this file instead of measured
@@ -94,6 +106,10 @@ struct Key {
 };
 
 std::string key_label(const Key& k);
+
+// The technique column of the shadow volumes' runs: "volumes auto", "volumes zpass", "volumes zfail".
+inline constexpr const char* kVolumesPrefix = "volumes ";
+inline bool is_volumes(const std::string& technique) { return technique.rfind(kVolumesPrefix, 0) == 0; }
 
 // The technique column's suffix of the runs at the settings before issue 9 (bench.cpp, before_rows).
 inline constexpr const char* kBeforeSuffix = " (before)";

@@ -50,13 +50,23 @@ void write_text(const fs::path& path, const std::string& text) {
 std::string csv(const Sweep& w) {
     std::ostringstream o;
     o << "scene,time,width,height,technique,encoding,filter,map_size," << measure::score_csv_header()
-      << ",ms_moving,ms_still,ms_shadow_pass,ms_camera_pass,frames,redrawn_moving,redrawn_still,shadow_map_bytes,texel_use_pct,settings\n";
-    for (const Row& r : w.rows) {
+      << ",ms_moving,ms_still,ms_shadow_pass,ms_camera_pass,frames,redrawn_moving,redrawn_still,shadow_map_bytes,texel_use_pct,"
+         "silhouette_edges,volume_triangles,fill_per_pixel,zpass_casters,zfail_casters,section,segments,settings\n";
+    std::vector<const Row*> rows;
+    for (const Row& r : w.rows) rows.push_back(&r);
+    for (const Row& r : w.silhouette) rows.push_back(&r);
+    for (const Row* rp : rows) {
+        const Row& r = *rp;
+        const bool vol = r.silhouette_edges >= 0;
         o << r.scene << "," << fixed(r.time, 3) << "," << w.width << "," << w.height << "," << r.technique << "," << r.encoding << ","
           << r.filter << "," << r.map << "," << measure::score_csv_cells(r.score) << "," << fixed(r.ms_moving, 3) << ","
           << fixed(r.ms_still, 3) << "," << fixed(r.ms_shadow, 3) << "," << fixed(r.ms_camera, 3) << "," << r.frames << ","
           << r.redrawn_moving << "," << r.redrawn_still << "," << r.bytes << ","
-          << (r.texel_use_pct >= 0.0 ? fixed(r.texel_use_pct, 1) : "") << ",\"" << r.settings << "\"\n";
+          << (r.texel_use_pct >= 0.0 ? fixed(r.texel_use_pct, 1) : "") << "," << (vol ? std::to_string(r.silhouette_edges) : "") << ","
+          << (vol ? std::to_string(r.volume_triangles) : "") << "," << (vol ? fixed(r.fill_per_pixel, 3) : "") << ","
+          << (vol ? std::to_string(r.zpass_casters) : "") << "," << (vol ? std::to_string(r.zfail_casters) : "") << ","
+          << (r.section.empty() ? "sweep" : r.section) << "," << (r.segments ? std::to_string(r.segments) : "") << ",\""
+          << r.settings << "\"\n";
     }
     return o.str();
 }
@@ -68,6 +78,7 @@ struct Mean {
     double moving = 0, still = 0, shadow = 0, camera = 0;
     std::size_t bytes = 0;
     int n = 0;
+    double silhouette_edges = -1.0, fill_per_pixel = 0.0;  // shadow volumes' (< 0: none)
 };
 
 Mean mean_of(const std::vector<const Row*>& rows) {
@@ -86,6 +97,11 @@ Mean mean_of(const std::vector<const Row*>& rows) {
     if (m.n) {
         const double n = m.n;
         m.moving /= n, m.still /= n, m.shadow /= n, m.camera /= n;
+    }
+    if (!rows.empty() && std::all_of(rows.begin(), rows.end(), [](const Row* r) { return r->silhouette_edges >= 0; })) {
+        m.silhouette_edges = 0.0;
+        for (const Row* r : rows) m.silhouette_edges += r->silhouette_edges, m.fill_per_pixel += r->fill_per_pixel;
+        m.silhouette_edges /= m.n, m.fill_per_pixel /= m.n;
     }
     return m;
 }
@@ -131,10 +147,14 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
                  (w.gl_renderer.empty() ? "" : "; " + w.gl_renderer);
     p.xlabel = "ms per frame, light moving (log scale)";
     p.ylabel = mae ? "mean absolute visibility error %" : "error % (false shadow + false lit)";
-    p.colors = {"#d95f02", "#7570b3", "#1b9e77", "#666666", "#e7298a", "#e6ab02"};
+    p.colors = {"#d95f02", "#7570b3", "#1b9e77", "#666666", "#e7298a", "#e6ab02", "#17becf"};
+    p.color_title = "encoding, technique (colour)";
+    p.marker_title = "filter, method (shape)";
     p.color_legend = {{"r8", 0}, {"rgba", 1}, {"depthtex", 2}, {"no shadow map", 3}};
+    const bool volumes = std::any_of(keys.begin(), keys.end(), [](const Key& k) { return is_volumes(k.technique); });
+    if (volumes) p.color_legend.push_back({"shadow volumes", 6});
     const auto known = [](const std::string& enc) {
-        return enc == "r8" || enc == "rgba" || enc == "depthtex" || enc == "none" || enc == "planar";
+        return enc == "r8" || enc == "rgba" || enc == "depthtex" || enc == "none" || enc == "planar" || enc == "volumes";
     };
     for (const Key& k : keys)
         if (!known(k.technique.substr(0, k.technique.find(' ')))) {
@@ -145,12 +165,15 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
     if (before_rows) p.color_legend.push_back({"rgba before issue 9", 5});
     p.marker_legend = {{"hard", Marker::Circle}, {"pcf2x2", Marker::Square}, {"pcf4x4", Marker::Triangle},
                        {"planar", Marker::Diamond}, {"none", Marker::Cross}};
-    p.notes = {"marker size: map 256 ... 4096", "front: shadow maps only;", "planar and none are references",
-               "hover (SVG) for the exact", "settings of each point"};
+    if (volumes)
+        p.marker_legend.insert(p.marker_legend.end(), {{"volumes auto", Marker::Star}, {"volumes zpass", Marker::TriangleDown},
+                                                       {"volumes zfail", Marker::Hexagon}});
+    p.notes = {"marker size: map 256 ... 4096", volumes ? "front: shadow maps and volumes;" : "front: shadow maps only;",
+               "planar and none are references", "hover (SVG) for the exact", "settings of each point"};
     if (before_rows)
         p.notes.insert(p.notes.end(), {"dashed blue ring: the defaults", "and the settings before", "issue 9, at map 1024"});
-    // The front is over the shadow-map techniques: planar shadows need a flat ground and cast no
-    // shadow on anything else, and none is no answer; both are drawn as references.
+    // The front is over the shadow-map techniques and the shadow volumes: planar shadows need a
+    // flat ground and cast no shadow on anything else, and none is no answer; both are drawn as references.
     std::vector<measure::Point2> pts;
     std::vector<Key> order;
     for (const Key& k : keys) {
@@ -162,19 +185,24 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
         const std::string t = before ? k.technique.substr(0, k.technique.size() - std::string(kBeforeSuffix).size()) : k.technique;
         const std::string enc = t.substr(0, t.find(' '));
         const std::string fil = t.find(' ') == std::string::npos ? "" : t.substr(t.find(' ') + 1);
-        pt.color = before ? 5 : enc == "r8" ? 0 : enc == "rgba" ? 1 : enc == "depthtex" ? 2 : known(enc) ? 3 : 4;
+        const bool vol = is_volumes(k.technique);
+        pt.color = before ? 5 : enc == "r8" ? 0 : enc == "rgba" ? 1 : enc == "depthtex" ? 2 : vol ? 6 : known(enc) ? 3 : 4;
         // Where the defaults sit, and where they sat before issue 9 (map 1024).
         if (before_rows && k.map == 1024 && enc == "rgba" && (fil == "hard" || fil == "pcf4x4"))
             pt.callout = (before ? "before: " : "default: ") + t + " 1024";
-        pt.marker = fil == "hard" ? Marker::Circle : fil == "pcf2x2" ? Marker::Square : fil == "pcf4x4" ? Marker::Triangle
+        pt.marker = vol ? (fil == "zpass" ? Marker::TriangleDown : fil == "zfail" ? Marker::Hexagon : Marker::Star)
+                    : fil == "hard" ? Marker::Circle : fil == "pcf2x2" ? Marker::Square : fil == "pcf4x4" ? Marker::Triangle
                     : enc == "planar" ? Marker::Diamond : Marker::Cross;
-        pt.radius = k.map ? 3.0 + 1.1 * std::log2(static_cast<double>(k.map) / 256.0) : 5.0;
+        pt.radius = k.map ? 3.0 + 1.1 * std::log2(static_cast<double>(k.map) / 256.0) : vol ? 6.0 : 5.0;
         pt.label = key_label(k);
         pt.tooltip = key_label(k) + ": error " + fixed(m.score.error_pct, 2) + " % (false shadow " + fixed(m.score.false_shadow_pct, 2) +
                      ", false lit " + fixed(m.score.false_lit_pct, 2) + "), mean abs error " + fixed(m.score.mae_pct, 2) + " %, " +
-                     fixed(m.moving, 2) + " ms/frame moving, " + fixed(m.still, 2) + " still, " + bytes_str(m.bytes);
+                     fixed(m.moving, 2) + " ms/frame moving, " + fixed(m.still, 2) + " still, " +
+                     (m.silhouette_edges >= 0.0 ? fixed(m.silhouette_edges, 0) + " silhouette edges, fill " +
+                                                      fixed(m.fill_per_pixel, 2) + " per pixel"
+                                                : bytes_str(m.bytes));
         p.points.push_back(pt);
-        pts.push_back({k.map ? m.moving : NAN, pt.y});
+        pts.push_back({k.map || vol ? m.moving : NAN, pt.y});
         order.push_back(k);
     }
     p.front = measure::pareto_front(pts, 0.01);  // the tables' precision
@@ -226,6 +254,97 @@ std::string defaults_against_before(const std::vector<const Row*>& all) {
     return o.str();
 }
 
+// The shadow map the volumes are set against: rgba hard at map 1024, or at the middle map size
+// swept when 1024 was not.
+int comparison_map(const Sweep& w) {
+    if (std::find(w.o.maps.begin(), w.o.maps.end(), 1024) != w.o.maps.end() || w.o.maps.empty()) return 1024;
+    return w.o.maps[w.o.maps.size() / 2];
+}
+
+// Shadow volumes (each counting method) against rgba hard per scene frame: error, time, and what
+// the volumes cost: silhouette edges, volume triangles, stencil fill. Empty without volume rows.
+std::string volumes_against_map(const Sweep& w, const std::vector<const Row*>& all) {
+    if (std::none_of(all.begin(), all.end(), [](const Row* r) { return is_volumes(r->technique); })) return "";
+    const int map = comparison_map(w);
+    std::ostringstream o;
+    o << "\n## Shadow volumes against the shadow map (rgba hard, map " << map << ")\n\n"
+      << "Per scene frame. Volumes: *auto* counts depth-pass unless the near plane may lie inside a caster's volume, then "
+         "depth-fail, per caster; *zpass* and *zfail* count every caster one way. Silhouette edges and volume triangles "
+         "(sides and caps) are the frame's; fill: the stencil fragments the volumes rasterise (every layer, before the depth "
+         "test), per pixel of the image. Casters: counted depth-pass / depth-fail.\n\n"
+      << "| scene frame | technique | error % | false shadow % | false lit % | ms/frame moving | ms/frame still | silhouette edges "
+         "| volume triangles | fill per pixel | casters pass / fail |\n"
+      << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
+    std::vector<std::string> scenes;
+    for (const Row* r : all)
+        if (std::find(scenes.begin(), scenes.end(), r->scene) == scenes.end()) scenes.push_back(r->scene);
+    const std::string map_name = "rgba hard";
+    const auto line = [&](const std::string& scene, const std::string& technique, const Mean& m, const Row* one) {
+        o << "| " << scene << " | " << technique << " | " << fixed(m.score.error_pct, 2) << " | " << fixed(m.score.false_shadow_pct, 2)
+          << " | " << fixed(m.score.false_lit_pct, 2) << " | " << fixed(m.moving, 2) << " | " << fixed(m.still, 2) << " | ";
+        if (m.silhouette_edges >= 0.0)
+            o << fixed(m.silhouette_edges, 0) << " | " << (one ? std::to_string(one->volume_triangles) : "-") << " | "
+              << fixed(m.fill_per_pixel, 2) << " | "
+              << (one ? std::to_string(one->zpass_casters) + " / " + std::to_string(one->zfail_casters) : "-") << " |\n";
+        else
+            o << "- | - | - | - |\n";
+    };
+    std::vector<const Row*> chosen;
+    for (const auto& scene : scenes) {
+        for (const Row* r : all)
+            if (r->scene == scene && ((r->technique == map_name && r->map == map) || is_volumes(r->technique))) {
+                line(scene, key_label({r->technique, r->map}), mean_of({r}), r);
+                chosen.push_back(r);
+            }
+    }
+    const auto means = means_by_key(chosen);
+    for (const Key& k : keys_in_order(chosen)) line("**mean**", key_label(k), means.at(k), nullptr);
+    return o.str();
+}
+
+// The silhouette sweep: a sphere of a growing number of segments under a point light, volumes
+// (auto) against rgba hard 1024. Empty without its rows.
+std::string silhouette_table(const Sweep& w) {
+    if (w.silhouette.empty()) return "";
+    std::vector<int> segs;
+    std::vector<std::string> techniques;
+    for (const Row& r : w.silhouette) {
+        if (std::find(segs.begin(), segs.end(), r.segments) == segs.end()) segs.push_back(r.segments);
+        if (std::find(techniques.begin(), techniques.end(), key_label({r.technique, r.map})) == techniques.end())
+            techniques.push_back(key_label({r.technique, r.map}));
+    }
+    const auto find = [&](int seg, const std::string& t) -> const Row* {
+        for (const Row& r : w.silhouette)
+            if (r.segments == seg && key_label({r.technique, r.map}) == t) return &r;
+        return nullptr;
+    };
+    std::ostringstream o;
+    o << "\n## Shadow volumes as the silhouette grows\n\n"
+      << "A UV sphere (radius 1, N slices x N/2 stacks, 2 above a 10 x 10 ground quad) under a point light, "
+      << w.width << "x" << w.height << ", the same run: ms/frame is the median of " << w.o.rounds << " interleaved round(s) of "
+      << w.o.frames << " frames (moving: the light turning half a degree a frame; still: the same frame again, a map "
+         "reused); error against the ray-traced hard truth of each frame. Silhouette edges, volume triangles and fill "
+         "(stencil fragments per pixel) are the volumes'.\n\n"
+      << "| segments | sphere triangles |";
+    for (const auto& t : techniques) o << " " << t << " error % | " << t << " ms moving | " << t << " ms still |";
+    o << " silhouette edges | volume triangles | fill per pixel |\n|---:|---:|";
+    for (size_t i = 0; i < techniques.size(); ++i) o << "---:|---:|---:|";
+    o << "---:|---:|---:|\n";
+    for (int seg : segs) {
+        o << "| " << seg << " | " << 2 * seg * (seg / 2 - 1) << " |";
+        const Row* vol = nullptr;
+        for (const auto& t : techniques) {
+            const Row* r = find(seg, t);
+            if (r && r->silhouette_edges >= 0) vol = r;
+            o << " " << (r ? fixed(r->score.error_pct, 2) : "-") << " | " << (r ? fixed(r->ms_moving, 2) : "-") << " | "
+              << (r ? fixed(r->ms_still, 2) : "-") << " |";
+        }
+        o << " " << (vol ? std::to_string(vol->silhouette_edges) : "-") << " | " << (vol ? std::to_string(vol->volume_triangles) : "-")
+          << " | " << (vol ? fixed(vol->fill_per_pixel, 2) : "-") << " |\n";
+    }
+    return o.str();
+}
+
 std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& front) {
     std::ostringstream o;
     const auto all = select(w, [](const Row&) { return true; });
@@ -265,9 +384,11 @@ std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& fro
     for (const Key& k : keys) {
         const Mean& m = means.at(k);
         o << "| " << k.technique << " | " << (k.map ? std::to_string(k.map) : "-") << " | " << measure::score_table_cells(m.score)
-          << " | " << fixed(m.moving, 2) << " | " << fixed(m.still, 2) << " | " << fixed(m.shadow, 2) << " | " << fixed(m.camera, 2) << " | "
-          << bytes_str(m.bytes) << " | " << (on_front.count(k) ? "yes" : k.map ? "" : "ref.") << " |\n";
+          << " | " << fixed(m.moving, 2) << " | " << fixed(m.still, 2) << " | " << (is_volumes(k.technique) ? "-" : fixed(m.shadow, 2))
+          << " | " << fixed(m.camera, 2) << " | " << bytes_str(m.bytes) << " | "
+          << (on_front.count(k) ? "yes" : k.map || is_volumes(k.technique) ? "" : "ref.") << " |\n";
     }
+    o << volumes_against_map(w, all);
 
     // The course scene at the default map size: the closing note's figures.
     std::vector<const Row*> course;
@@ -339,7 +460,7 @@ std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& fro
         for (size_t i = 0; i < w.o.maps.size(); ++i) o << "---:|";
         o << "\n";
         for (const auto& t : techniques) {
-            if (t == "none" || t == "planar") continue;
+            if (std::none_of(all.begin(), all.end(), [&](const Row* r) { return r->technique == t && r->map > 0; })) continue;
             o << "| " << t << " |";
             for (int m : w.o.maps) {
                 const auto it = means.find({t, m});
@@ -348,6 +469,7 @@ std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& fro
             o << "\n";
         }
     }
+    o << silhouette_table(w);
     if (!w.notes.empty()) {
         o << "\n## Notes\n\n";
         for (const auto& n : w.notes) o << "- " << n << "\n";
@@ -460,6 +582,17 @@ void read_csv(Sweep& w, const std::string& path) {
         r.redrawn_still = static_cast<int>(num("redrawn_still", 0));
         r.bytes = static_cast<std::size_t>(num("shadow_map_bytes", 0));
         r.texel_use_pct = num("texel_use_pct", -1.0);
+        r.silhouette_edges = static_cast<int>(num("silhouette_edges", -1));
+        r.volume_triangles = static_cast<int>(num("volume_triangles", 0));
+        r.fill_per_pixel = num("fill_per_pixel", 0.0);
+        r.zpass_casters = static_cast<int>(num("zpass_casters", 0));
+        r.zfail_casters = static_cast<int>(num("zfail_casters", 0));
+        r.segments = static_cast<int>(num("segments", 0));
+        if (get("section") == kSilhouetteSection) {
+            r.section = kSilhouetteSection;
+            w.silhouette.push_back(r);
+            continue;
+        }
         if (r.scene.empty() || r.technique.empty())
             throw CommandError{"--from-csv " + path + ":" + std::to_string(line_no) + ": no scene or technique", 2};
         if (std::find(labels.begin(), labels.end(), r.scene) == labels.end()) labels.push_back(r.scene);

@@ -218,6 +218,24 @@ private:
                 r *= 1.2;
                 it.pts = {{cx, cy - r}, {cx + r, cy}, {cx, cy + r}, {cx - r, cy}};
                 break;
+            case Marker::TriangleDown:
+                it.kind = Item::Polygon;
+                r *= 1.2;
+                it.pts = {{cx, cy + r}, {cx + 0.866 * r, cy - 0.5 * r}, {cx - 0.866 * r, cy - 0.5 * r}};
+                break;
+            case Marker::Star:  // five points
+            case Marker::Hexagon: {
+                const bool star = m == Marker::Star;
+                const int n = star ? 10 : 6;
+                r *= star ? 1.3 : 1.05;
+                it.kind = Item::Polygon;
+                for (int k = 0; k < n; ++k) {
+                    const double a = -1.5707963267948966 + 6.283185307179586 * k / n + (star ? 0.0 : 0.5235987755982988);
+                    const double rr = star && (k % 2) ? 0.45 * r : r;
+                    it.pts.push_back({cx + rr * std::cos(a), cy + rr * std::sin(a)});
+                }
+                break;
+            }
             case Marker::Cross: {
                 const double a = r * 0.35;
                 it.kind = Item::Polygon;
@@ -308,7 +326,7 @@ private:
 
     void legend() {
         double x = right_ + 22, y = top_ + 4;
-        text(x, y, "encoding (colour)", 12, "#111111", Anchor::Start, true);
+        text(x, y, p_.color_title, 12, "#111111", Anchor::Start, true);
         y += 18;
         for (const auto& [label, c] : p_.color_legend) {
             marker(x + 6, y - 4, Marker::Circle, 5, color(c), "#222222", 0.7, "");
@@ -316,7 +334,7 @@ private:
             y += 17;
         }
         y += 8;
-        text(x, y, "filter (shape)", 12, "#111111", Anchor::Start, true);
+        text(x, y, p_.marker_title, 12, "#111111", Anchor::Start, true);
         y += 18;
         for (const auto& [label, m] : p_.marker_legend) {
             marker(x + 6, y - 4, m, 5, "#bbbbbb", "#222222", 0.7, "");

@@ -11,7 +11,7 @@
 
 namespace penumbra::tools {
 
-enum class Marker { Circle, Square, Triangle, Diamond, Cross };
+enum class Marker { Circle, Square, Triangle, Diamond, Cross, Star, TriangleDown, Hexagon };
 
 struct PlotPoint {
     double x = 0.0;
@@ -33,6 +33,8 @@ struct Plot {
     std::vector<PlotPoint> points;
     std::vector<std::size_t> front;  // indices into points, by increasing x
     std::vector<std::string> colors; // "#rrggbb"
+    std::string color_title = "encoding (colour)";  // the legend's headings
+    std::string marker_title = "filter (shape)";
     std::vector<std::pair<std::string, int>> color_legend;     // label, color index
     std::vector<std::pair<std::string, Marker>> marker_legend; // label, marker
     std::vector<std::string> notes;  // lines under the legend
