@@ -36,6 +36,26 @@ check planar --technique planar --size 64x64
 check none --technique none --size 64x64
 check light-depth --aov light-depth --size 64x64 --map-size 256
 check gltf --scene "$data/sphere_over_plane.gltf" --size 64x64 --filter pcf4x4 --bias auto
+check volumes --technique volumes --size 64x64
+check volumes-eye-in-shadow --technique volumes --eye in-shadow --show-volumes on --size 64x64
+check volumes-count --technique volumes --aov stencil-count --volume-method zfail --size 64x64
+
+# Shadow volumes: the plan says what they cost and which method each caster got.
+"$penumbra" plan --technique volumes --eye in-shadow --size 64x64 --json > volumes.json &&
+  python3 -c '
+import json, sys
+v = json.load(open(sys.argv[1]))["volumes"]
+assert v["zfail_casters"] >= 1 and v["silhouette_edges"] > 0 and v["fill_per_pixel"] > 0, v' volumes.json \
+  && echo "ok volumes: depth-fail with the eye in a shadow" || { echo "FAIL volumes: no depth-fail with the eye in a shadow"; fail=1; }
+# Every glTF scene of the test data renders with shadow volumes.
+for f in "$data"/*.gltf "$data"/*.glb; do
+  case "$(basename "$f")" in bad_*) continue ;; esac
+  if "$penumbra" render --scene "$f" --technique volumes --size 64x64 --out volumes.png 2>/dev/null; then
+    echo "ok volumes render $(basename "$f")"
+  else
+    echo "FAIL volumes render $(basename "$f")"; fail=1
+  fi
+done
 
 # The second frame of a still scene reuses the map: its pass is skipped, its resource marked reused.
 "$penumbra" plan --scene "$data/sphere_over_plane.gltf" --frames 2 --size 64x64 --json > still.json &&
