@@ -47,7 +47,7 @@ def control_html(option: dict, control: dict) -> str:
     if kind == "checkbox":
         on, off = control["values"] if control["values"] else ("on", "off")
         return (f'<div class="row"><label><input type="checkbox" id="{name}" data-option="{name}" '
-                f'data-on="{esc(on)}" data-off="{esc(off)}"> {esc(label)}</label>{hint}</div>')
+                f'data-on="{esc(on)}" data-off="{esc(off)}"{described}> {esc(label)}</label>{hint}</div>')
     if kind == "number":
         # A radio per word (its value shown beside it by the page script), one for a number of
         # the user's, and the number box; the script sends the word or the number.

@@ -3,7 +3,7 @@
 import { runTest, openPage, waitFrames, check, PAGES } from './harness.mjs';
 
 await runTest('web.load', async ({ server, browser }) => {
-  // The index: its links lead to the four pages.
+  // The index: its links lead to every exercise page.
   {
     const { page, context, problems } = await openPage(browser, `${server.url}/index.html`, { waitReady: false });
     const links = await page.$$eval('a[href]', (as) => as.map((a) => a.getAttribute('href')));
