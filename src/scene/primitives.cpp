@@ -83,6 +83,21 @@ Mesh make_sphere(float radius, int slices, int stacks) {
     return m;
 }
 
+Mesh make_bowl(float radius, int slices, int stacks) {
+    Mesh m = make_sphere(radius, slices, stacks);
+    m.name = "bowl";
+    std::vector<std::uint32_t> kept;
+    const float rim = 1e-4f * radius;
+    for (size_t k = 0; k + 2 < m.indices.size(); k += 3) {
+        bool low = true;
+        for (size_t j = 0; j < 3; ++j) low = low && m.positions[m.indices[k + j]].y <= rim;
+        if (low) kept.insert(kept.end(), {m.indices[k], m.indices[k + 1], m.indices[k + 2]});
+    }
+    m.indices = std::move(kept);
+    seal(m);
+    return m;
+}
+
 Mesh make_box(const glm::vec3& half_extent) {
     Mesh m;
     m.name = "box";

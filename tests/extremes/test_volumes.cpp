@@ -54,20 +54,6 @@ scene::Mesh tube(float r, float h, int segments) {
     return m;
 }
 
-// An open bowl: the lower half of a sphere.
-scene::Mesh bowl() {
-    scene::Mesh m = scene::make_sphere(0.7f, 24, 12);
-    std::vector<std::uint32_t> kept;
-    for (size_t k = 0; k + 2 < m.indices.size(); k += 3) {
-        bool low = true;
-        for (size_t j = 0; j < 3; ++j) low = low && m.positions[m.indices[k + j]].y <= 1e-4f;
-        if (low) kept.insert(kept.end(), m.indices.begin() + static_cast<long>(k), m.indices.begin() + static_cast<long>(k + 3));
-    }
-    m.indices = kept;
-    scene::seal(m);
-    return m;
-}
-
 scene::Mesh open_box() {
     scene::Mesh m = scene::make_box(glm::vec3(0.45f, 0.35f, 0.45f));
     m.indices.erase(m.indices.begin() + 12, m.indices.begin() + 18);  // the top face (+y) gone
@@ -80,7 +66,7 @@ enum class LightKind { Point, Spot, Directional };
 // The four open casters and a closed sphere over a ground quad.
 scene::Scene open_meshes(LightKind kind) {
     scene::Scene s;
-    s.meshes = {scene::make_quad(12.0f), tube(0.35f, 1.4f, 20), bowl(), scene::make_quad(1.4f), open_box(),
+    s.meshes = {scene::make_quad(12.0f), tube(0.35f, 1.4f, 20), scene::make_bowl(0.7f, 24, 12), scene::make_quad(1.4f), open_box(),
                 scene::make_sphere(0.4f, 16, 8)};
     s.materials.resize(1);
     const auto at = [](float x, float y, float z) { return glm::translate(glm::mat4(1.0f), glm::vec3(x, y, z)); };

@@ -51,7 +51,7 @@ TEST(Options, TheTechniquePartAndTheJobPartSplit) {
     std::vector<std::string> technique, job;
     for (const auto& o : option_table())
         (o.info.part == OptionPart::Technique ? technique : job).emplace_back(o.info.name);
-    EXPECT_EQ(job, (std::vector<std::string>{"scene", "time", "size", "out", "frames"}));
+    EXPECT_EQ(job, (std::vector<std::string>{"scene", "time", "size", "eye", "out", "frames"}));
     EXPECT_EQ(technique.size(), to_pairs(Settings{}).size());
     Settings s;
     EXPECT_EQ(parse_option(s, "encoding", "r8"), "");
@@ -132,8 +132,11 @@ TEST(Options, BadValuesAreNamedAndLeaveTheOptionsAlone) {
         {"bias", "slope", "--bias: not a number: 'slope' (or 'auto', 'sheet')"},
         {"bias", "2", "--bias: must lie in [0, 1], got '2'"},
         {"frames", "0", "--frames: must be at least 1, got '0'"},
-        {"aov", "normal", "--aov: unknown value 'normal' (color, visibility, light-depth)"},
-        {"technique", "volume", "--technique: unknown value 'volume' (shadowmap, planar, none)"},
+        {"aov", "normal", "--aov: unknown value 'normal' (color, visibility, light-depth, stencil-count)"},
+        {"technique", "volume", "--technique: unknown value 'volume' (shadowmap, planar, volumes, none)"},
+        {"volume-method", "zmid", "--volume-method: unknown value 'zmid' (auto, zpass, zfail)"},
+        {"show-volumes", "yes", "--show-volumes: unknown value 'yes' (off, on)"},
+        {"eye", "above", "--eye: unknown value 'above' (scene, in-shadow)"},
         {"colour", "red", "unknown option --colour"},
         {"scene", "", "--scene: needs a value: teapot (the course scene) or FILE.gltf / FILE.glb"},
     };

@@ -55,20 +55,6 @@ bool caps_face_the_light(const shadow::ShadowVolume& v, const glm::vec3& light) 
     return true;
 }
 
-// An open bowl: the lower half of a sphere.
-scene::Mesh bowl() {
-    scene::Mesh m = scene::make_sphere(1.0f, 16, 8);
-    std::vector<std::uint32_t> kept;
-    for (size_t k = 0; k + 2 < m.indices.size(); k += 3) {
-        bool low = true;
-        for (size_t j = 0; j < 3; ++j) low = low && m.positions[m.indices[k + j]].y <= 1e-4f;
-        if (low) kept.insert(kept.end(), m.indices.begin() + static_cast<long>(k), m.indices.begin() + static_cast<long>(k + 3));
-    }
-    m.indices = kept;
-    scene::seal(m);
-    return m;
-}
-
 scene::Mesh open_box() {
     scene::Mesh m = scene::make_box(glm::vec3(0.5f));
     m.indices.resize(m.indices.size() - 6);  // one face gone
@@ -90,7 +76,7 @@ TEST(ShadowVolumes, AreClosedForClosedAndOpenMeshesUnderEveryLight) {
                             glm::rotate(glm::mat4(1.0f), 0.4f, glm::vec3(1.0f, 0.0f, 0.3f));
     const std::pair<const char*, scene::Mesh> meshes[] = {{"sphere", scene::make_sphere(1.0f, 16, 8)},
                                                           {"box", scene::make_box(glm::vec3(0.5f, 0.3f, 0.7f))},
-                                                          {"bowl", bowl()},
+                                                          {"bowl", scene::make_bowl(1.0f, 16, 8)},
                                                           {"open box", open_box()},
                                                           {"quad", scene::make_quad(2.0f)}};
     for (const auto& [name, mesh] : meshes)
