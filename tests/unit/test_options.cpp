@@ -152,11 +152,11 @@ TEST(Options, ArgsLabelTheResult) {
     o.settings.encoding = Encoding::R8;
     EXPECT_EQ(to_args(o),
               "--scene teapot --time 0 --size 512x512 --encoding r8 --filter hard --pcf-kernel early-exit "
-              "--map-size 1024 --bias auto --map-faces auto --light-fit tight --precision highp --aov color "
-              "--technique shadowmap --frames 1");
+              "--map-size 1024 --bias auto --map-faces auto --light-fit tight --precision highp --volume-method auto "
+              "--show-volumes off --aov color --technique shadowmap --eye scene --frames 1");
     EXPECT_EQ(to_args(o.settings),
               "--encoding r8 --filter hard --pcf-kernel early-exit --map-size 1024 --bias auto --map-faces auto "
-              "--light-fit tight --precision highp --aov color --technique shadowmap");
+              "--light-fit tight --precision highp --volume-method auto --show-volumes off --aov color --technique shadowmap");
 }
 
 TEST(Options, AcceptedValuesAndListsComeFromTheTable) {
