@@ -29,7 +29,7 @@ expect_error "unknown option"    "--colour"      --colour red
 expect_error "unknown encoding"  "r16"           --encoding r16
 expect_error "unknown filter"    "pcf8x8"        --filter pcf8x8
 expect_error "unknown aov"       "aov"           --aov normals
-expect_error "unknown technique" "technique"     --technique volumes
+expect_error "unknown technique" "technique"     --technique volume
 expect_error "zero size"         "--size"        --size 0x512
 expect_error "bad size"          "--size"        --size 512
 expect_error "huge size"         "maximum"       --size 100000x64
