@@ -10,6 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "measure/image_io.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
 #include "render/options.h"
@@ -102,6 +103,18 @@ scene::Scene open_meshes(LightKind kind) {
     return s;
 }
 
+// The visibility image `rgba` (red channel) of a frame of `sc` scored against the truth, traced with
+// the camera's finite projection: the same pixels as the renderer's infinite one (only depth differs).
+measure::Score score_frame(const scene::Scene& sc, const std::vector<std::uint8_t>& rgba) {
+    const render::FrameInputs in = render::offscreen(kSize, kSize);
+    measure::TruthOptions to;
+    to.width = kSize;
+    to.height = kSize;
+    to.view_proj = render::camera_view(sc, in).view_proj;
+    const measure::TruthImage t = measure::RayTracer(sc).render(to);
+    return measure::score(measure::from_rgba(rgba, kSize, kSize, 1).data, t.lit, t.valid_mask());
+}
+
 class Volumes : public test::GlTest {
 protected:
     struct Result {
@@ -119,16 +132,7 @@ protected:
         const auto& plan = renderer->render(sc, s, in);
         Result r;
         if (plan.volumes) r.stats = *plan.volumes;
-        const auto rgba = renderer->read_image();
-        std::vector<std::uint8_t> vis(rgba.size() / 4);
-        for (size_t i = 0; i < vis.size(); ++i) vis[i] = rgba[i * 4];
-        // The truth with the scene camera's finite projection: the same pixels (only depth differs).
-        measure::TruthOptions to;
-        to.width = kSize;
-        to.height = kSize;
-        to.view_proj = render::camera_view(sc, in).view_proj;
-        const measure::TruthImage t = measure::RayTracer(sc).render(to);
-        r.score = measure::score(vis, t.lit, t.valid_mask());
+        r.score = score_frame(sc, renderer->read_image());
         std::printf("%-34s --volume-method %-5s error %.3f%% (false shadow %.3f%%, false lit %.3f%%), %d depth-pass, "
                     "%d depth-fail caster(s), %d silhouette edge(s), fill %.2f per pixel\n",
                     what.c_str(), method, r.score.error_pct, r.score.false_shadow_pct, r.score.false_lit_pct,
@@ -158,16 +162,8 @@ TEST_F(Volumes, TheScoreCanFail) {
     render::Settings s;
     s.technique = render::Technique::None;
     s.aov = render::Aov::Visibility;
-    const auto& plan = renderer->render(sc, s, render::offscreen(kSize, kSize));
-    (void)plan;
-    const auto rgba = renderer->read_image();
-    std::vector<std::uint8_t> vis(rgba.size() / 4);
-    for (size_t i = 0; i < vis.size(); ++i) vis[i] = rgba[i * 4];
-    measure::TruthOptions to;
-    to.width = to.height = kSize;
-    to.view_proj = render::camera_view(sc, render::offscreen(kSize, kSize)).view_proj;
-    const measure::TruthImage t = measure::RayTracer(sc).render(to);
-    EXPECT_GT(measure::score(vis, t.lit, t.valid_mask()).error_pct, 1.0);
+    renderer->render(sc, s, render::offscreen(kSize, kSize));
+    EXPECT_GT(score_frame(sc, renderer->read_image()).error_pct, 1.0);
 }
 
 TEST_F(Volumes, TheCourseSceneIsExact) {

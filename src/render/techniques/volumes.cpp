@@ -101,7 +101,7 @@ public:
             p->state.offset_factor = kCapOffsetFactor;
             p->state.offset_units = kCapOffsetUnits;
         }
-        std::vector<glm::vec4> shown_front;  // every face, for --show-volumes
+        std::vector<glm::vec4> shown;  // every face, for --show-volumes
         const int w = c.camera_target.width, h = c.camera_target.height;
         double fill = 0.0;
         for (size_t k = 0; k < c.casters.size(); ++k) {
@@ -124,8 +124,8 @@ public:
             fill += shadow::covered_pixels(body, c.plan.camera.view_proj, w, h) +
                     shadow::covered_pixels(v.near_cap, c.plan.camera.view_proj, w, h);
             if (s.show_volumes) {
-                shown_front.insert(shown_front.end(), body.begin(), body.end());
-                shown_front.insert(shown_front.end(), v.near_cap.begin(), v.near_cap.end());
+                shown.insert(shown.end(), body.begin(), body.end());
+                shown.insert(shown.end(), v.near_cap.begin(), v.near_cap.end());
             }
             (fail ? zfail : zpass).draws.push_back(volume_draw(o.name, std::move(body)));
             if (!v.near_cap.empty()) (fail ? caps : zpass_caps).draws.push_back(volume_draw(o.name, std::move(v.near_cap)));
@@ -160,7 +160,7 @@ public:
         } else {
             lit_pass(c);
         }
-        if (s.show_volumes && !shown_front.empty()) show(c, std::move(shown_front));
+        if (s.show_volumes && !shown.empty()) show(c, std::move(shown));
     }
 
 private:
