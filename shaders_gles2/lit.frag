@@ -1,6 +1,7 @@
 #version 100
 // Camera pass: Phong lighting from one light, scaled by the light's visibility. Variants:
 // SHADOW_MAP (with ENC_*, FILTER_*, and BIAS_AUTO with LIGHT_PERSPECTIVE or not; EMULATE_MEDIUMP), IN_SHADOW (planar shadow region: visibility 0),
+// AREA_LOOKUP (Heckbert-Herf: the visibility averaged over light samples, from a target),
 // TEXTURED (base colour texture), LIGHT_SPOT (cone falloff), AOV_VISIBILITY (write visibility
 // as grey instead of colour).
 #include "precision.glsl"
@@ -29,6 +30,12 @@ varying vec2 v_uv;
 #include "shadow.glsl"
 varying vec4 v_shadow_coord;
 #endif
+#ifdef AREA_LOOKUP
+// Heckbert-Herf: the counts of lit light samples (area_add.frag), one channel per sample mod 4.
+uniform sampler2D u_area;
+uniform vec4 u_area_window;  // xy: the viewport's lower-left corner; zw: 1 / its size
+uniform float u_area_scale;  // 255 / the number of samples in
+#endif
 
 void main() {
     vec3 n = normalize(v_normal);
@@ -38,6 +45,9 @@ void main() {
     visibility = shadowVisibility(v_shadow_coord, n);
 #elif defined(IN_SHADOW)
     visibility = 0.0;
+#elif defined(AREA_LOOKUP)
+    vec4 counts = texture2D(u_area, (gl_FragCoord.xy - u_area_window.xy) * u_area_window.zw);
+    visibility = min(dot(counts, vec4(1.0)) * u_area_scale, 1.0);
 #endif
 
 #ifdef AOV_VISIBILITY

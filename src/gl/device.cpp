@@ -179,7 +179,11 @@ void Device::apply(const PipelineState& s) {
             glStencilOp(to_gl(a.fail), to_gl(a.depth_fail), to_gl(a.pass));
         }
     }
-    if (s.blend != state_.blend) set_enabled(GL_BLEND, s.blend != Blend::Off);
+    if (s.blend != state_.blend) {
+        if ((s.blend == Blend::Off) != (state_.blend == Blend::Off)) set_enabled(GL_BLEND, s.blend != Blend::Off);
+        if (s.blend == Blend::Add) glBlendFunc(GL_ONE, GL_ONE);
+        else if (s.blend == Blend::Alpha) glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    }
     const bool offset = s.offset_factor != 0.0f || s.offset_units != 0.0f;
     const bool offset_was = state_.offset_factor != 0.0f || state_.offset_units != 0.0f;
     if (offset != offset_was) set_enabled(GL_POLYGON_OFFSET_FILL, offset);

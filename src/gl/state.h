@@ -54,8 +54,9 @@ inline StencilState stencil_count(bool on_depth_fail) {
     return s;
 }
 
-// Blending of a colour over what the target holds: by the source's alpha.
-enum class Blend { Off, Alpha };
+// Blending of a colour over what the target holds: by the source's alpha, or added (ONE, ONE:
+// Heckbert-Herf's accumulation of light samples).
+enum class Blend { Off, Alpha, Add };
 
 struct PipelineState {
     bool depth_test = true;

@@ -52,7 +52,9 @@ bool Settings::operator==(const Settings& o) const {
     return technique == o.technique && encoding == o.encoding && filter == o.filter && pcf_kernel == o.pcf_kernel &&
            map_size == o.map_size && bias == o.bias && bias_auto == o.bias_auto && map_faces == o.map_faces &&
            light_fit == o.light_fit && precision == o.precision && volume_method == o.volume_method &&
-           show_volumes == o.show_volumes && aov == o.aov;
+           show_volumes == o.show_volumes && aov == o.aov && light_radius == o.light_radius &&
+           pcss_search == o.pcss_search && pcss_taps == o.pcss_taps && area_samples == o.area_samples &&
+           area_per_frame == o.area_per_frame;
 }
 
 bool Job::operator==(const Job& o) const {
@@ -265,7 +267,8 @@ std::vector<Option<Options>> make_table() {
         [](const Options& o) { return std::string(shadow::to_string(o.settings.encoding)); });
 
     OptionInfo filter = make_option_info("filter", P::Technique, T::Choice, "percentage-closer filtering of the lookup", "Filter",
-                      {{"hard", "hard: one tap"}, {"pcf2x2", "2x2 PCF"}, {"pcf4x4", "4x4 PCF"}});
+                      {{"hard", "hard: one tap"}, {"pcf2x2", "2x2 PCF"}, {"pcf4x4", "4x4 PCF"},
+                       {"pcss", "PCSS: penumbra from the light's size"}});
     add(filter, [](Options& o, std::string_view v) { o.settings.filter = enum_of(v, shadow::kAllFilters); },
         [](const Options& o) { return std::string(shadow::to_string(o.settings.filter)); });
 
@@ -343,6 +346,58 @@ std::vector<Option<Options>> make_table() {
                          "Show the volumes", {{"off", "off"}, {"on", "on"}});
     add(show_volumes, [](Options& o, std::string_view v) { o.settings.show_volumes = v == "on"; },
         [](const Options& o) { return std::string(o.settings.show_volumes ? "on" : "off"); });
+
+    OptionInfo light_radius = make_option_info("light-radius", P::Technique, T::NumberOrWord,
+                         "the light's size for soft shadows: a sphere's radius in world units (point, spot) or the "
+                         "sun's angular radius in radians (directional); 'scene' = the scene's (glTF light extras "
+                         "penumbra.radius; the course scene's is 0); 0 = a point light",
+                         "Light radius", {{"scene", "the scene's"}});
+    light_radius.min = 0.0;
+    light_radius.max = 1e6;
+    light_radius.step = 0.01;
+    add(light_radius,
+        [](Options& o, std::string_view v) {
+            if (v == "scene") o.settings.light_radius.reset();
+            else o.settings.light_radius = static_cast<float>(number_of(v));
+        },
+        [](const Options& o) {
+            return o.settings.light_radius ? shortest_float(*o.settings.light_radius) : std::string("scene");
+        });
+
+    OptionInfo pcss_search = make_option_info("pcss-search", P::Technique, T::Integer,
+                         "--filter pcss: taps of the blocker search (a Vogel disc turned per pixel)", "PCSS search taps");
+    pcss_search.min = 1;
+    pcss_search.max = 64;
+    pcss_search.presets = {{"8", "8"}, {"16", "16"}, {"32", "32"}};
+    add(pcss_search, [](Options& o, std::string_view v) { o.settings.pcss_search = int_of(v); },
+        [](const Options& o) { return std::to_string(o.settings.pcss_search); });
+
+    OptionInfo pcss_taps = make_option_info("pcss-taps", P::Technique, T::Integer,
+                         "--filter pcss: taps of the filter over the penumbra's width", "PCSS filter taps");
+    pcss_taps.min = 1;
+    pcss_taps.max = 64;
+    pcss_taps.presets = {{"8", "8"}, {"16", "16"}, {"32", "32"}, {"64", "64"}};
+    add(pcss_taps, [](Options& o, std::string_view v) { o.settings.pcss_taps = int_of(v); },
+        [](const Options& o) { return std::to_string(o.settings.pcss_taps); });
+
+    OptionInfo area_samples = make_option_info("area-samples", P::Technique, T::Integer,
+                         "Heckbert-Herf soft shadows: the technique run for N points on the light (stratified, the "
+                         "same every frame), the visibilities averaged; 1 = the light's centre (hard)",
+                         "Light samples");
+    area_samples.min = 1;
+    area_samples.max = kMaxAreaSamples;
+    area_samples.presets = {{"1", "1 (hard)"}, {"4", "4"}, {"16", "16"}, {"64", "64"}, {"256", "256"}};
+    add(area_samples, [](Options& o, std::string_view v) { o.settings.area_samples = int_of(v); },
+        [](const Options& o) { return std::to_string(o.settings.area_samples); });
+
+    OptionInfo area_per_frame = make_option_info("area-per-frame", P::Technique, T::Integer,
+                         "with --area-samples: 0 = all samples every frame; K = a still frame adds K samples per frame "
+                         "until all are in (converges while nothing moves)", "Samples per frame");
+    area_per_frame.min = 0;
+    area_per_frame.max = kMaxAreaSamples;
+    area_per_frame.presets = {{"0", "all (no progressive)"}, {"1", "1"}, {"4", "4"}, {"16", "16"}};
+    add(area_per_frame, [](Options& o, std::string_view v) { o.settings.area_per_frame = int_of(v); },
+        [](const Options& o) { return std::to_string(o.settings.area_per_frame); });
 
     OptionInfo aov = make_option_info("aov", P::Technique, T::Choice, "what the image shows", "Show",
                    {{"color", "colour"}, {"visibility", "visibility (white lit, black shadowed)"},

@@ -7,7 +7,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/options.h"
 #include "render/techniques/technique.h"
+#include "shadow/area_light.h"
 
 namespace penumbra::render {
 
@@ -330,9 +332,189 @@ struct Planning {
             if (o.casts_shadow) ctx.casters.push_back(static_cast<int>(i));
         }
         ctx.depth_path = {s.precision == shadow::Precision::Mediump, caps.unorm_floor};
+        if (s.light_radius) ctx.light.radius = *s.light_radius;
         plan.camera = camera_view(scene, in);
     }
 };
+
+// The camera pass into c.camera_target: every drawable object the module leaves in, shaded with
+// the module's features; `extra` (may be null) adds features and bindings after the module's.
+Pass camera_pass(PlanContext& c, const Module& module, bool stencil,
+                 void (*extra)(PlanContext&, Pass&, std::vector<CameraItem>&) = nullptr) {
+    Pass cam;
+    cam.name = "camera";
+    cam.module = "frame";
+    cam.target = c.camera_target;
+    cam.clear = Clear{c.settings.aov == Aov::Visibility ? kWhite : kBackground, true, stencil};
+    cam.bindings = c.lit_bindings();
+    std::vector<CameraItem> items;
+    const std::uint32_t all = (1u << cam.bindings.size()) - 1u;
+    for (int i : c.drawable) {
+        if (module.keeps_out_of_camera(c, i)) continue;
+        cam.draws.push_back(c.object_draw(i));
+        items.push_back({i, c.base_features(cam.draws.back()), all});
+    }
+    cam.detail = c.plan.output + ", " + std::to_string(cam.draws.size()) + " object(s)";
+    module.shade(c, cam, items);
+    if (extra) extra(c, cam, items);
+    for (size_t i = 0; i < items.size(); ++i) {
+        cam.draws[i].variant = lit_variant(items[i].features);
+        cam.draws[i].bindings = items[i].bindings;
+    }
+    if (c.settings.aov == Aov::Visibility) cam.detail += ", visibility AOV";
+    return cam;
+}
+
+// ---- Heckbert and Herf: the technique run from points on the light, averaged -------------------
+
+constexpr const char* kAreaSample = "area-sample";
+constexpr const char* kAreaLight = "area-light";
+constexpr int kAreaUnit = 0;
+
+// Whether this frame is an area-light accumulation, and if not but asked for, why (a note).
+bool area_applies(const PlanContext& c, std::string* why) {
+    const Settings& s = c.settings;
+    if (s.area_samples <= 1) return false;
+    const auto no = [&](std::string w) {
+        if (why) *why = "--area-samples " + std::to_string(s.area_samples) + ": " + std::move(w);
+        return false;
+    };
+    if (s.technique == Technique::None) return no("no shadows to sample (--technique none)");
+    if (s.aov != Aov::Color && s.aov != Aov::Visibility)
+        return no("--aov " + std::string(to_string(s.aov)) + " shows one hard sample, the light's centre");
+    if (!(c.light.radius > 0.0f)) return no("the light has no radius (--light-radius), so one sample is the whole light");
+    return true;
+}
+
+// Everything the accumulated visibility depends on: the camera, the light, every object, the
+// settings (but how many samples a frame adds, and what is shown from them), the image's size.
+std::string area_key(const PlanContext& c) {
+    ContentKey key;
+    key.add(c.plan.camera.view_proj);
+    const scene::Light& l = c.light;
+    key.add(l.type);
+    key.add(l.position);
+    key.add(l.direction);
+    key.add(l.radius);
+    key.add(l.spot_outer_cone);
+    for (int i : c.drawable) {
+        const scene::Object& o = c.scene.objects[static_cast<size_t>(i)];
+        key.add(i);
+        key.add(o.world);
+        key.add(o.mesh);
+        key.add(o.casts_shadow);
+        key.add(o.receives_shadow);
+    }
+    Settings s = c.settings;
+    s.area_per_frame = 0;
+    s.aov = Aov::Color;
+    const std::string args = to_args(s);
+    key.add(args.data(), args.size());
+    key.add(c.inputs.output.width);
+    key.add(c.inputs.output.height);
+    return key.str();
+}
+
+void area_lookup(PlanContext& c, Pass& cam, std::vector<CameraItem>& items) {
+    const int r = c.plan.resource_index(kAreaLight);
+    const AreaStats& a = *c.plan.area;
+    const TargetRef& t = c.camera_target;
+    const std::uint32_t bit = 1u << cam.bindings.size();
+    cam.bindings.push_back({"light samples",
+                            {{"u_area", kAreaUnit},
+                             {"u_area_window", glm::vec4(static_cast<float>(t.x), static_cast<float>(t.y),
+                                                         1.0f / static_cast<float>(t.width), 1.0f / static_cast<float>(t.height))},
+                             {"u_area_scale", 255.0f / static_cast<float>(std::max(a.done, 1))}},
+                            {{kAreaUnit, r}}});
+    for (CameraItem& it : items) {
+        if (!c.scene.objects[static_cast<size_t>(it.object)].receives_shadow) continue;
+        it.features.area_lookup = true;
+        it.bindings |= bit;
+    }
+    cam.detail += ", visibility averaged over " + std::to_string(a.done) + " of " + std::to_string(a.total) +
+                  " light samples";
+}
+
+// The frame with --area-samples N: for each light sample not yet in the accumulation, the hard
+// technique's visibility AOV from that point of the light into "area-sample" (its own passes:
+// shadow map, stencil, volumes) and one count added where it is lit into "area-light"; then the
+// camera pass shading with the average. A still frame's accumulation is kept; with area_per_frame
+// K a frame adds at most K samples.
+void plan_area(Planning& p, bool stencil) {
+    PlanContext& c = p.ctx;
+    const Settings& s = c.settings;
+    const Output& out = c.inputs.output;
+    AreaStats a;
+    a.total = s.area_samples;
+    a.key = area_key(c);
+    int start = 0;
+    if (c.previous && c.previous->area && c.previous->area->key == a.key && c.previous->area->total == a.total)
+        start = c.previous->area->done;
+    a.done = s.area_per_frame > 0 ? std::min(a.total, start + s.area_per_frame) : a.total;
+    a.added = a.done - start;
+    p.plan.area = a;
+
+    ResourceDesc acc;
+    acc.name = kAreaLight;
+    acc.width = out.width;
+    acc.height = out.height;
+    const int acc_r = c.add_resource(acc, a.key + "/" + std::to_string(a.done),
+                                     "lit light samples counted per pixel (one channel per sample mod 4)");
+    if (a.added > 0) {
+        ResourceDesc one = texture_desc(Output::texture(kAreaSample, out.width, out.height, gl::Sampling::Nearest,
+                                                        gl::Wrap::Clamp),
+                                        c.caps, stencil);
+        const int one_r = c.add_resource(one, "", "one light sample's visibility");
+        Settings hard = s;
+        hard.aov = Aov::Visibility;
+        hard.area_samples = 1;
+        // The light's axis: from it towards the middle of what casts and receives shadows.
+        const scene::Bounds b = shadowed_bounds(c.scene);
+        const glm::vec3 axis = c.light.type == scene::LightType::Directional || b.empty()
+                                   ? c.light.direction
+                                   : b.center() - c.light.position;
+        for (int k = start; k < a.done; ++k) {
+            // No previous plan: a sample's shadow map is never taken for another's.
+            PlanContext sc{c.scene, hard, c.caps, c.inputs, nullptr, p.plan,
+                           shadow::area_light_sample(c.light, k, axis), c.drawable, c.casters, c.depth_path,
+                           {one_r, out.width, out.height, 0, 0, false}};
+            p.module.before_camera(sc);
+            Pass cam = camera_pass(sc, p.module, stencil);
+            cam.name = "area-camera";
+            c.add_pass(std::move(cam));
+            p.module.after_camera(sc);
+
+            Pass add;
+            add.name = "area-add";
+            add.module = "area";
+            add.target = {acc_r, out.width, out.height, 0, 0, false};
+            if (k == 0) add.clear = Clear{glm::vec4(0.0f), false, false};
+            add.state.depth_test = add.state.depth_write = false;
+            add.state.cull = gl::Cull::None;
+            add.state.blend = gl::Blend::Add;
+            add.object_uniforms = ObjectUniforms::None;
+            glm::vec4 channel(0.0f);
+            channel[k % 4] = 1.0f / 255.0f;
+            add.bindings.push_back({"light sample", {{"u_sample", kAreaUnit}, {"u_channel", channel}}, {{kAreaUnit, one_r}}});
+            Draw d;
+            d.fullscreen = true;
+            d.variant = area_add_variant();
+            d.bindings = 1u;
+            add.draws.push_back(std::move(d));
+            char detail[96];
+            std::snprintf(detail, sizeof detail, "light sample %d of %d counted in channel %c", k + 1, a.total,
+                          "rgba"[k % 4]);
+            add.detail = detail;
+            c.add_pass(std::move(add));
+        }
+    }
+    Pass cam = camera_pass(c, technique_module(Technique::None), false, area_lookup);
+    c.add_pass(std::move(cam));
+    // The samples' resources (the shadow map) hold the last sample's content, not the first's
+    // whose key they were declared with: nothing may reuse them.
+    for (PlannedResource& r : p.plan.resources)
+        if (r.desc.name != kAreaLight) r.content.clear();
+}
 
 }  // namespace
 
@@ -364,30 +546,14 @@ FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& cap
         c.camera_target = {c.add_resource(texture_desc(out, caps, stencil), "", "the camera's image"), out.width,
                            out.height, 0, 0, false};
 
-    p.module.before_camera(c);
-    if (!p.module.own_view(c)) {
-        Pass cam;
-        cam.name = "camera";
-        cam.module = "frame";
-        cam.target = c.camera_target;
-        cam.clear = Clear{s.aov == Aov::Visibility ? kWhite : kBackground, true, stencil};
-        cam.bindings = c.lit_bindings();
-        std::vector<CameraItem> items;
-        const std::uint32_t all = (1u << cam.bindings.size()) - 1u;
-        for (int i : c.drawable) {
-            if (p.module.keeps_out_of_camera(c, i)) continue;
-            cam.draws.push_back(c.object_draw(i));
-            items.push_back({i, c.base_features(cam.draws.back()), all});
-        }
-        cam.detail = p.plan.output + ", " + std::to_string(cam.draws.size()) + " object(s)";
-        p.module.shade(c, cam, items);
-        for (size_t i = 0; i < items.size(); ++i) {
-            cam.draws[i].variant = lit_variant(items[i].features);
-            cam.draws[i].bindings = items[i].bindings;
-        }
-        if (s.aov == Aov::Visibility) cam.detail += ", visibility AOV";
-        c.add_pass(std::move(cam));
+    std::string why;
+    if (area_applies(c, &why)) {
+        plan_area(p, stencil);
+        return std::move(p.plan);
     }
+    if (!why.empty()) p.plan.notes.push_back(why);
+    p.module.before_camera(c);
+    if (!p.module.own_view(c)) c.add_pass(camera_pass(c, p.module, stencil));
     p.module.after_camera(c);
     return std::move(p.plan);
 }

@@ -208,6 +208,15 @@ struct VolumeStats {
     double fill_per_pixel = 0.0;  // fill / the image's pixels
 };
 
+// Heckbert and Herf's soft shadows (--area-samples N): how far the accumulation of light samples
+// has come. A still frame keeps what earlier frames added (progressive with --area-per-frame).
+struct AreaStats {
+    int total = 0;          // samples asked for
+    int done = 0;           // in the accumulation after this frame
+    int added = 0;          // drawn by this frame (0: the accumulation was complete and still)
+    std::string key;        // what the accumulation depends on (camera, light, objects, settings)
+};
+
 struct FramePlan {
     Settings settings;
     std::string output;  // "offscreen 512x512", "window 800x600", "texture w09p2b 1024x1024"
@@ -219,6 +228,7 @@ struct FramePlan {
     // With it: the share of the map (0..1) covered by the receivers the camera sees.
     std::optional<float> texel_use;
     std::optional<VolumeStats> volumes;  // with technique volumes
+    std::optional<AreaStats> area;       // with --area-samples > 1 and a light with a radius
 
     int resource_index(std::string_view name) const;  // -1 when absent
     const PlannedResource* resource(std::string_view name) const;

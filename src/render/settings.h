@@ -49,6 +49,9 @@ std::string_view to_string(MapFaces f);
 std::string_view to_string(LightFit f);
 std::string_view to_string(VolumeMethod m);
 
+// Heckbert-Herf accumulates one count per light sample in a channel of an RGBA8 target: 4 x 255.
+inline constexpr int kMaxAreaSamples = 1020;
+
 struct Settings {
     Technique technique = Technique::ShadowMap;
     shadow::Encoding encoding = shadow::Encoding::RGBA;
@@ -64,6 +67,17 @@ struct Settings {
     VolumeMethod volume_method = VolumeMethod::Auto;
     bool show_volumes = false;  // the volumes drawn translucent over the image
     Aov aov = Aov::Color;
+    // The light's size (scene::Light::radius) instead of the scene's: world units for point and
+    // spot lights, radians for a directional one; 0 a point light.
+    std::optional<float> light_radius;
+    // --filter pcss: blocker-search taps and filter taps (Vogel discs turned per pixel).
+    int pcss_search = 16;
+    int pcss_taps = 16;
+    // Heckbert and Herf: the technique run for this many points on the light, the visibilities
+    // accumulated (1: the light's centre only, the hard shadow). With area_per_frame > 0 a still
+    // frame adds that many per frame until all are in (progressive); 0: all in one frame.
+    int area_samples = 1;
+    int area_per_frame = 0;
 
     // The constant bias: with bias_auto the quantum part, else the chosen one or the sheet's.
     float effective_bias() const {

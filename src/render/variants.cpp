@@ -22,6 +22,7 @@ const char* filter_define(shadow::Filter f) {
         case shadow::Filter::Hard: return "FILTER_HARD";
         case shadow::Filter::PCF2x2: return "FILTER_PCF2X2";
         case shadow::Filter::PCF4x4: return "FILTER_PCF4X4";
+        case shadow::Filter::PCSS: return "FILTER_PCSS";
     }
     return "FILTER_HARD";
 }
@@ -53,6 +54,7 @@ std::string Variant::name() const {
 }
 
 std::vector<std::string> pcf_kernel_defines(shadow::Filter f, shadow::PcfKernel kernel) {
+    if (f == shadow::Filter::PCSS) return {};  // its own loops (shadow.glsl), sized per fragment
     const auto taps = shadow::pcf_offsets(f);
     // The sum of F over the taps `pick` keeps, in pcf_offsets' order, as a function-like macro.
     const auto sum_of = [&](const std::string& name, auto pick) {
@@ -78,13 +80,18 @@ Variant lit_variant(const LitFeatures& f) {
     if (f.shadow_map) {
         v.defines = {"SHADOW_MAP", encoding_define(f.encoding), filter_define(f.filter)};
         for (auto& d : pcf_kernel_defines(f.filter, f.pcf_kernel)) v.defines.push_back(std::move(d));
-        if (f.bias_auto) {
-            v.defines.emplace_back("BIAS_AUTO");
-            if (f.light_perspective) v.defines.emplace_back("LIGHT_PERSPECTIVE");
+        const bool pcss = f.filter == shadow::Filter::PCSS;
+        if (pcss) {
+            v.defines.push_back("PCSS_SEARCH_TAPS " + std::to_string(f.pcss_search));
+            v.defines.push_back("PCSS_FILTER_TAPS " + std::to_string(f.pcss_taps));
         }
+        if (f.bias_auto) v.defines.emplace_back("BIAS_AUTO");
+        if (f.light_perspective && (f.bias_auto || pcss)) v.defines.emplace_back("LIGHT_PERSPECTIVE");
         if (f.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
     } else if (f.in_shadow) {
         v.defines = {"IN_SHADOW"};
+    } else if (f.area_lookup) {
+        v.defines = {"AREA_LOOKUP"};
     }
     if (f.textured) v.defines.emplace_back("TEXTURED");
     if (f.spot) v.defines.emplace_back("LIGHT_SPOT");
@@ -110,6 +117,8 @@ Variant probe_variant() { return {"light_depth.vert", "probe.frag", {}}; }
 
 Variant volume_variant() { return {"volume.vert", "probe.frag", {}}; }
 
+Variant area_add_variant() { return {"light_depth.vert", "area_add.frag", {}}; }
+
 Variant ramp_variant(shadow::Encoding e, const DepthPath& path) {
     Variant v{"light_depth.vert", "ramp.frag", {encoding_define(e)}};
     if (path.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
@@ -124,22 +133,27 @@ std::vector<Variant> all_variants() {
     LitFeatures planar;
     planar.in_shadow = true;
     shadowing.push_back(planar);
+    LitFeatures area;
+    area.area_lookup = true;
+    shadowing.push_back(area);
     for (auto e : shadow::kAllEncodings)
         for (auto f : shadow::kAllFilters)
             for (auto k : shadow::kAllPcfKernels) {
                 if (k != shadow::PcfKernel::Full && !shadow::pcf_early_exit_applies(f)) continue;  // the same variant
-                for (int bias = 0; bias < 3; ++bias)  // constant, auto orthographic, auto perspective
-                    for (bool mediump : {false, true}) {
-                        LitFeatures sm;
-                        sm.shadow_map = true;
-                        sm.encoding = e;
-                        sm.filter = f;
-                        sm.pcf_kernel = k;
-                        sm.bias_auto = bias > 0;
-                        sm.light_perspective = bias == 2;
-                        sm.mediump = mediump;
-                        shadowing.push_back(sm);
-                    }
+                for (bool bias_auto : {false, true})
+                    for (bool perspective : {false, true})  // the light's projection: auto bias's slope, PCSS's cone
+                        for (bool mediump : {false, true}) {
+                            if (perspective && !bias_auto && f != shadow::Filter::PCSS) continue;  // the same variant
+                            LitFeatures sm;
+                            sm.shadow_map = true;
+                            sm.encoding = e;
+                            sm.filter = f;
+                            sm.pcf_kernel = k;
+                            sm.bias_auto = bias_auto;
+                            sm.light_perspective = perspective;
+                            sm.mediump = mediump;
+                            shadowing.push_back(sm);
+                        }
             }
     for (LitFeatures base : shadowing)
         for (int bits = 0; bits < 8; ++bits) {
@@ -159,6 +173,15 @@ std::vector<Variant> all_variants() {
         }
     out.push_back(probe_variant());
     out.push_back(volume_variant());
+    out.push_back(area_add_variant());
+    // PCSS's tap counts, each once (the loops' bounds).
+    for (int n : {1, 8, 32, 64}) {
+        LitFeatures p;
+        p.shadow_map = true;
+        p.filter = shadow::Filter::PCSS;
+        p.pcss_search = p.pcss_taps = n;
+        out.push_back(lit_variant(p));
+    }
     return out;
 }
 

@@ -36,6 +36,8 @@ struct LitFeatures {
     bool bias_auto = false;          // receiver slope bias (with shadow_map)
     bool light_perspective = false;  // the light's projection, for bias_auto's depth slope
     bool mediump = false;            // emulate fp16 along the depth path
+    int pcss_search = 16, pcss_taps = 16;  // filter PCSS: taps of the blocker search and the filter
+    bool area_lookup = false;        // Heckbert-Herf: visibility from the accumulated light samples
 };
 
 // How the depth path is compiled on this context: the emulated precision and what the unorm8
@@ -61,6 +63,9 @@ Variant ramp_variant(shadow::Encoding e, const DepthPath& path);
 // applies, shadow::pcf_early_exit_applies) PCF_EARLY_EXIT and, instead of PCF_SUM, the same sum
 // split in two: PCF_CORNERS over the 4 corner taps and PCF_REST over the others.
 std::vector<std::string> pcf_kernel_defines(shadow::Filter f, shadow::PcfKernel kernel = shadow::PcfKernel::Full);
+
+// Heckbert-Herf: one light sample's visibility (a texture) added as a count into one channel.
+Variant area_add_variant();
 
 // Every variant the renderer can build.
 std::vector<Variant> all_variants();

@@ -359,6 +359,20 @@ private:
         warn("no camera in " + path_ + ": using a default view of the scene's bounds");
     }
 
+    // extras {"penumbra": {"radius": R}}: the light's size (scene::Light::radius); 0 when absent.
+    float light_radius_extra(const tinygltf::Value& extras) {
+        if (!extras.IsObject() || !extras.Has("penumbra")) return 0.0f;
+        const tinygltf::Value& p = extras.Get("penumbra");
+        if (!p.IsObject() || !p.Has("radius")) return 0.0f;
+        const tinygltf::Value& r = p.Get("radius");
+        const double v = r.IsNumber() ? r.GetNumberAsDouble() : -1.0;
+        if (!(v >= 0.0 && v < 1e6)) {
+            warn("the light's extras.penumbra.radius in " + path_ + " is not a number >= 0: using 0 (a point light)");
+            return 0.0f;
+        }
+        return static_cast<float>(v);
+    }
+
     void set_light(const Bounds& bounds) {
         const glm::vec3 centre = bounds.center();
         const float radius = std::max(0.5f * glm::length(bounds.max - bounds.min), 1e-3f);
@@ -373,6 +387,7 @@ private:
                                         static_cast<float>(src.color[2]));
             // Physical units (lux, candela) are passed through; the renderer decides the scale.
             light.intensity = static_cast<float>(src.intensity);
+            light.radius = light_radius_extra(src.extras);
             if (src.type == "directional") {
                 light.type = LightType::Directional;
             } else if (src.type == "spot") {

@@ -237,6 +237,7 @@ private:
 
     int add_light(const Light& l) {
         json light = {{"name", "light"}, {"color", vec_json(&l.color.x, 3)}, {"intensity", static_cast<double>(l.intensity)}};
+        if (l.radius > 0.0f) light["extras"] = {{"penumbra", {{"radius", static_cast<double>(l.radius)}}}};
         json node = {{"name", "light"}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}};
         switch (l.type) {
             case LightType::Directional: light["type"] = "directional"; break;

@@ -80,6 +80,10 @@ struct Light {
     float intensity = 1.0f;
     float spot_inner_cone = 0.0f;             // radians
     float spot_outer_cone = 0.7853982f;       // radians
+    // The light's size, for soft shadows: a sphere of this radius (world units) for point and spot
+    // lights, a sun of this angular radius (radians) for a directional one. 0: a point (hard
+    // shadows). glTF: the light's extras {"penumbra": {"radius": R}}.
+    float radius = 0.0f;
 };
 
 struct Camera {

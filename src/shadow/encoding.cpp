@@ -19,6 +19,7 @@ std::string_view to_string(Filter f) {
         case Filter::Hard: return "hard";
         case Filter::PCF2x2: return "pcf2x2";
         case Filter::PCF4x4: return "pcf4x4";
+        case Filter::PCSS: return "pcss";
     }
     return "?";
 }

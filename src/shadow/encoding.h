@@ -18,7 +18,9 @@ enum class Encoding {
 enum class Filter {
     Hard,    // one tap
     PCF2x2,  // 4 taps at +-0.5 texel
-    PCF4x4   // 16 taps at +-0.5, +-1.5 texel (Bunnell & Pellacini, GPU Gems ch. 11)
+    PCF4x4,  // 16 taps at +-0.5, +-1.5 texel (Bunnell & Pellacini, GPU Gems ch. 11)
+    PCSS     // percentage-closer soft shadows (Fernando 2005): a blocker search, then a PCF whose
+             // width follows from the light's size and the blocker's and receiver's depths
 };
 
 // How a PCF kernel with taps inside its corners (PCF 4x4) is evaluated (shadow/pcf.h).
@@ -29,7 +31,7 @@ enum class PcfKernel {
 
 // Every value, in the order they are listed to users and swept.
 inline constexpr Encoding kAllEncodings[] = {Encoding::R8, Encoding::RGBA, Encoding::DepthTex};
-inline constexpr Filter kAllFilters[] = {Filter::Hard, Filter::PCF2x2, Filter::PCF4x4};
+inline constexpr Filter kAllFilters[] = {Filter::Hard, Filter::PCF2x2, Filter::PCF4x4, Filter::PCSS};
 inline constexpr PcfKernel kAllPcfKernels[] = {PcfKernel::EarlyExit, PcfKernel::Full};
 
 std::string_view to_string(Encoding e);

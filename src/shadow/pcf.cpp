@@ -12,7 +12,8 @@ std::vector<glm::vec2> pcf_offsets(Filter filter) {
     // GPU Gems ch. 11.
     int n = 1;
     switch (filter) {
-        case Filter::Hard: return {glm::vec2(0.0f)};
+        case Filter::Hard:
+        case Filter::PCSS: return {glm::vec2(0.0f)};  // PCSS's taps: vogel_disc, scaled per fragment
         case Filter::PCF2x2: n = 2; break;
         case Filter::PCF4x4: n = 4; break;
     }
@@ -36,6 +37,28 @@ float largest_offset(Filter filter) {
 float kernel_reach_texels(Filter filter) { return largest_offset(filter) + 1.0f; }
 
 bool pcf_early_exit_applies(Filter filter) { return pcf_offsets(filter).size() > 4; }
+
+std::vector<glm::vec2> vogel_disc(int n, float rotation) {
+    std::vector<glm::vec2> out;
+    for (int i = 0; i < n; ++i) {
+        const float r = std::sqrt((static_cast<float>(i) + 0.5f) / static_cast<float>(n));
+        const float a = static_cast<float>(i) * kGoldenAngle + rotation;
+        out.emplace_back(r * std::cos(a), r * std::sin(a));
+    }
+    return out;
+}
+
+PcssRadii pcss_radii(float light_size, bool perspective, float receiver_depth, float blocker_depth, float near) {
+    // The cone from the receiver to the light's disc, where it crosses depth d: its radius in
+    // world units is size (zr - d) / zr; seen from the light's centre (a perspective map) that is
+    // size (zr - d) / (zr d) in tangent units. An orthographic (sun) map: tan(angular radius) (zr - d).
+    const auto cone = [&](float d) {
+        const float zr = receiver_depth;
+        if (!(zr > d)) return 0.0f;
+        return perspective ? light_size * (zr - d) / (zr * d) : light_size * (zr - d);
+    };
+    return {cone(near), cone(blocker_depth)};
+}
 
 bool pcf_is_corner(Filter filter, glm::vec2 offset) {
     const float reach = largest_offset(filter);

@@ -29,6 +29,24 @@ float kernel_reach_texels(Filter filter);
 // Hard has one tap and PCF 2x2's four taps are its corners, so both are the full kernel either way
 // (and their shader variants are the same).
 bool pcf_early_exit_applies(Filter filter);
+
+// PCSS's taps: n points of a Vogel (sunflower) disc of radius 1, point i at radius
+// sqrt((i + 0.5) / n) and angle i * the golden angle + rotation. The shader turns the disc by a
+// per-pixel angle (interleaved gradient noise) and scales it per fragment; the same formula here.
+inline constexpr float kGoldenAngle = 2.3999632f;
+std::vector<glm::vec2> vogel_disc(int n, float rotation = 0.0f);
+
+// PCSS's two radii for a receiver at light-eye depth receiver_depth (along the light's axis):
+// where its blockers can be (the cone from the receiver to the light's disc, at the light's near
+// plane) and the penumbra's half-width for blockers at blocker_depth (the same cone at that
+// depth), both in the map's units before the texture scale: tangent units for a perspective
+// light (light_size = its radius in world units), world units for an orthographic one
+// (light_size = tan of its angular radius). The shader computes the same (shadow.glsl).
+struct PcssRadii {
+    float search = 0.0f;
+    float penumbra = 0.0f;
+};
+PcssRadii pcss_radii(float light_size, bool perspective, float receiver_depth, float blocker_depth, float near);
 bool pcf_is_corner(Filter filter, glm::vec2 offset);
 
 // The CPU mirror of the shader's lookup: the fraction of taps where the receiver at depth z is lit

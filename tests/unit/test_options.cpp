@@ -118,7 +118,7 @@ TEST(Options, BadValuesAreNamedAndLeaveTheOptionsAlone) {
         const char* says;
     } bad[] = {
         {"encoding", "r16", "--encoding: unknown value 'r16' (r8, rgba, depthtex)"},
-        {"filter", "pcf8x8", "--filter: unknown value 'pcf8x8' (hard, pcf2x2, pcf4x4)"},
+        {"filter", "pcf8x8", "--filter: unknown value 'pcf8x8' (hard, pcf2x2, pcf4x4, pcss)"},
         {"pcf-kernel", "fast", "--pcf-kernel: unknown value 'fast' (early-exit, full)"},
         {"size", "0x100", "--size: width and height must be at least 1, got '0x100'"},
         {"size", "100", "--size: expected WIDTHxHEIGHT, got '100'"},
@@ -153,10 +153,12 @@ TEST(Options, ArgsLabelTheResult) {
     EXPECT_EQ(to_args(o),
               "--scene teapot --time 0 --size 512x512 --encoding r8 --filter hard --pcf-kernel early-exit "
               "--map-size 1024 --bias auto --map-faces auto --light-fit tight --precision highp --volume-method auto "
-              "--show-volumes off --aov color --technique shadowmap --eye scene --frames 1");
+              "--show-volumes off --light-radius scene --pcss-search 16 --pcss-taps 16 --area-samples 1 --area-per-frame 0 "
+              "--aov color --technique shadowmap --eye scene --frames 1");
     EXPECT_EQ(to_args(o.settings),
               "--encoding r8 --filter hard --pcf-kernel early-exit --map-size 1024 --bias auto --map-faces auto "
-              "--light-fit tight --precision highp --volume-method auto --show-volumes off --aov color --technique shadowmap");
+              "--light-fit tight --precision highp --volume-method auto --show-volumes off --light-radius scene "
+              "--pcss-search 16 --pcss-taps 16 --area-samples 1 --area-per-frame 0 --aov color --technique shadowmap");
 }
 
 TEST(Options, AcceptedValuesAndListsComeFromTheTable) {

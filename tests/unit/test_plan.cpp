@@ -271,6 +271,10 @@ TEST_F(PlanTest, ThePlanPrintsAsJsonWithEveryPassAndResource) {
 
 TEST(PcfKernel, TheShaderAndTheCpuMirrorShareTheTaps) {
     for (auto f : shadow::kAllFilters) {
+        if (f == shadow::Filter::PCSS) {  // its taps are loops in shadow.glsl, sized per fragment
+            EXPECT_TRUE(render::pcf_kernel_defines(f).empty());
+            continue;
+        }
         const auto taps = shadow::pcf_offsets(f);
         const auto defines = render::pcf_kernel_defines(f);
         ASSERT_EQ(defines.size(), 2u);

@@ -208,11 +208,20 @@ public:
                    {"u_texmapscale", glm::vec2(texel, texel)},
                    {"u_bias", s.effective_bias()}},
                   {{kShadowUnit, r}}};
-        if (s.bias_auto) {
+        const bool pcss = s.filter == shadow::Filter::PCSS;
+        if (s.bias_auto || pcss)
             // 1/P[0][0] and 1/P[1][1]: tan of the half-angles (perspective) or the half-extents
             // (orthographic) of the light's frustum.
-            b.uniforms.push_back({"u_light_rotation", glm::mat3(f.view)});
             b.uniforms.push_back({"u_bias_slope", glm::vec4(1.0f / f.proj[0][0], 1.0f / f.proj[1][1], f.znear, f.zfar)});
+        if (pcss) {
+            // The light's size as the cone's formula takes it (shadow::pcss_radii), and the
+            // largest radius searched: an eighth of the map.
+            const float radius = c.light.radius;
+            const float size = f.perspective ? radius : std::tan(std::min(radius, 1.5f));
+            b.uniforms.push_back({"u_pcss", glm::vec2(size, 0.125f / texel)});
+        }
+        if (s.bias_auto) {
+            b.uniforms.push_back({"u_light_rotation", glm::mat3(f.view)});
             b.uniforms.push_back({"u_bias_kernel", glm::vec2(2.0f * texel, shadow::kernel_reach_texels(s.filter))});
             // The window's middle (tangents) of an asymmetric perspective frustum: P[2][0] / P[0][0].
             if (f.perspective)
@@ -230,11 +239,16 @@ public:
             lf.bias_auto = s.bias_auto;
             lf.light_perspective = f.perspective;
             lf.mediump = s.precision == shadow::Precision::Mediump;
+            lf.pcss_search = s.pcss_search;
+            lf.pcss_taps = s.pcss_taps;
             it.bindings |= bit;
         }
         // The kernel is named where it makes a difference (PCF 4x4): "pcf4x4 early-exit", "pcf4x4 full".
-        const std::string kernel =
+        std::string kernel =
             shadow::pcf_early_exit_applies(s.filter) ? " " + std::string(shadow::to_string(s.pcf_kernel)) : "";
+        if (pcss)
+            kernel = " (" + std::to_string(s.pcss_search) + " search + " + std::to_string(s.pcss_taps) +
+                     " filter taps, light radius " + number(static_cast<double>(c.light.radius)) + ")";
         cam.detail += ", shadow lookup " + std::string(shadow::to_string(s.filter)) + kernel + " " +
                       std::string(shadow::to_string(s.encoding)) + ", bias " +
                       (s.bias_auto ? "auto (" + number(static_cast<double>(s.effective_bias())) + " + slope)"

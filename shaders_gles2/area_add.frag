@@ -1,0 +1,15 @@
+#version 100
+// Heckbert and Herf's accumulation, one light sample at a time: where the sample's visibility image
+// (the hard technique's visibility AOV, lit 1, shadowed 0) is lit, add one count (1/255, exact in
+// unorm8) to one channel of the accumulation target (blending ONE, ONE). Sample k counts in channel
+// k mod 4, so 4 x 255 samples fit in RGBA8 with no rounding; the camera pass divides by their number
+// (lit.frag, AREA_LOOKUP). GLES2 has no accumulation buffer and no float target everywhere.
+#include "precision.glsl"
+
+uniform sampler2D u_sample;  // this sample's visibility
+uniform vec4 u_channel;      // 1/255 in the channel this sample counts in, 0 elsewhere
+varying vec2 v_uv;
+
+void main() {
+    gl_FragColor = texture2D(u_sample, v_uv).r >= 0.5 ? u_channel : vec4(0.0);
+}
