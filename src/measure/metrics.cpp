@@ -15,7 +15,7 @@ Score score(const std::vector<std::uint8_t>& rendered, const std::vector<std::ui
     const bool with_soft = soft && !soft->empty();
     if (with_soft && soft->size() != n) throw std::invalid_argument("metrics: the area-light truth differs in size");
     Score s;
-    double abs_sum = 0.0, soft_sum = 0.0;
+    double abs_sum = 0.0, soft_sum = 0.0, penumbra_sum = 0.0;
     for (size_t i = 0; i < n; ++i) {
         if (!valid[i]) continue;
         ++s.valid;
@@ -26,7 +26,15 @@ Score score(const std::vector<std::uint8_t>& rendered, const std::vector<std::ui
         if (!dark && !lit) ++s.false_lit;
         const double v = rendered[i] / 255.0;
         abs_sum += std::fabs(v - (lit ? 1.0 : 0.0));
-        if (with_soft) soft_sum += std::fabs(v - static_cast<double>((*soft)[i]));
+        if (with_soft) {
+            const float t = (*soft)[i];
+            const double d = std::fabs(v - static_cast<double>(t));
+            soft_sum += d;
+            if (t > 0.0f && t < 1.0f) {
+                ++s.penumbra;
+                penumbra_sum += d;
+            }
+        }
     }
     if (s.valid > 0) {
         const double total = static_cast<double>(s.valid);
@@ -38,6 +46,8 @@ Score score(const std::vector<std::uint8_t>& rendered, const std::vector<std::ui
     } else if (with_soft) {
         s.mae_soft_pct = 0.0;
     }
+    if (with_soft)
+        s.mae_penumbra_pct = s.penumbra > 0 ? 100.0 * penumbra_sum / static_cast<double>(s.penumbra) : 0.0;
     return s;
 }
 

@@ -14,6 +14,9 @@
 //    counts the partial greys. Against the hard-shadow truth it measures how far the filter
 //    strays from the exact answer for this point light; against an area-light truth (optional)
 //    it measures how well the filter's blur imitates a real penumbra of a stated light size.
+//  - mean absolute error inside the penumbra (with an area-light truth): the same mean over only
+//    the valid pixels whose area-light visibility is strictly between 0 and 1 (partly lit), so a
+//    large lit or shadowed area around a small penumbra does not dilute it; and their count.
 #pragma once
 
 #include <cstddef>
@@ -33,6 +36,10 @@ struct Score {
     double error_pct = 0.0;     // false_shadow_pct + false_lit_pct
     double mae_pct = 0.0;       // mean |rendered - hard truth|, percent
     double mae_soft_pct = -1.0; // mean |rendered - area-light truth|, percent; -1 without one
+    // Over the valid pixels with 0 < area-light truth < 1 only (the penumbra): their count and the
+    // mean |rendered - area-light truth| there, percent (0 when there are none); -1 without one.
+    std::size_t penumbra = 0;
+    double mae_penumbra_pct = -1.0;
 };
 
 inline constexpr std::uint8_t kDarkBelow = 128;

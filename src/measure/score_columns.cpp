@@ -55,6 +55,20 @@ const std::vector<ScoreColumn>& score_columns() {
              return s.mae_soft_pct >= 0.0 ? std::optional<double>(s.mae_soft_pct) : std::nullopt;
          },
          [](Score& s, double v) { s.mae_soft_pct = v; }},
+        {"penumbra_pixels", "penumbra pixels", 0, -1, true, false,
+         "valid pixels inside the penumbra: area-light truth strictly between 0 and 1 (partly lit); absent without an "
+         "area-light truth",
+         [](const Score& s) -> std::optional<double> {
+             return s.mae_penumbra_pct >= 0.0 ? std::optional<double>(static_cast<double>(s.penumbra)) : std::nullopt;
+         },
+         [](Score& s, double v) { s.penumbra = static_cast<std::size_t>(std::max(0.0, std::round(v))); }},
+        {"mae_penumbra_pct", "in penumbra %", 4, -1, true, false,
+         "mean |rendered visibility - area-light truth| over the valid pixels whose area-light truth is strictly "
+         "between 0 and 1 (the penumbra only), %; 0 when there are none; absent without an area-light truth",
+         [](const Score& s) -> std::optional<double> {
+             return s.mae_penumbra_pct >= 0.0 ? std::optional<double>(s.mae_penumbra_pct) : std::nullopt;
+         },
+         [](Score& s, double v) { s.mae_penumbra_pct = v; }},
     };
     return columns;
 }

@@ -64,6 +64,28 @@ TEST(Metrics, AgainstAnAreaLight) {
     EXPECT_DOUBLE_EQ(score(Bytes{0}, Bytes{0}, Bytes{1}, &empty).mae_soft_pct, -1.0);
 }
 
+// The penumbra-only error: over the valid pixels whose area-light truth is strictly between 0 and
+// 1; fully lit (1), fully shadowed (0) and invalid pixels are left out, however wrong they are.
+TEST(Metrics, InsideThePenumbraOnly) {
+    const std::vector<float> soft{0.25f, 0.75f, 1.0f, 0.0f, 0.5f, 0.5f};
+    //                 penumbra: yes    yes    no (lit) no (shadow) yes  yes but not valid
+    const Bytes rendered{0, 255, 0, 255, 255, 0};
+    const Bytes valid{1, 1, 1, 1, 1, 0};
+    const Score s = score(rendered, Bytes{1, 1, 1, 0, 1, 1}, valid, &soft);
+    EXPECT_EQ(s.penumbra, 3u);
+    // |0 - 0.25| + |1 - 0.75| + |1 - 0.5| = 1, over 3 pixels.
+    EXPECT_NEAR(s.mae_penumbra_pct, 100.0 / 3.0, 1e-9);
+    // Over all 5 valid pixels: 1 + |0 - 1| + |1 - 0| = 3.
+    EXPECT_NEAR(s.mae_soft_pct, 60.0, 1e-9);
+    // No penumbra at all: 0, and 0 pixels; no area-light truth: absent.
+    const std::vector<float> hard{1.0f, 0.0f};
+    const Score h = score(Bytes{0, 0}, Bytes{1, 0}, Bytes{1, 1}, &hard);
+    EXPECT_EQ(h.penumbra, 0u);
+    EXPECT_DOUBLE_EQ(h.mae_penumbra_pct, 0.0);
+    EXPECT_NEAR(h.mae_soft_pct, 50.0, 1e-9);
+    EXPECT_DOUBLE_EQ(score(Bytes{0}, Bytes{0}, Bytes{1}).mae_penumbra_pct, -1.0);
+}
+
 TEST(Metrics, SizesMustAgree) {
     EXPECT_THROW(score(Bytes{0, 0}, Bytes{0}, Bytes{1, 1}), std::invalid_argument);
     EXPECT_THROW(score(Bytes{0}, Bytes{0}, Bytes{1, 1}), std::invalid_argument);

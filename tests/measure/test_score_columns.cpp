@@ -54,7 +54,11 @@ Score example(bool soft) {
     s.false_lit_pct = 100.0 * 11 / 8239;
     s.error_pct = s.false_shadow_pct + s.false_lit_pct;
     s.mae_pct = 0.93921;
-    if (soft) s.mae_soft_pct = 0.99372;
+    if (soft) {
+        s.mae_soft_pct = 0.99372;
+        s.penumbra = 412;
+        s.mae_penumbra_pct = 7.12345;
+    }
     return s;
 }
 
