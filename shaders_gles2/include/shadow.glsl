@@ -142,7 +142,7 @@ float shadowVisibility(vec4 shadowCoord, vec3 normal) {
     vec2 start = vec2(cos(angle), sin(angle));
 
     // (1) Blockers: taps nearer the light than the receiver (by the bias of a small kernel).
-    vec2 search = max(coneTexels(zr, u_bias_slope.z), vec2(0.5));
+    vec2 search = coneTexels(zr, u_bias_slope.z);
     float bias = shadowBias(normal, c);
     float blockers = 0.0;
     float sum = 0.0;
