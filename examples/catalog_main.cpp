@@ -41,7 +41,7 @@ std::string catalog_json() {
     std::vector<std::string_view> named;
     for (size_t i = 0; i < exercise_list().size(); ++i) {
         const ExerciseInfo& x = exercise_list()[i];
-        static const char* kinds[] = {"toggle", "radio", "select", "checkbox", "number"};
+        static const char* kinds[] = {"toggle", "radio", "select", "checkbox", "number", "slider"};
         j += std::string(i ? "," : "") + "{\"name\":" + json_quote(x.name) + ",\"title\":" + json_quote(x.title) +
              ",\"text\":" + json_quote(x.text) + ",\"brief\":" + json_quote(x.brief) +
              ",\"canvas\":" + json_quote(x.canvas) + ",\"technique\":" + json_quote(render::to_string(x.technique)) +
@@ -52,7 +52,8 @@ std::string catalog_json() {
             for (size_t v = 0; v < k.values.size(); ++v) values += std::string(v ? "," : "") + json_quote(k.values[v]);
             j += std::string(c ? "," : "") + "{\"option\":" + json_quote(k.option) + ",\"group\":" + json_quote(k.group) +
                  ",\"kind\":" + json_quote(kinds[static_cast<int>(k.kind)]) + ",\"values\":" + values +
-                 "],\"label\":" + json_quote(k.label) + ",\"hint\":" + json_quote(k.hint) + "}";
+                 "],\"label\":" + json_quote(k.label) + ",\"hint\":" + json_quote(k.hint) +
+                 ",\"min\":" + render::json_number(k.min) + ",\"max\":" + render::json_number(k.max) + "}";
             if (std::find(named.begin(), named.end(), k.option) == named.end()) named.push_back(k.option);
         }
         j += "]}";

@@ -1,4 +1,4 @@
-// penumbra-desktop: the course exercises W09P1, W09P2a, W09P2b, W09P2c and volumes in a desktop window
+// penumbra-desktop: the course exercises W09P1, W09P2a, W09P2b, W09P2c, volumes and soft in a desktop window
 // (GLFW, GLES 2 through EGL), with keys for the same controls the web pages have.
 //
 //   penumbra-desktop [--exercise NAME] [--size WxH] [--frames N] [--screenshot FILE.png]
@@ -54,10 +54,12 @@ void print_help() {
         if (o.info.part == render::OptionPart::Technique && o.info.name != "technique")
             line(std::string(o.info.name), o.info.type == render::OptionType::Choice ? render::accepted_values(o.info) : "V",
                  o.info.help);
+    const render::OptionInfo& technique = render::option_info("technique");  // the soft exercise's control
+    line(std::string(technique.name), render::accepted_values(technique), "soft: " + std::string(technique.help));
     const render::OptionInfo& eye = render::option_info("eye");  // a job option the exercises take
     line(std::string(eye.name), render::accepted_values(eye), eye.help);
     std::printf(
-        "penumbra-desktop: the course exercises (W09, shadow volumes) in a window (GLFW, GLES 2 through EGL)\n\n"
+        "penumbra-desktop: the course exercises (W09, shadow volumes, soft shadows) in a window (GLFW, GLES 2 through EGL)\n\n"
         "  --exercise E        %s (default w09p1)\n"
         "  --size WxH          window size (default 512x512)\n"
         "  --frames N          stop after N frames\n"
@@ -185,9 +187,12 @@ int main(int argc, char** argv) {
         }
         if (f.time_s - last_title > 0.5) {
             last_title = f.time_s;
-            char title[256];
-            std::snprintf(title, sizeof title, "penumbra: %s | %.2f ms/frame | %s",
-                          std::string(examples::exercise_info(app.exercise()).title).c_str(), app.median_ms(),
+            char samples[64] = "";
+            if (const auto& area = app.area())  // Heckbert-Herf's progress (soft shadows)
+                std::snprintf(samples, sizeof samples, " | light samples %d of %d", area->done, area->total);
+            char title[320];
+            std::snprintf(title, sizeof title, "penumbra: %s | %.2f ms/frame%s | %s",
+                          std::string(examples::exercise_info(app.exercise()).title).c_str(), app.median_ms(), samples,
                           app.query().c_str());
             window->set_title(title);
         }
@@ -212,6 +217,7 @@ int main(int argc, char** argv) {
     });
     std::printf("%ld frames, median %.3f ms/frame (draw + wait, last %zu frames); %s\n", app.frames_drawn(),
                 app.median_ms(), static_cast<size_t>(std::min(60L, app.frames_drawn())), app.query().c_str());
+    if (const auto& area = app.area()) std::printf("light samples %d of %d\n", area->done, area->total);
     if (args.verbose) std::printf("%s", app.last_plan().c_str());
     return status;
 }

@@ -139,6 +139,12 @@ const char* penumbra_state() {
     // bias=auto's constant part for the chosen encoding and precision (the page's bias control says it).
     j += ",\"autoBias\":" + json_number(static_cast<double>(shadow::auto_bias_constant(s.encoding, s.precision)));
     j += ",\"mapSize\":" + std::to_string(s.map_size);
+    // Heckbert-Herf's light samples in the last frame: how many are in the average, of how many.
+    if (const auto& area = a.area())
+        j += ",\"area\":{\"done\":" + std::to_string(area->done) + ",\"total\":" + std::to_string(area->total) +
+             ",\"added\":" + std::to_string(area->added) + "}";
+    else
+        j += ",\"area\":null";
     j += ",\"ms\":" + json_number(a.median_ms());
     j += ",\"frames\":" + std::to_string(a.frames_drawn());
     j += ",\"lightTime\":" + json_number(a.light_time());

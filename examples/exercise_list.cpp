@@ -39,6 +39,12 @@ std::vector<render::Option<Toggles>> make_toggles() {
                         "the shadow map, scaled for viewing", kOnOff),
                  [](Toggles& g, std::string_view v) { g.map_view = v == "on"; },
                  [](const Toggles& g) { return std::string(g.map_view ? "on" : "off"); }});
+    t.push_back({toggle("reference",
+                        "soft: the reference instead of the method chosen: Heckbert-Herf, 256 light samples, "
+                        "converging while nothing moves",
+                        "Reference: 256 light samples (Heckbert-Herf)", kOnOff),
+                 [](Toggles& g, std::string_view v) { g.reference = v == "on"; },
+                 [](const Toggles& g) { return std::string(g.reference ? "on" : "off"); }});
     return t;
 }
 
@@ -108,6 +114,33 @@ std::vector<ExerciseInfo> make_list() {
            "the eye inside the teapot's shadow, looking across it"},
           {"aov", "View", K::Select, {"color", "visibility", "stencil-count"}, {},
            "stencil count: 1 blue, 2 green, 3 yellow, 4 orange, 5 magenta, 6 white; below zero red"}}},
+        {Exercise::Soft, "soft", "Soft shadows: lights with a size",
+         "A real light has a size: seen from a point in its penumbra, part of it is hidden behind the teapot. Hard "
+         "shadow mapping and PCF's fixed blur ignore that. PCSS estimates it from the shadow map: a blocker search "
+         "finds the average depth of what lies between the point and the light, the light's size and that depth give "
+         "the penumbra's width, and PCF filters over it. Heckbert-Herf renders the hard shadow from many points on "
+         "the light and averages them: correct in the limit, and it works with each technique (shadow map, planar, "
+         "shadow volumes); while nothing moves, each frame adds light samples, so the picture converges. The scene "
+         "stands still (turn the light or the jump on to see a frame restart). What to look for: the penumbra widens "
+         "away from where the teapot touches the table: compare PCF's constant blur with PCSS and with the averaged "
+         "light samples, and flip to the reference.",
+         "Soft shadows from a light with a size: PCF's constant blur, PCSS and Heckbert-Herf's averaged light "
+         "samples against a 256-sample reference, converging while the scene stands still.",
+         "The teapot on the table with soft shadows from a light with a size",
+         render::Technique::ShadowMap,
+         {light, jump,
+          {"light-radius", "Light", K::Slider, {}, {}, "world units; 0 is a point light", 0.0, 1.0},
+          {"filter", "Method", K::Select, {"hard", "pcf4x4", "pcss"}, {}, "PCSS: the penumbra from the light's size"},
+          {"area-samples", "Method", K::Select, {}, {},
+           "Heckbert-Herf: more than 1 averages that many hard shadows (the filter goes back to hard)"},
+          {"area-per-frame", "Method", K::Checkbox, {"4", "0"}, "Converge while still",
+           "4 light samples added per frame while nothing moves; off: all of them every frame"},
+          {"reference", "Method", K::Checkbox, {"on", "off"}, {}, "flip between it and the method chosen"},
+          {"pcss-search", "PCSS", K::Select, {}, {}, "taps finding the blockers' depth"},
+          {"pcss-taps", "PCSS", K::Select, {}, {}, "taps filtering over the penumbra"},
+          {"technique", "Shadows", K::Select, {}, {}, "Heckbert-Herf averages any of them; PCSS filters a shadow map"},
+          {"aov", "View", K::Select, {"color", "visibility"}}},
+         {{"light", "off"}, {"jump", "off"}, {"light-radius", "0.3"}, {"filter", "pcss"}, {"area-per-frame", "4"}}},
     };
 }
 
@@ -121,6 +154,10 @@ const std::vector<render::Option<Toggles>>& toggle_table() {
 const std::vector<ExerciseInfo>& exercise_list() {
     static const auto list = make_list();
     return list;
+}
+
+bool offers(const ExerciseInfo& x, std::string_view option) {
+    return std::any_of(x.controls.begin(), x.controls.end(), [&](const Control& c) { return c.option == option; });
 }
 
 const ExerciseInfo& exercise_info(Exercise e) {
@@ -151,14 +188,19 @@ const std::vector<KeyBinding>& key_bindings() {
         {'O', "projection", "W09P2a: light projection perspective (point light) / orthographic (directional)"},
         {'V', "fbo-view", "W09P2b: the FBO holds the view from the light / from the camera"},
         {'E', "encoding", "W09P2c: next depth encoding (r8, rgba, depthtex where the context has it)"},
-        {'F', "filter", "W09P2c: 4x4 PCF on/off"},
+        {'F', "filter", "W09P2c: 4x4 PCF on/off (soft: hard / PCF 4x4 / PCSS)"},
         {'R', "precision", "W09P2c: precision highp / emulated mediump (fp16 along the depth path, as on a phone)"},
         {'M', "map-size", "shadow map size (W09P2b: FBO size), Shift+M backwards"},
-        {'A', "aov", "W09P2c: view colour / visibility (volumes: / stencil count)"},
+        {'A', "aov", "W09P2c, soft: view colour / visibility (volumes: / stencil count)"},
         {'S', "map-view", "W09P2c: shadow map view on/off"},
         {'Z', "volume-method", "volumes: method auto / depth-pass (zpass) / depth-fail (zfail)"},
         {'G', "show-volumes", "volumes: show the volumes on/off"},
         {'I', "eye", "volumes: the eye inside the teapot's shadow / the scene's camera"},
+        {'N', "area-samples", "soft: light samples (Heckbert-Herf) 1 / 4 / 16 / 64 / 256, Shift+N backwards"},
+        {'C', "area-per-frame", "soft: converge while still (4 light samples a frame) / all samples every frame"},
+        {'X', "reference", "soft: the reference (256 light samples) / the method chosen"},
+        {'T', "technique", "soft: next technique (shadow map, planar, volumes, ...)"},
+        {'K', "pcss-taps", "soft: PCSS filter taps 8 / 16 / 32 / 64"},
     };
     return keys;
 }

@@ -9,13 +9,14 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "render/options.h"
 
 namespace penumbra::examples {
 
-enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c, Volumes };
+enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c, Volumes, Soft };
 
 // What the controls set besides render::Settings.
 struct Toggles {
@@ -24,7 +25,12 @@ struct Toggles {
     bool ortho = false;     // projection=persp|ortho (W09P2a): ortho makes the light directional
     bool fbo_light = true;  // fbo-view=light|camera (W09P2b): what is rendered into the FBO
     bool map_view = true;   // map-view=on|off (W09P2c): the shadow map in the top right corner
+    bool reference = false; // reference=on|off (soft): Heckbert-Herf with kReferenceSamples, converging
 };
+// The soft exercise's reference: Heckbert-Herf with this many light samples, this many added per
+// still frame, whatever the method chosen.
+inline constexpr int kReferenceSamples = 256;
+inline constexpr int kReferencePerFrame = 8;
 const std::vector<render::Option<Toggles>>& toggle_table();
 
 // How a page shows an option.
@@ -34,6 +40,7 @@ enum class ControlKind {
     Select,    // a drop-down list of the choices (or an integer's presets)
     Checkbox,  // ticked: values[0], unticked: values[1]
     Number,    // a number-or-word option: a radio per word, one for a number, and the number box
+    Slider,    // a number: a slider over [min, max] of the control (within the option's range) and a number box
 };
 
 struct Control {
@@ -43,6 +50,7 @@ struct Control {
     std::vector<std::string_view> values = {};  // Select: the choices offered (empty: all); Checkbox: on, off
     std::string_view label = {};                // instead of the option's own label
     std::string_view hint = {};                 // a short note beside it
+    double min = 0.0, max = 0.0;                // Slider: its range (the number box takes the option's)
 };
 
 struct ExerciseInfo {
@@ -52,14 +60,19 @@ struct ExerciseInfo {
     std::string_view text;    // the page's paragraph under the title
     std::string_view brief;   // one line for the index page
     std::string_view canvas;  // the canvas's accessible label
-    render::Technique technique;
+    render::Technique technique;  // its technique (the default, where a control offers the technique)
     std::vector<Control> controls;
+    // Options this exercise starts with instead of the defaults (name, value), set when it is
+    // chosen and put back to the defaults when another is.
+    std::vector<std::pair<std::string_view, std::string_view>> defaults = {};
 };
+// Whether the exercise offers a control for the option.
+bool offers(const ExerciseInfo& x, std::string_view option);
 
 const std::vector<ExerciseInfo>& exercise_list();
 const ExerciseInfo& exercise_info(Exercise e);
 bool parse_exercise(std::string_view name, Exercise& out);
-std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c, volumes"
+std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c, volumes, soft"
 
 // A desktop key bound to an option: pressing it steps the option to its next value (Shift: the
 // previous one) among the values `exercise`'s control offers, or all of them.

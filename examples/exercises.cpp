@@ -22,11 +22,13 @@ constexpr const char* kFboTexture = "w09p2b";
 // The job options the exercises take: time (both clocks, paused) and the eye.
 bool exercise_job_option(std::string_view name) { return name == "time" || name == "eye"; }
 
-// Settings the pages and the desktop never take: the exercise picks the scene and the technique,
-// the canvas or the window its size, and nothing is written to a file.
-bool set_by_the_exercise(std::string_view name) {
+// Settings the pages and the desktop never take: the exercise picks the scene and the technique
+// (unless it offers a control for it), the canvas or the window its size, and nothing is written
+// to a file.
+bool set_by_the_exercise(Exercise e, std::string_view name) {
     const auto* o = render::find_option(render::option_table(), name);
-    return name == "technique" || (o && o->info.part == render::OptionPart::Job && !exercise_job_option(name));
+    if (name == "technique") return !offers(exercise_info(e), name);
+    return o && o->info.part == render::OptionPart::Job && !exercise_job_option(name);
 }
 
 std::string without_dashes(std::string err) { return err.rfind("--", 0) == 0 ? err.substr(2) : err; }
@@ -48,6 +50,7 @@ std::string setting_value(const render::Settings& s, std::string_view name) {
 
 CourseApp::CourseApp(Exercise e) : exercise_(e), course_(scene::make_course_scene()) {
     scene_camera_ = course_.scene.camera;
+    apply_defaults(e);
     // W09P2b's ground: the table quad again with uvs 0..1, so the FBO's picture lies on the table
     // once, and a white material whose texture (a 1x1 placeholder) the FBO's texture replaces.
     scene::Scene& s = course_.scene;
@@ -72,6 +75,26 @@ CourseApp::CourseApp(Exercise e) : exercise_(e), course_(scene::make_course_scen
 
 CourseApp::~CourseApp() = default;
 
+void CourseApp::apply_defaults(Exercise e) {
+    for (const auto& [name, value] : exercise_info(e).defaults)
+        if (const std::string err = set_option(name, value); !err.empty())
+            throw std::logic_error("exercise " + std::string(exercise_info(e).name) + ": default " + err);
+}
+
+void CourseApp::set_exercise(Exercise e) {
+    if (e == exercise_) return;
+    // What the old exercise started with goes back to the defaults; the new one's are set.
+    for (const auto& d : exercise_info(exercise_).defaults) {
+        const std::string_view name = d.first;
+        std::string v;
+        if (const auto* t = render::find_option(toggle_table(), name)) v = t->print(Toggles{});
+        else if (const auto* o = render::find_option(render::option_table(), name)) v = o->print(render::Options{});
+        set_option(name, v);
+    }
+    exercise_ = e;
+    apply_defaults(e);
+}
+
 // ---- options --------------------------------------------------------------------------------
 
 std::string CourseApp::set_option(std::string_view name, std::string_view value) {
@@ -90,10 +113,16 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
         eye_in_shadow_ = t.job.eye_in_shadow;
         return {};
     }
-    if (set_by_the_exercise(name))
+    if (set_by_the_exercise(exercise_, name))
         return std::string(name) + ": set by the exercise (or the canvas, the window), not an option here";
     render::Settings t = settings_;
     if (std::string err = render::parse_option(t, name, value); !err.empty()) return without_dashes(err);
+    if (exercise_ == Exercise::Soft) {
+        // The soft exercise's methods exclude each other: a filter other than hard takes one light
+        // sample, more than one light sample the hard filter (the last one set wins).
+        if (name == "filter" && t.filter != shadow::Filter::Hard) t.area_samples = 1;
+        if (name == "area-samples" && t.area_samples > 1) t.filter = shadow::Filter::Hard;
+    }
     if (t.encoding == shadow::Encoding::DepthTex && renderer_ && !renderer_->caps().depth_texture)
         return "encoding: depthtex needs WEBGL_depth_texture / OES_depth_texture, which this context lacks";
     settings_ = t;
@@ -111,7 +140,7 @@ std::vector<std::pair<std::string, std::string>> CourseApp::options() const {
     const auto pairs = render::to_pairs(settings_);
     for (size_t i = 0; i < pairs.size(); ++i) {
         const auto& [k, v] = pairs[i];
-        if (set_by_the_exercise(k) || std::find(shown.begin(), shown.end(), k) != shown.end()) continue;
+        if (set_by_the_exercise(exercise_, k) || std::find(shown.begin(), shown.end(), k) != shown.end()) continue;
         if (v != defaults[i].second) out.emplace_back(k, v);
     }
     if (eye_in_shadow_ && std::find(shown.begin(), shown.end(), "eye") == shown.end()) out.emplace_back("eye", value_of("eye"));
@@ -168,7 +197,20 @@ void CourseApp::set_time(double t) { light_time_ = jump_time_ = t; }
 // ---- drawing --------------------------------------------------------------------------------
 
 void CourseApp::render(render::Settings s, const render::FrameInputs& in) {
-    plan_text_ += renderer_->render(course_.scene, s, in).describe();
+    const render::FramePlan& p = renderer_->render(course_.scene, s, in);
+    plan_text_ += p.describe();
+    if (p.area && !area_) area_ = p.area;
+}
+
+render::Settings CourseApp::frame_settings() const {
+    render::Settings s = settings_;
+    if (!offers(exercise_info(exercise_), "technique")) s.technique = exercise_info(exercise_).technique;
+    if (exercise_ == Exercise::Soft && toggles_.reference) {
+        s.filter = shadow::Filter::Hard;
+        s.area_samples = kReferenceSamples;
+        s.area_per_frame = kReferencePerFrame;
+    }
+    return s;
 }
 
 render::FrameInputs CourseApp::light_view(render::Output output, bool ortho, const render::Output& camera) const {
@@ -198,9 +240,9 @@ void CourseApp::draw(int width, int height) {
     course_.scene.camera = scene_camera_;
     if (eye_in_shadow_) scene::place_eye_in_shadow(course_.scene);
     const render::Output window = render::Output::to_window(width, height);
-    render::Settings s = settings_;
-    s.technique = exercise_info(exercise_).technique;
+    render::Settings s = frame_settings();
     plan_text_.clear();
+    area_.reset();
     render::FrameInputs in;
     in.output = window;
     switch (exercise_) {
@@ -246,6 +288,10 @@ void CourseApp::draw(int width, int height) {
             if (s.aov == render::Aov::LightDepth) s.aov = render::Aov::Color;  // no shadow map here
             render(s, in);
             break;
+        case Exercise::Soft:  // one plan: the light samples accumulate over still frames
+            if (s.aov != render::Aov::Visibility) s.aov = render::Aov::Color;
+            render(s, in);
+            break;
     }
     // Wait for the frame before the clock stops. glFinish would do on the desktop, but WebGL's
     // finish() returns at once in Chromium (it only flushes); reading one pixel back waits for the
@@ -280,7 +326,8 @@ std::string CourseApp::key_help() {
     for (const auto& x : exercise_list()) h += "  " + std::string(1, digit++) + "         " + std::string(x.title) + "\n";
     for (const KeyBinding& k : key_bindings())
         h += "  " + std::string(1, static_cast<char>(k.key)) + "         " + std::string(k.help) + "\n";
-    h += "  [ ]       W09P2c: bias down / up (x1.5)\n"
+    h += "  - =       soft: light radius down / up (0.05)\n"
+         "  [ ]       W09P2c: bias down / up (x1.5)\n"
          "  B         W09P2c: bias back to the encoding's default\n"
          "  U         W09P2c: bias auto (the encoding's quantum + a receiver-slope term per fragment)\n"
          "  Space     pause/resume time\n"
@@ -307,7 +354,7 @@ std::string CourseApp::on_key(int key, bool shift) {
         return err.empty() ? std::string(name) + " = " + value : err;
     };
     if (key >= '1' && key < '1' + static_cast<int>(exercise_list().size())) {
-        exercise_ = exercise_list()[static_cast<size_t>(key - '1')].id;
+        set_exercise(exercise_list()[static_cast<size_t>(key - '1')].id);
         return std::string(exercise_info(exercise_).title);
     }
     for (const KeyBinding& k : key_bindings()) {
@@ -353,10 +400,14 @@ std::string CourseApp::on_key(int key, bool shift) {
         }
         case 'B': return set("bias", "sheet") + " (" + format_number(static_cast<double>(sheet_bias())) + ")";
         case 'U': return set("bias", "auto") + " (" + format_number(static_cast<double>(bias())) + " + slope)";
+        case '=':
+        case '-': {  // the light's radius, in steps of 0.05 (from the scene's, 0 for the course scene)
+            const double r = static_cast<double>(settings_.light_radius.value_or(course_.scene.light.radius));
+            return set("light-radius", format_number(std::max(0.0, std::round((r + (key == '=' ? 0.05 : -0.05)) * 100.0) / 100.0)));
+        }
         case 'P': {
             render::Options o;
-            o.settings = settings_;
-            o.settings.technique = exercise_info(exercise_).technique;
+            o.settings = frame_settings();
             o.job.time = light_time_;
             return "?" + query() + "\npenumbra render " + render::to_args(o);
         }

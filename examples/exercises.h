@@ -1,4 +1,4 @@
-// The course's exercises over the library: the four of worksheet W09 (02561) and shadow volumes,
+// The course's exercises over the library: the four of worksheet W09 (02561), shadow volumes and soft shadows,
 // shared by the browser pages (course_web.cpp) and the desktop app (course_desktop.cpp):
 //   W09P1   jumping teapot on a marble table top, planar projected shadows (stencil), buttons to
 //           switch the light's circulation and the teapot's jump on and off;
@@ -10,7 +10,10 @@
 //           viewing in a corner;
 //   volumes shadow volumes counted in the stencil buffer: depth-pass, depth-fail or auto, the
 //           volumes drawn over the image, the stencil count in false colour, and the eye moved
-//           into the teapot's shadow (where depth-pass fails).
+//           into the teapot's shadow (where depth-pass fails);
+//   soft    soft shadows from a light with a size: the radius, hard / PCF 4x4 / PCSS / Heckbert-Herf
+//           (light samples averaged, converging while the scene stands still), each technique, and
+//           a 256-sample reference to flip to.
 // Each frame is one or two plans whose inputs carry what an exercise changes (a view from the
 // light, a texture on the ground, a region of the window); the scene itself is never edited.
 // No GL here: the renderer and the gl layer do the drawing; the platform owns the context.
@@ -18,6 +21,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -40,7 +44,9 @@ public:
     CourseApp& operator=(const CourseApp&) = delete;
 
     Exercise exercise() const { return exercise_; }
-    void set_exercise(Exercise e) { exercise_ = e; }
+    // Switches to another exercise: the options the old one started with go back to their
+    // defaults, the new one's are set (ExerciseInfo::defaults).
+    void set_exercise(Exercise e);
 
     // One option by its URL / command-line name: a technique setting (render's option table), a
     // toggle (exercise_list.h), time=T (both clocks to T, paused) or eye=scene|in-shadow (the
@@ -54,6 +60,11 @@ public:
     const render::Settings& settings() const { return settings_; }
     const Toggles& toggles() const { return toggles_; }
     bool eye_in_shadow() const { return eye_in_shadow_; }
+    // The settings the next frame is drawn with: the exercise's technique (unless it offers a
+    // control for it), the soft exercise's reference.
+    render::Settings frame_settings() const;
+    // Heckbert-Herf's light samples in the last frame (soft shadows), when it had them.
+    const std::optional<render::AreaStats>& area() const { return area_; }
     // One option's value as options() writes it ("" for a name it does not know).
     std::string value_of(std::string_view name) const;
     // The bias in use (with bias=auto its constant part, the slope term is added per fragment),
@@ -104,6 +115,7 @@ private:
     render::FrameInputs light_view(render::Output output, bool ortho, const render::Output& camera) const;
     // The values key `option` steps through on this exercise.
     std::vector<std::string> key_values(std::string_view option) const;
+    void apply_defaults(Exercise e);
 
     Exercise exercise_;
     render::Settings settings_;
@@ -122,6 +134,7 @@ private:
     std::vector<double> ms_;  // ring of the last frame times
     long frames_drawn_ = 0;
     std::string plan_text_;  // this frame's passes, for --verbose
+    std::optional<render::AreaStats> area_;  // the last frame's light samples
 };
 
 }  // namespace penumbra::examples

@@ -17,13 +17,19 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
               "map-view=on");
     EXPECT_EQ(CourseApp(Exercise::Volumes).query(),
               "light=on&jump=on&volume-method=auto&show-volumes=off&eye=scene&aov=color");
+    // The soft exercise starts still (a frame can converge), with a light of radius 0.3 and PCSS.
+    EXPECT_EQ(CourseApp(Exercise::Soft).query(),
+              "light=off&jump=off&light-radius=0.3&filter=pcss&area-samples=1&area-per-frame=4&reference=off&"
+              "pcss-search=16&pcss-taps=16&technique=shadowmap&aov=color");
 }
 
 TEST(ExerciseOptions, EveryChangeReadsBack) {
     const std::vector<std::pair<std::string, std::string>> changes = {
         {"light", "off"}, {"jump", "off"},   {"projection", "ortho"}, {"fbo-view", "camera"}, {"map-view", "off"},
         {"encoding", "r8"}, {"filter", "pcf4x4"}, {"bias", "0.003"},   {"map-size", "2048"},     {"aov", "visibility"},
-        {"precision", "mediump"}, {"volume-method", "zfail"}, {"show-volumes", "on"}, {"eye", "in-shadow"}};
+        {"precision", "mediump"}, {"volume-method", "zfail"}, {"show-volumes", "on"}, {"eye", "in-shadow"},
+        {"light-radius", "0.45"}, {"pcss-search", "32"}, {"pcss-taps", "8"}, {"area-samples", "64"},
+        {"area-per-frame", "0"}, {"reference", "on"}};
     for (const auto& x : exercise_list()) {
         const Exercise e = x.id;
         CourseApp a(e);
@@ -143,6 +149,69 @@ TEST(ExerciseOptions, VolumeKeys) {
     for (const char* k : {"  5  ", "  Z  ", "  G  ", "  I  "}) EXPECT_NE(help.find(k), std::string::npos) << k << help;
 }
 
+// The soft exercise: its own defaults (set when chosen, put back when another is), the technique
+// as a control of its own, the methods excluding each other, the reference, and its keys.
+TEST(ExerciseOptions, SoftShadows) {
+    using penumbra::render::Technique;
+    using penumbra::shadow::Filter;
+    CourseApp a(Exercise::Soft);
+    EXPECT_FALSE(a.toggles().light);
+    EXPECT_FALSE(a.toggles().jump);
+    EXPECT_EQ(a.settings().light_radius, 0.3f);
+    EXPECT_EQ(a.settings().filter, Filter::PCSS);
+    EXPECT_EQ(a.settings().area_per_frame, 4);
+    // Light samples take the hard filter; a filter takes one sample.
+    ASSERT_EQ(a.set_option("area-samples", "64"), "");
+    EXPECT_EQ(a.settings().filter, Filter::Hard);
+    ASSERT_EQ(a.set_option("filter", "pcss"), "");
+    EXPECT_EQ(a.settings().area_samples, 1);
+    ASSERT_EQ(a.set_option("area-samples", "1"), "");
+    EXPECT_EQ(a.settings().filter, Filter::PCSS) << "one sample leaves the filter alone";
+    // The technique is the soft page's to choose (every technique of the option table).
+    ASSERT_EQ(a.set_option("technique", "volumes"), "");
+    EXPECT_EQ(a.frame_settings().technique, Technique::Volumes);
+    EXPECT_NE(CourseApp(Exercise::W09P2c).set_option("technique", "volumes"), "") << "W09P2c's is shadow mapping";
+    // The reference: Heckbert-Herf with 256 samples, converging, whatever the method.
+    ASSERT_EQ(a.set_option("reference", "on"), "");
+    EXPECT_EQ(a.frame_settings().area_samples, penumbra::examples::kReferenceSamples);
+    EXPECT_EQ(a.frame_settings().filter, Filter::Hard);
+    EXPECT_GT(a.frame_settings().area_per_frame, 0);
+    EXPECT_EQ(a.settings().filter, Filter::PCSS) << "the method chosen is kept for the flip back";
+    EXPECT_NE(a.on_key('P', false).find("--area-samples 256"), std::string::npos) << a.on_key('P', false);
+    // Keys: the radius, the filter (with PCSS), the light samples, converging, the reference.
+    CourseApp k(Exercise::W09P1);
+    EXPECT_EQ(k.on_key('6', false).rfind("Soft shadows", 0), 0u);
+    EXPECT_EQ(k.exercise(), Exercise::Soft);
+    EXPECT_EQ(k.query(), CourseApp(Exercise::Soft).query()) << "the soft exercise's defaults when chosen by a key";
+    EXPECT_EQ(k.on_key('=', false), "light-radius = 0.35");
+    EXPECT_EQ(k.on_key('-', false), "light-radius = 0.3");
+    for (int i = 0; i < 8; ++i) k.on_key('-', false);
+    EXPECT_EQ(k.settings().light_radius, 0.0f) << "not below 0";
+    EXPECT_EQ(k.on_key('F', false), "filter = hard");
+    EXPECT_EQ(k.on_key('F', false), "filter = pcf4x4");
+    EXPECT_EQ(k.on_key('F', false), "filter = pcss");
+    EXPECT_EQ(k.on_key('N', false), "area-samples = 4");
+    EXPECT_EQ(k.settings().filter, Filter::Hard);
+    EXPECT_EQ(k.on_key('N', true), "area-samples = 1");
+    EXPECT_EQ(k.on_key('N', true), "area-samples = 256");
+    EXPECT_EQ(k.on_key('C', false), "area-per-frame = 0");
+    EXPECT_EQ(k.on_key('X', false), "reference = on");
+    EXPECT_EQ(k.on_key('T', false), "technique = planar");
+    EXPECT_EQ(k.on_key('A', false), "aov = visibility");
+    EXPECT_EQ(k.on_key('A', false), "aov = color");
+    // Back to W09P2c: what the soft exercise started with goes back to the defaults.
+    k.on_key('4', false);
+    EXPECT_TRUE(k.toggles().light);
+    EXPECT_TRUE(k.toggles().jump);
+    EXPECT_FALSE(k.settings().light_radius.has_value());
+    EXPECT_EQ(k.settings().filter, Filter::Hard);
+    EXPECT_EQ(k.settings().area_per_frame, 0);
+    EXPECT_EQ(k.frame_settings().technique, Technique::ShadowMap);
+    const std::string help = CourseApp::key_help();
+    for (const char* key : {"  6  ", "  N  ", "  C  ", "  X  ", "  T  ", "  - =  "})
+        EXPECT_NE(help.find(key), std::string::npos) << key << help;
+}
+
 TEST(ExerciseOptions, TimeFreezesAndIsKept) {
     CourseApp a(Exercise::W09P1);
     ASSERT_EQ(a.set_option("time", "0.6"), "");
@@ -213,7 +282,7 @@ TEST(ExerciseOptions, Keys) {
 // names an option of a table, and every value a control offers is one that option accepts.
 TEST(ExerciseList, EveryControlNamesAnOptionAndOffersValidValues) {
     using namespace penumbra;
-    ASSERT_EQ(exercise_list().size(), 5u);
+    ASSERT_EQ(exercise_list().size(), 6u);
     for (const auto& x : exercise_list()) {
         Exercise parsed{};
         ASSERT_TRUE(examples::parse_exercise(x.name, parsed));
@@ -234,7 +303,14 @@ TEST(ExerciseList, EveryControlNamesAnOptionAndOffersValidValues) {
             for (std::string_view v : c.values) EXPECT_EQ(render::check_value(*info, v), "") << c.option << "=" << v;
             CourseApp a(x.id);
             EXPECT_NE(a.query().find(std::string(c.option) + "="), std::string::npos) << x.name << ": " << c.option;
+            if (c.kind == examples::ControlKind::Slider) {
+                EXPECT_LT(c.min, c.max) << c.option;
+                EXPECT_GE(c.min, info->min) << c.option;
+                EXPECT_LE(c.max, info->max) << c.option;
+            }
         }
+        CourseApp a(x.id);
+        for (const auto& [name, value] : x.defaults) EXPECT_NE(a.query().find(std::string(name) + "=" + std::string(value)), std::string::npos) << x.name << ": " << name;
     }
     for (const auto& k : examples::key_bindings()) {
         const bool known = render::find_option(examples::toggle_table(), k.option) ||
