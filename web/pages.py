@@ -62,6 +62,16 @@ def control_html(option: dict, control: dict) -> str:
         inner = "\n        ".join(rows)
         return (f'<fieldset class="choices" id="{name}-mode">\n        <legend>{esc(label)}</legend>\n'
                 f'        {inner}\n      </fieldset>')
+    if kind == "slider":
+        # A slider over the control's range and a number box over the option's (the same option:
+        # the page script keeps both in step), the value beside it.
+        step = f' step="{option["step"]:g}"' if option["step"] else ' step="any"'
+        limits = "".join(f' {k}="{option[k]:g}"' for k in ("min", "max") if option[k] is not None)
+        return (f'<div class="row"><label for="{name}">{esc(label)}</label>\n'
+                f'        <input type="range" id="{name}" data-option="{name}" min="{control["min"]:g}" '
+                f'max="{control["max"]:g}"{step}{described}>\n'
+                f'        <input type="number" id="{name}-number" data-option="{name}"{limits}{step} inputmode="decimal" '
+                f'aria-label="{esc(label)}">{hint}</div>')
     sys.exit(f"pages.py: control kind '{kind}' of '{name}' is not known")
 
 

@@ -9,6 +9,7 @@
 //   <button data-option aria-pressed>             on / off
 //   <input type=checkbox data-option data-on data-off>  data-on when checked, data-off otherwise
 //   <input type=radio name=NAME data-option>      the checked radio's value
+//   <input type=range|number data-option>         the number (a slider and its box, kept in step)
 //   #bias + radios name=bias-mode                 default (the encoding's), auto, or the number
 //                                                 in #bias (fixed)
 'use strict';
@@ -18,6 +19,8 @@
   const canvas = document.getElementById('canvas');
   const statusEl = document.getElementById('status');
   const msEl = document.getElementById('ms');
+  const samplesRow = document.getElementById('samples-row');
+  const samplesEl = document.getElementById('samples');
   let api = null;
   let lastStatus = '';
   let note = null; // {text, until}: a problem with the URL or a control, shown beside the status
@@ -81,6 +84,10 @@
         el.checked = v === el.dataset.on;
       } else if (el.type === 'radio') {
         el.checked = el.value === v;
+      } else if (el.type === 'range' || el.type === 'number') {
+        // A number (the light's radius): a word (scene) leaves the box empty, the slider at its start.
+        if (document.activeElement !== el) el.value = isFinite(+v) ? v : '';
+        if (el.type === 'number') el.placeholder = isFinite(+v) ? '' : v;
       }
     }
     const enc = document.querySelector('select[data-option="encoding"]');
@@ -125,6 +132,13 @@
         el.addEventListener('click', () => apply(name, el.getAttribute('aria-pressed') === 'true' ? 'off' : 'on'));
       } else if (el.type === 'checkbox') {
         el.addEventListener('change', () => apply(name, el.checked ? el.dataset.on : el.dataset.off));
+      } else if (el.type === 'range') {
+        // Dragging sets it as it goes (the other box follows); the keys' steps too.
+        el.addEventListener('input', () => apply(name, el.value));
+      } else if (el.type === 'number') {
+        el.addEventListener('change', () => {
+          if (el.value !== '') apply(name, el.value);
+        });
       } else {
         el.addEventListener('change', () => apply(name, el.value));
       }
@@ -147,9 +161,22 @@
     poll();
   }
 
+  // Heckbert-Herf's progress: "24 of 256 (converging)" while light samples are being added.
+  function samplesText(s) {
+    if (!s.area) return '';
+    const a = s.area;
+    // Still and complete: the frame is the one already drawn; complete but moving: all drawn again.
+    const how = a.done < a.total ? ' (converging)' : a.added === 0 ? ' (converged)' : '';
+    return a.done + ' of ' + a.total + how;
+  }
+
   function poll() {
     const s = state();
     msEl.textContent = s.frames > 0 ? s.ms.toFixed(2) + ' ms/frame' : '–';
+    if (samplesRow) {
+      samplesRow.hidden = !s.area;
+      samplesEl.textContent = samplesText(s) || '–';
+    }
     let text = s.status;
     if (note && performance.now() < note.until) text += ' — ' + note.text;
     setStatus(text);

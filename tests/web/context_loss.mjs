@@ -1,12 +1,14 @@
 // web.context_loss: WEBGL_lose_context on every exercise page. The page says the context was lost
 // and draws nothing while it is; after restoreContext() it says so, has made its renderer and GL
-// objects again (shaders, meshes, textures, shadow map, FBO, the volumes' buffers: the module's GL
-// generation goes from 1 to 2), renders the same frame again (fixed t) and reports no GL or console error.
+// objects again (shaders, meshes, textures, shadow map, FBO, the volumes' buffers, the light samples'
+// targets: the module's GL generation goes from 1 to 2), renders the same frame again (fixed t) and
+// reports no GL or console error.
 import { runTest, openPage, frameAt, compare, check, PAGES } from './harness.mjs';
 
 const T = 0.6;
 const QUERY = { w09p1: '', w09p2a: '', w09p2b: '', w09p2c: 'encoding=rgba&filter=pcf4x4',
-                volumes: 'eye=in-shadow&volume-method=auto&show-volumes=on' };
+                volumes: 'eye=in-shadow&volume-method=auto&show-volumes=on',
+                soft: 'area-samples=4&area-per-frame=0&aov=visibility' };
 
 await runTest('web.context_loss', async ({ server, browser }) => {
   for (const p of PAGES) {
