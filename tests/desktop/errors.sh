@@ -22,6 +22,8 @@ expect "unknown value 'r16'" --encoding r16
 expect "unknown value 'lowp'" --precision lowp
 expect "unknown value 'inside' (scene, in-shadow)" --exercise volumes --eye inside
 expect "unknown value 'zmaybe' (auto, zpass, zfail)" --volume-method zmaybe
+expect "light-radius" --exercise soft --light-radius -1
+expect "set by the exercise" --exercise w09p2c --technique volumes
 expect "or 'auto', 'sheet'" --bias often
 expect "must end in .png" --frames 3 --screenshot "$out/x.jpg"
 expect "needs --frames" --screenshot "$out/x.png"
