@@ -2,7 +2,10 @@
 // Camera pass: Phong lighting from one light, scaled by the light's visibility. Variants:
 // SHADOW_MAP (with ENC_*, FILTER_*, and BIAS_AUTO with LIGHT_PERSPECTIVE or not; EMULATE_MEDIUMP), IN_SHADOW (planar shadow region: visibility 0),
 // AREA_LOOKUP (Heckbert-Herf: the visibility averaged over light samples, from a target),
-// TEXTURED (base colour texture), LIGHT_SPOT (cone falloff), AOV_VISIBILITY (write visibility
+// GOOCH_TEXTURE (Gooch's shadow texture, black casters on white, sampled linearly at GOOCH_TAPS
+// offsets over the penumbra's width at this receiver's distance from the light), LIGHT_AMBIENT /
+// LIGHT_DIRECT (only that term: Gooch's planes add the direct light once per plane that lights the
+// pixel, scaled by u_light_weight), TEXTURED (base colour texture), LIGHT_SPOT (cone falloff), AOV_VISIBILITY (write visibility
 // as grey instead of colour).
 #include "precision.glsl"
 
@@ -37,6 +40,20 @@ uniform vec4 u_area_window;  // xy: the viewport's lower-left corner; zw: 1 / it
 uniform float u_area_scale;  // 255 / the number of samples in
 #endif
 
+#ifdef GOOCH_TEXTURE
+uniform sampler2D u_gooch;
+uniform vec2 u_gooch_scale;   // texture units per unit of tangent (perspective) or world (orthographic), x and y
+uniform vec3 u_gooch_spread;  // the taps' radius at light distance d: max(x d + y + z / d, 0) (times the scale)
+varying vec4 v_gooch_coord;
+varying float v_gooch_depth;
+vec2 g_gooch_uv;
+vec2 g_gooch_radius;
+float goochTap(vec2 offset) { return texture2D(u_gooch, g_gooch_uv + offset * g_gooch_radius).r; }
+#endif
+#if defined(LIGHT_DIRECT)
+uniform float u_light_weight;
+#endif
+
 void main() {
     vec3 n = normalize(v_normal);
     vec3 l = normalize(u_light.xyz - v_world * u_light.w);
@@ -48,9 +65,23 @@ void main() {
 #elif defined(AREA_LOOKUP)
     vec4 counts = texture2D(u_area, (gl_FragCoord.xy - u_area_window.xy) * u_area_window.zw);
     visibility = min(dot(counts, vec4(1.0)) * u_area_scale, 1.0);
+#elif defined(GOOCH_TEXTURE)
+    // Behind the light or outside its frustum: lit.
+    if (v_gooch_coord.w > 0.0) {
+        g_gooch_uv = v_gooch_coord.xy / v_gooch_coord.w;
+        if (all(greaterThanEqual(g_gooch_uv, vec2(0.0))) && all(lessThanEqual(g_gooch_uv, vec2(1.0)))) {
+            float d = max(v_gooch_depth, 1e-4);
+            g_gooch_radius = u_gooch_scale * max(u_gooch_spread.x * d + u_gooch_spread.y + u_gooch_spread.z / d, 0.0);
+            visibility = GOOCH_SUM(goochTap) / float(GOOCH_TAPS);
+        }
+    }
 #endif
 
-#ifdef AOV_VISIBILITY
+#if defined(AOV_VISIBILITY) && defined(LIGHT_AMBIENT)
+    gl_FragColor = vec4(0.0, 0.0, 0.0, 1.0);
+#elif defined(AOV_VISIBILITY) && defined(LIGHT_DIRECT)
+    gl_FragColor = vec4(vec3(visibility * u_light_weight), 1.0);
+#elif defined(AOV_VISIBILITY)
     gl_FragColor = vec4(vec3(visibility), 1.0);
 #else
     vec4 base = u_base_color;
@@ -66,6 +97,12 @@ void main() {
     cone = smoothstep(u_spot_cos.x, u_spot_cos.y, dot(-l, u_spot_direction));
 #endif
     vec3 direct = (base.rgb * diffuse + vec3(specular)) * u_light_color * (visibility * cone);
+#if defined(LIGHT_AMBIENT)
+    gl_FragColor = vec4(base.rgb * u_ambient, 1.0);
+#elif defined(LIGHT_DIRECT)
+    gl_FragColor = vec4(direct * u_light_weight, 1.0);
+#else
     gl_FragColor = vec4(base.rgb * u_ambient + direct, 1.0);
+#endif
 #endif
 }

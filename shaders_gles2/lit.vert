@@ -17,6 +17,12 @@ varying vec2 v_uv;
 uniform mat4 u_light_matrix;
 varying vec4 v_shadow_coord;
 #endif
+#ifdef GOOCH_TEXTURE
+uniform mat4 u_gooch_matrix;  // world -> the shadow texture's (u, v, z, w)
+uniform vec4 u_gooch_depth;   // world -> distance from the light along its view axis
+varying vec4 v_gooch_coord;
+varying float v_gooch_depth;
+#endif
 
 void main() {
     vec4 world = u_model * vec4(a_position, 1.0);
@@ -25,6 +31,10 @@ void main() {
     v_uv = a_uv;
 #ifdef SHADOW_MAP
     v_shadow_coord = u_light_matrix * world;
+#endif
+#ifdef GOOCH_TEXTURE
+    v_gooch_coord = u_gooch_matrix * world;
+    v_gooch_depth = dot(u_gooch_depth, world);
 #endif
     gl_Position = u_view_proj * world;
 }

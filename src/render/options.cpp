@@ -12,6 +12,7 @@ std::string_view to_string(Technique t) {
         case Technique::ShadowMap: return "shadowmap";
         case Technique::Planar: return "planar";
         case Technique::Volumes: return "volumes";
+        case Technique::Gooch: return "gooch";
         case Technique::None: return "none";
     }
     return "?";
@@ -38,6 +39,8 @@ std::string_view to_string(VolumeMethod m) {
     return "?";
 }
 
+std::string_view to_string(GoochMethod m) { return m == GoochMethod::Planes ? "planes" : "texture"; }
+
 std::string_view to_string(Aov a) {
     switch (a) {
         case Aov::Color: return "color";
@@ -54,7 +57,7 @@ bool Settings::operator==(const Settings& o) const {
            light_fit == o.light_fit && precision == o.precision && volume_method == o.volume_method &&
            show_volumes == o.show_volumes && aov == o.aov && light_radius == o.light_radius &&
            pcss_search == o.pcss_search && pcss_taps == o.pcss_taps && area_samples == o.area_samples &&
-           area_per_frame == o.area_per_frame;
+           area_per_frame == o.area_per_frame && gooch_planes == o.gooch_planes && gooch_method == o.gooch_method;
 }
 
 bool Job::operator==(const Job& o) const {
@@ -399,6 +402,25 @@ std::vector<Option<Options>> make_table() {
     add(area_per_frame, [](Options& o, std::string_view v) { o.settings.area_per_frame = int_of(v); },
         [](const Options& o) { return std::to_string(o.settings.area_per_frame); });
 
+    OptionInfo gooch_planes = make_option_info("gooch-planes", P::Technique, T::Integer,
+                         "--technique gooch: how many receiving planes, offset towards and away from the light by up "
+                         "to a spread from the light's radius, are averaged (texture: taps); 1 = the planar shadow",
+                         "Gooch planes");
+    gooch_planes.min = 1;
+    gooch_planes.max = kMaxGoochPlanes;
+    gooch_planes.presets = {{"1", "1 (planar)"}, {"4", "4"}, {"8", "8"}, {"16", "16"}};
+    add(gooch_planes, [](Options& o, std::string_view v) { o.settings.gooch_planes = int_of(v); },
+        [](const Options& o) { return std::to_string(o.settings.gooch_planes); });
+
+    OptionInfo gooch_method = make_option_info("gooch-method", P::Technique, T::Choice,
+                         "--technique gooch: planes = the casters flattened onto offset planes, moved back to the "
+                         "ground and averaged through the stencil (the ground only); texture = the casters from the "
+                         "light into a small texture, sampled linearly at offsets on every receiver that casts "
+                         "nothing", "Gooch method",
+                         {{"planes", "offset planes (stencil)"}, {"texture", "shadow texture, linear filtering"}});
+    add(gooch_method, [](Options& o, std::string_view v) { o.settings.gooch_method = enum_of(v, kAllGoochMethods); },
+        [](const Options& o) { return std::string(to_string(o.settings.gooch_method)); });
+
     OptionInfo aov = make_option_info("aov", P::Technique, T::Choice, "what the image shows", "Show",
                    {{"color", "colour"}, {"visibility", "visibility (white lit, black shadowed)"},
                     {"light-depth", "the shadow map's depth"},
@@ -408,7 +430,8 @@ std::vector<Option<Options>> make_table() {
 
     OptionInfo technique = make_option_info("technique", P::Technique, T::Choice, "the shadow technique", "Technique",
                          {{"shadowmap", "shadow map"}, {"planar", "planar projected shadows (stencil)"},
-                          {"volumes", "shadow volumes (stencil)"}, {"none", "no shadows"}});
+                          {"volumes", "shadow volumes (stencil)"},
+                          {"gooch", "Gooch's soft shadow (offset planes or a shadow texture)"}, {"none", "no shadows"}});
     add(technique, [](Options& o, std::string_view v) { o.settings.technique = enum_of(v, kAllTechniques); },
         [](const Options& o) { return std::string(to_string(o.settings.technique)); });
 

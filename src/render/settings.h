@@ -11,7 +11,13 @@
 
 namespace penumbra::render {
 
-enum class Technique { ShadowMap, Planar, Volumes, None };
+enum class Technique { ShadowMap, Planar, Volumes, Gooch, None };
+// --technique gooch: how Gooch's soft shadow is made (render/techniques/gooch.cpp).
+enum class GoochMethod {
+    Planes,  // the casters flattened onto K offset planes, each moved back to the ground, averaged (stencil)
+    Texture  // the casters from the light into a small texture, sampled linearly at K offsets per pixel
+};
+inline constexpr GoochMethod kAllGoochMethods[] = {GoochMethod::Planes, GoochMethod::Texture};
 enum class Aov {
     Color,        // the shaded image
     Visibility,   // 8-bit grey: 255 where the light reaches the surface seen at the pixel, 0 in shadow
@@ -40,7 +46,7 @@ enum class LightFit {
 inline constexpr LightFit kAllLightFits[] = {LightFit::Tight, LightFit::Scene};
 inline constexpr MapFaces kAllMapFaces[] = {MapFaces::Auto, MapFaces::Front, MapFaces::Back, MapFaces::Both};
 inline constexpr Technique kAllTechniques[] = {Technique::ShadowMap, Technique::Planar, Technique::Volumes,
-                                              Technique::None};
+                                              Technique::Gooch, Technique::None};
 inline constexpr Aov kAllAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth, Aov::StencilCount};
 
 std::string_view to_string(Technique t);
@@ -48,9 +54,12 @@ std::string_view to_string(Aov a);
 std::string_view to_string(MapFaces f);
 std::string_view to_string(LightFit f);
 std::string_view to_string(VolumeMethod m);
+std::string_view to_string(GoochMethod m);
 
 // Heckbert-Herf accumulates one count per light sample in a channel of an RGBA8 target: 4 x 255.
 inline constexpr int kMaxAreaSamples = 1020;
+// Gooch: the planes' stencil counts 1..K+1 and the texture's taps are compiled in.
+inline constexpr int kMaxGoochPlanes = 16;
 
 struct Settings {
     Technique technique = Technique::ShadowMap;
@@ -78,6 +87,9 @@ struct Settings {
     // frame adds that many per frame until all are in (progressive); 0: all in one frame.
     int area_samples = 1;
     int area_per_frame = 0;
+    // --technique gooch: planes (or texture taps) averaged; 1 = the planar shadow (planes).
+    int gooch_planes = 8;
+    GoochMethod gooch_method = GoochMethod::Planes;
 
     // The constant bias: with bias_auto the quantum part, else the chosen one or the sheet's.
     float effective_bias() const {

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "render/settings.h"
+#include "shadow/gooch.h"
 #include "shadow/pcf.h"
 
 namespace penumbra::render {
@@ -92,7 +94,12 @@ Variant lit_variant(const LitFeatures& f) {
         v.defines = {"IN_SHADOW"};
     } else if (f.area_lookup) {
         v.defines = {"AREA_LOOKUP"};
+    } else if (f.gooch_taps > 0) {
+        v.defines = {"GOOCH_TEXTURE"};
+        for (auto& d : gooch_tap_defines(f.gooch_taps)) v.defines.push_back(std::move(d));
     }
+    if (f.light_term == LightTerm::Ambient) v.defines.emplace_back("LIGHT_AMBIENT");
+    if (f.light_term == LightTerm::Direct) v.defines.emplace_back("LIGHT_DIRECT");
     if (f.textured) v.defines.emplace_back("TEXTURED");
     if (f.spot) v.defines.emplace_back("LIGHT_SPOT");
     if (f.visibility_aov) v.defines.emplace_back("AOV_VISIBILITY");
@@ -117,6 +124,21 @@ Variant probe_variant() { return {"light_depth.vert", "probe.frag", {}}; }
 
 Variant volume_variant() { return {"volume.vert", "probe.frag", {}}; }
 
+Variant flat_variant() { return {"depth.vert", "probe.frag", {}}; }
+
+std::vector<std::string> gooch_tap_defines(int taps) {
+    std::string sum = "GOOCH_SUM(F) (";
+    bool first = true;
+    for (const glm::vec2& t : shadow::gooch_disc(taps)) {
+        char b[96];
+        std::snprintf(b, sizeof b, "%sF(vec2(%.6f, %.6f))", first ? "" : " + ", static_cast<double>(t.x),
+                      static_cast<double>(t.y));
+        sum += b;
+        first = false;
+    }
+    return {"GOOCH_TAPS " + std::to_string(taps), sum + ")"};
+}
+
 Variant area_add_variant() { return {"light_depth.vert", "area_add.frag", {}}; }
 
 Variant ramp_variant(shadow::Encoding e, const DepthPath& path) {
@@ -136,6 +158,17 @@ std::vector<Variant> all_variants() {
     LitFeatures area;
     area.area_lookup = true;
     shadowing.push_back(area);
+    // Gooch: the planes' ambient and direct terms; the texture's taps, 1..kMaxGoochPlanes.
+    for (LightTerm t : {LightTerm::Ambient, LightTerm::Direct}) {
+        LitFeatures g;
+        g.light_term = t;
+        shadowing.push_back(g);
+    }
+    for (int taps = 1; taps <= kMaxGoochPlanes; ++taps) {
+        LitFeatures g;
+        g.gooch_taps = taps;
+        shadowing.push_back(g);
+    }
     for (auto e : shadow::kAllEncodings)
         for (auto f : shadow::kAllFilters)
             for (auto k : shadow::kAllPcfKernels) {
@@ -174,6 +207,7 @@ std::vector<Variant> all_variants() {
     out.push_back(probe_variant());
     out.push_back(volume_variant());
     out.push_back(area_add_variant());
+    out.push_back(flat_variant());
     // PCSS's tap counts, each once (the loops' bounds).
     for (int n : {1, 8, 32, 64}) {
         LitFeatures p;

@@ -23,6 +23,10 @@ struct Variant {
     bool operator==(const Variant& o) const { return key() == o.key(); }
 };
 
+// What the lit shader writes: everything, the ambient term only (LIGHT_AMBIENT), or the direct
+// term only, scaled by u_light_weight (LIGHT_DIRECT; visibility AOV: u_light_weight).
+enum class LightTerm { All, Ambient, Direct };
+
 // What the lit shader needs for one object in one pass.
 struct LitFeatures {
     bool shadow_map = false;  // with encoding and filter
@@ -38,6 +42,11 @@ struct LitFeatures {
     bool mediump = false;            // emulate fp16 along the depth path
     int pcss_search = 16, pcss_taps = 16;  // filter PCSS: taps of the blocker search and the filter
     bool area_lookup = false;        // Heckbert-Herf: visibility from the accumulated light samples
+    // Gooch: which terms the pass writes (planes: the ground ambient-only first, then the direct
+    // light scaled by u_light_weight added once per plane that lights it) and, with gooch_taps > 0,
+    // the visibility from the shadow texture sampled linearly at that many offsets (texture).
+    LightTerm light_term = LightTerm::All;
+    int gooch_taps = 0;
 };
 
 // How the depth path is compiled on this context: the emulated precision and what the unorm8
@@ -63,6 +72,13 @@ Variant ramp_variant(shadow::Encoding e, const DepthPath& path);
 // applies, shadow::pcf_early_exit_applies) PCF_EARLY_EXIT and, instead of PCF_SUM, the same sum
 // split in two: PCF_CORNERS over the 4 corner taps and PCF_REST over the others.
 std::vector<std::string> pcf_kernel_defines(shadow::Filter f, shadow::PcfKernel kernel = shadow::PcfKernel::Full);
+
+// A constant colour (u_value) through u_mvp: Gooch's casters into the shadow texture.
+Variant flat_variant();
+
+// Gooch's texture taps as the shader's defines: GOOCH_TAPS (the count) and GOOCH_SUM(F), the sum
+// of F(offset) over shadow::gooch_disc(taps).
+std::vector<std::string> gooch_tap_defines(int taps);
 
 // Heckbert-Herf: one light sample's visibility (a texture) added as a count into one channel.
 Variant area_add_variant();

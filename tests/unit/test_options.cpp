@@ -133,9 +133,12 @@ TEST(Options, BadValuesAreNamedAndLeaveTheOptionsAlone) {
         {"bias", "2", "--bias: must lie in [0, 1], got '2'"},
         {"frames", "0", "--frames: must be at least 1, got '0'"},
         {"aov", "normal", "--aov: unknown value 'normal' (color, visibility, light-depth, stencil-count)"},
-        {"technique", "volume", "--technique: unknown value 'volume' (shadowmap, planar, volumes, none)"},
+        {"technique", "volume", "--technique: unknown value 'volume' (shadowmap, planar, volumes, gooch, none)"},
         {"volume-method", "zmid", "--volume-method: unknown value 'zmid' (auto, zpass, zfail)"},
         {"show-volumes", "yes", "--show-volumes: unknown value 'yes' (off, on)"},
+        {"gooch-planes", "0", "--gooch-planes: must lie in [1, 16], got '0'"},
+        {"gooch-planes", "17", "--gooch-planes: must lie in [1, 16], got '17'"},
+        {"gooch-method", "disc", "--gooch-method: unknown value 'disc' (planes, texture)"},
         {"eye", "above", "--eye: unknown value 'above' (scene, in-shadow)"},
         {"colour", "red", "unknown option --colour"},
         {"scene", "", "--scene: needs a value: teapot (the course scene) or FILE.gltf / FILE.glb"},
@@ -154,11 +157,12 @@ TEST(Options, ArgsLabelTheResult) {
               "--scene teapot --time 0 --size 512x512 --encoding r8 --filter hard --pcf-kernel early-exit "
               "--map-size 1024 --bias auto --map-faces auto --light-fit tight --precision highp --volume-method auto "
               "--show-volumes off --light-radius scene --pcss-search 16 --pcss-taps 16 --area-samples 1 --area-per-frame 0 "
-              "--aov color --technique shadowmap --eye scene --frames 1");
+              "--gooch-planes 8 --gooch-method planes --aov color --technique shadowmap --eye scene --frames 1");
     EXPECT_EQ(to_args(o.settings),
               "--encoding r8 --filter hard --pcf-kernel early-exit --map-size 1024 --bias auto --map-faces auto "
               "--light-fit tight --precision highp --volume-method auto --show-volumes off --light-radius scene "
-              "--pcss-search 16 --pcss-taps 16 --area-samples 1 --area-per-frame 0 --aov color --technique shadowmap");
+              "--pcss-search 16 --pcss-taps 16 --area-samples 1 --area-per-frame 0 --gooch-planes 8 --gooch-method planes "
+              "--aov color --technique shadowmap");
 }
 
 TEST(Options, AcceptedValuesAndListsComeFromTheTable) {

@@ -8,6 +8,7 @@ namespace penumbra::render {
 const Module& shadow_map_module();  // shadow_map.cpp
 const Module& planar_module();      // planar.cpp
 const Module& volumes_module();     // volumes.cpp
+const Module& gooch_module();       // gooch.cpp
 
 namespace {
 
@@ -25,6 +26,7 @@ const Module& technique_module(Technique t) {
         case Technique::ShadowMap: return shadow_map_module();
         case Technique::Planar: return planar_module();
         case Technique::Volumes: return volumes_module();
+        case Technique::Gooch: return gooch_module();
         case Technique::None: return none;
     }
     return none;
