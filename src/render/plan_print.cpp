@@ -187,6 +187,12 @@ std::string FramePlan::to_text() const {
                       volumes->fill, volumes->fill_per_pixel);
         o << buf;
     }
+    if (area) {
+        std::snprintf(buf, sizeof buf,
+                      "light samples (Heckbert-Herf): %d of %d in the sum, %d drawn this frame%s\n", area->done,
+                      area->total, area->added, area->added == 0 ? " (still: the sum is reused)" : "");
+        o << buf;
+    }
     std::size_t total = 0;
     o << "resources:\n";
     for (const PlannedResource& r : resources) {
@@ -255,6 +261,11 @@ std::string FramePlan::to_json() const {
              ",\"fill_per_pixel\":" + json_number(volumes->fill_per_pixel) + "}";
     else
         j += ",\"volumes\":null";
+    if (area)
+        j += ",\"area\":{\"total\":" + std::to_string(area->total) + ",\"done\":" + std::to_string(area->done) +
+             ",\"added\":" + std::to_string(area->added) + ",\"key\":" + json_quote(area->key) + "}";
+    else
+        j += ",\"area\":null";
     j += ",\"resources\":[";
     std::size_t total = 0;
     for (size_t i = 0; i < resources.size(); ++i) {

@@ -112,6 +112,18 @@ TEST(GltfExport, DirectionalLightAndSpotRoundTrip) {
     const Scene out = round_trip(s, "spot.gltf");
     EXPECT_FLOAT_EQ(out.light.spot_inner_cone, 0.2f);
     EXPECT_FLOAT_EQ(out.light.spot_outer_cone, 0.6f);
+    EXPECT_EQ(out.light.radius, 0.0f) << "no extras: a point light";
+}
+
+TEST(GltfExport, TheLightsRadiusRoundTripsInItsExtras) {
+    CourseScene course = make_course_scene(4);
+    Scene s = course.scene;
+    s.light.radius = 0.25f;
+    EXPECT_FLOAT_EQ(round_trip(s, "radius.gltf").light.radius, 0.25f);
+    s.light.type = LightType::Directional;
+    s.light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    s.light.radius = 0.01f;  // radians: the sun's is about 0.0047
+    EXPECT_FLOAT_EQ(round_trip(s, "sun_radius.gltf").light.radius, 0.01f);
 }
 
 TEST(GltfExport, WritesNothingToAMissingFolder) {

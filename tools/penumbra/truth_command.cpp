@@ -152,7 +152,8 @@ void run_truth(const TruthCommandOptions& o) {
     to.height = size.job.height;
     to.view_proj = renderer_view_proj(s, size.job.width, size.job.height);
     to.soft_samples = o.soft_samples;
-    to.light_radius = o.light_radius >= 0.0f ? o.light_radius : default_light_radius(s);
+    // --light-radius, else the scene's light's own (glTF extras), else the bench's default.
+    to.light_radius = o.light_radius >= 0.0f ? o.light_radius : s.light.radius > 0.0f ? s.light.radius : default_light_radius(s);
     const auto t0 = Clock::now();
     const measure::TruthImage t = measure::RayTracer(s).render(to);
     const double secs = seconds_since(t0);
