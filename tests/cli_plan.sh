@@ -47,6 +47,29 @@ import json, sys
 v = json.load(open(sys.argv[1]))["volumes"]
 assert v["zfail_casters"] >= 1 and v["silhouette_edges"] > 0 and v["fill_per_pixel"] > 0, v' volumes.json \
   && echo "ok volumes: depth-fail with the eye in a shadow" || { echo "FAIL volumes: no depth-fail with the eye in a shadow"; fail=1; }
+# Gooch's soft shadow: K planes (stencil and add passes per plane), the texture, radius 0 = planar.
+check gooch --technique gooch --light-radius 0.3 --gooch-planes 4 --size 64x64
+check gooch-texture --technique gooch --gooch-method texture --light-radius 0.3 --size 64x64
+check gooch-radius-0 --technique gooch --light-radius 0 --size 64x64
+python3 -c '
+import json, sys
+g = json.load(open("gooch.json"))["passes"]
+names = [q["name"] for q in g]
+assert names == ["camera", "gooch-ground"] + ["gooch-stencil", "gooch-light"] * 4, names
+assert all("blend add" in q["state"]["text"] for q in g if q["name"] == "gooch-light"), "gooch-light does not add"
+t = json.load(open("gooch-texture.json"))
+assert [q["name"] for q in t["passes"]] == ["gooch-texture", "camera"], t["passes"]
+r = [x for x in t["resources"] if x["name"] == "gooch-texture"][0]
+assert r["sampling"] == "linear" and r["width"] <= 1024, r
+z = json.load(open("gooch-radius-0.json"))
+p = json.load(open("planar.json"))
+assert [q["name"] for q in z["passes"]] == [q["name"] for q in p["passes"]], "radius 0 is not the planar plan"' \
+  && echo "ok gooch: planes, texture and radius 0 (the planar passes)" || { echo "FAIL gooch plans"; fail=1; }
+if "$penumbra" render --scene "$data/sphere_over_plane.gltf" --technique gooch --light-radius 0.2 --size 64x64 --out gooch.png 2>gooch.err; then
+  echo "ok gooch render sphere_over_plane.gltf"
+else
+  echo "FAIL gooch render sphere_over_plane.gltf: $(cat gooch.err)"; fail=1
+fi
 # Every glTF scene of the test data renders with shadow volumes.
 for f in "$data"/*.gltf "$data"/*.glb; do
   case "$(basename "$f")" in bad_*) continue ;; esac
