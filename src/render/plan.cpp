@@ -380,6 +380,7 @@ bool area_applies(const PlanContext& c, std::string* why) {
         return false;
     };
     if (s.technique == Technique::None) return no("no shadows to sample (--technique none)");
+    if (s.technique == Technique::Gooch) return no("--technique gooch is soft by itself; its planes take the light's size");
     if (s.aov != Aov::Color && s.aov != Aov::Visibility)
         return no("--aov " + std::string(to_string(s.aov)) + " shows one hard sample, the light's centre");
     if (!(c.light.radius > 0.0f)) return no("the light has no radius (--light-radius), so one sample is the whole light");
