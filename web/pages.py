@@ -67,11 +67,12 @@ def control_html(option: dict, control: dict) -> str:
         # the page script keeps both in step), the value beside it.
         step = f' step="{option["step"]:g}"' if option["step"] else ' step="any"'
         limits = "".join(f' {k}="{option[k]:g}"' for k in ("min", "max") if option[k] is not None)
+        # The number box is labelled by the hint (its unit), as the bias's number box is.
         return (f'<div class="row"><label for="{name}">{esc(label)}</label>\n'
                 f'        <input type="range" id="{name}" data-option="{name}" min="{control["min"]:g}" '
-                f'max="{control["max"]:g}"{step}{described}>\n'
-                f'        <input type="number" id="{name}-number" data-option="{name}"{limits}{step} inputmode="decimal" '
-                f'aria-label="{esc(label)}">{hint}</div>')
+                f'max="{control["max"]:g}"{step}>\n'
+                f'        <input type="number" id="{name}-number" data-option="{name}"{limits}{step} inputmode="decimal">\n'
+                f'        <label for="{name}-number" class="hint">{esc(control["hint"] or label)}</label></div>')
     sys.exit(f"pages.py: control kind '{kind}' of '{name}' is not known")
 
 
