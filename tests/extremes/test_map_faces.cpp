@@ -19,14 +19,7 @@ namespace {
 
 constexpr int kSize = 256;
 
-scene::Object object(const char* name, int mesh, const glm::mat4& world) {
-    scene::Object o;
-    o.name = name;
-    o.mesh = mesh;
-    o.material = 0;
-    o.world = world;
-    return o;
-}
+using test::object;
 
 scene::Scene sphere_and_sheet() {
     scene::Scene s;

@@ -35,14 +35,7 @@ constexpr float kA = 1.0f, kH = 1.0f, kLightH = 5.0f, kR = 0.5f;
 constexpr float kHalfView = 2.0f;  // the camera sees [-2, 2]^2 of the ground
 constexpr float kEye = 40.0f;      // from this height
 
-scene::Object object(const char* name, int mesh, const glm::mat4& world) {
-    scene::Object o;
-    o.name = name;
-    o.mesh = mesh;
-    o.material = 0;
-    o.world = world;
-    return o;
-}
+using test::object;
 
 // A flat disc of radius r in the plane y = 0, both faces (an open mesh).
 scene::Mesh disc(float r, int segments) {

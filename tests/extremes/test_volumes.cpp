@@ -26,14 +26,7 @@ namespace {
 constexpr int kSize = 256;
 constexpr double kExact = 0.05;  // % of the valid pixels: exact up to rasterisation
 
-scene::Object object(const char* name, int mesh, const glm::mat4& world) {
-    scene::Object o;
-    o.name = name;
-    o.mesh = mesh;
-    o.material = 0;
-    o.world = world;
-    return o;
-}
+using test::object;
 
 // An open tube along y: radius r, height h, no ends.
 scene::Mesh tube(float r, float h, int segments) {

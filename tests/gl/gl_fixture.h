@@ -12,6 +12,7 @@
 #include "platform/platform.h"
 #include "measure/image_io.h"
 #include "render/renderer.h"
+#include "scene/scene.h"
 
 namespace penumbra::test {
 
@@ -34,6 +35,16 @@ struct ImageDiff {
     int max = 0;        // largest per-channel difference
     double mean = 0.0;  // mean per-channel difference over all pixels
 };
+
+// An object of the test scenes: `mesh` at `world`, material 0, casting and receiving shadows.
+inline scene::Object object(const char* name, int mesh, const glm::mat4& world) {
+    scene::Object o;
+    o.name = name;
+    o.mesh = mesh;
+    o.material = 0;
+    o.world = world;
+    return o;
+}
 
 ImageDiff compare(const measure::Pixels& a, const measure::Pixels& b);
 
