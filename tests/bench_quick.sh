@@ -4,7 +4,7 @@
 # SVG that parses as XML and a PNG of the plot; never a timing check. Then `penumbra export` and
 # `penumbra truth --score` (prose and --json) on the exported file; that the CSV header, the
 # Markdown headings and the JSON keys are the score table's (`truth --score-columns`); and the
-# bad-input errors.
+# bad-input errors. Also `penumbra bench --soft --quick` (the soft methods against the area-light truth).
 # usage: bench_quick.sh PENUMBRA WORKDIR SOURCE_DIR
 set -uo pipefail
 penumbra=$1 work=$2 src=$3
@@ -100,6 +100,55 @@ if "$penumbra" bench --from-csv "$work/bench/results.csv" --out-dir "$work/again
           <(grep -A8 "^| segments" "$work/again/results.md" | awk -F'|' '{print $2 $3 $(NF-3) $(NF-2) $(NF-1)}'); then ok
 else bad "bench --from-csv lost the volumes' tables: $(cat "$work/again.err")"; fi
 cmp -s "$work/bench/results.csv" "$work/again/results.csv" && ok || bad "bench --from-csv does not write the same CSV back"
+
+# `penumbra bench --soft --quick`: the soft methods against the area-light truth (course scene,
+# 128x128, radius 0.15 of the scene): every row there, numbers in range, and what must hold
+# whatever the timings: Heckbert-Herf's error falls from 4 to 64 samples (and with N along the
+# convergence rows), PCSS beats the hard shadow and PCF 4x4 against the soft truth.
+start=$(date +%s)
+if "$penumbra" bench --soft --quick --out-dir "$work/soft" >"$work/soft.out" 2>"$work/soft.err"; then ok
+else bad "bench --soft --quick exited $?"; cat "$work/soft.err"; fi
+echo "bench --soft --quick took $(( $(date +%s) - start )) s"
+python3 - "$work/soft" <<'PY' && ok || bad "bench --soft outputs are wrong"
+import csv, struct, sys, xml.etree.ElementTree as ET
+d = sys.argv[1]
+rows = list(csv.DictReader(open(d + "/soft.csv")))
+sweep = {r["method"]: r for r in rows if r["section"] == "sweep"}
+conv = sorted((r for r in rows if r["section"] == "convergence"), key=lambda r: int(r["samples"]))
+want = {"hard", "pcf4x4", "pcss 16/16", "hh 4", "hh 16", "hh 64"}
+assert want <= set(sweep), sorted(sweep)
+assert set(sweep) - want <= {"gooch"}, sorted(sweep)
+for r in rows:
+    assert r["scene"] == "course@0.60" and r["light"] == "point" and r["radius_fraction"] == "0.15", r
+    assert float(r["light_radius"]) > 0.0 and "--light-radius " in r["settings"], r
+    assert int(r["valid_pixels"]) > 1000 and 100 < int(r["penumbra_pixels"]) < int(r["valid_pixels"]), r
+    for k in ("mae_area_light_pct", "mae_penumbra_pct", "mae_pct"):
+        assert 0.0 <= float(r[k]) <= 100.0, (k, r)
+    # the penumbra holds the error: its mean is at least the whole image's
+    assert float(r["mae_penumbra_pct"]) >= float(r["mae_area_light_pct"]), r
+    if r["section"] == "sweep": assert float(r["ms_per_frame"]) > 0.0 and int(r["frames"]) >= 2, r
+    else: assert r["ms_per_frame"] == "", r
+for m, r in sweep.items():
+    if m.startswith("hh "): assert "--area-samples " + m[3:] in r["settings"], r
+    if m.startswith("pcss"): assert "--filter pcss" in r["settings"] and "--pcss-taps 16" in r["settings"], r
+e = {m: float(r["mae_area_light_pct"]) for m, r in sweep.items()}
+assert e["hh 4"] > e["hh 16"] > e["hh 64"], e
+assert e["pcss 16/16"] < e["hard"] and e["pcss 16/16"] < e["pcf4x4"], e
+assert [int(r["samples"]) for r in conv] == [1, 2, 4, 8, 16, 32, 64], conv
+ce = [float(r["mae_area_light_pct"]) for r in conv]
+assert ce[-1] < 0.5 * ce[0] and ce[2] > ce[-1], ce
+assert abs(ce[0] - e["hard"]) < 1e-3  # one sample: the light's centre, the hard shadow
+md = open(d + "/soft.md").read()
+assert md.startswith("# penumbra bench --soft") and "## Mean over the scenes, per light radius" in md
+assert "## Heckbert-Herf's convergence on course@0.60" in md and "## The issue's goals" in md
+for name in ("soft", "soft_convergence"):
+    svg = ET.parse(d + "/" + name + ".svg").getroot(); assert svg.tag.endswith("svg")
+    png = open(d + "/" + name + ".png", "rb").read(); assert png[:8] == b"\x89PNG\r\n\x1a\n"
+print("bench --soft --quick:", ", ".join(f"{m} {v:.2f} %" for m, v in sorted(e.items(), key=lambda x: x[1])))
+PY
+expect_error_soft() { local err rc; err=$("$penumbra" "$@" 2>&1 >/dev/null); rc=$?
+  if [ "$rc" -eq 2 ] && [ "$(grep -c . <<<"$err")" -eq 1 ]; then ok; else bad "$*: rc=$rc: $err"; fi; }
+expect_error_soft bench --soft --quick --radii 1.5 --out-dir "$work/s2"
 
 # export -> render and truth on the exported file -> score.
 if "$penumbra" export --scene teapot --time 0.6 --out "$work/course.gltf" >/dev/null; then ok; else bad "export failed"; fi

@@ -31,9 +31,8 @@
 namespace fs = std::filesystem;
 
 namespace penumbra::tools {
-namespace {
 
-using namespace bench;
+namespace bench {
 
 SceneSpec parse_scene_spec(const std::string& spec) {
     SceneSpec s;
@@ -53,13 +52,25 @@ SceneSpec parse_scene_spec(const std::string& spec) {
     return s;
 }
 
-
-
 std::vector<std::uint8_t> red_channel(const std::vector<std::uint8_t>& rgba) {
     std::vector<std::uint8_t> out(rgba.size() / 4);
     for (size_t i = 0; i < out.size(); ++i) out[i] = rgba[4 * i];
     return out;
 }
+
+// A static scene's "moving" frames: the light turned about the vertical axis through the scene's
+// centre, half a degree more each frame, so the map must be redrawn every time.
+void turn_light(scene::Light& light, const scene::Light& original, const glm::vec3& centre, int frame) {
+    const glm::mat4 rot = glm::rotate(glm::mat4(1.0f), glm::radians(0.5f * static_cast<float>(frame)), glm::vec3(0, 1, 0));
+    light.position = centre + glm::vec3(rot * glm::vec4(original.position - centre, 1.0f));
+    light.direction = glm::normalize(glm::vec3(rot * glm::vec4(original.direction, 0.0f)));
+}
+
+}  // namespace bench
+
+namespace {
+
+using namespace bench;
 
 std::string technique_label(const render::Settings& s) {
     if (s.technique == render::Technique::Volumes) return kVolumesPrefix + std::string(render::to_string(s.volume_method));
@@ -124,14 +135,6 @@ Sweep configure(const BenchOptions& in) {
     return w;
 }
 
-// A static scene's "moving" frames: the light turned about the vertical axis through the scene's
-// centre, half a degree more each frame, so the map must be redrawn every time.
-void turn_light(scene::Light& light, const scene::Light& original, const glm::vec3& centre, int frame) {
-    const glm::mat4 rot = glm::rotate(glm::mat4(1.0f), glm::radians(0.5f * static_cast<float>(frame)), glm::vec3(0, 1, 0));
-    light.position = centre + glm::vec3(rot * glm::vec4(original.position - centre, 1.0f));
-    light.direction = glm::normalize(glm::vec3(rot * glm::vec4(original.direction, 0.0f)));
-}
-
 // A run of the sweep: its settings and the technique column of its rows.
 struct Planned {
     render::Settings settings;
@@ -174,32 +177,6 @@ void set_volume_stats(Row& row, const render::VolumeStats& v) {
     row.zpass_casters = v.zpass_casters;
     row.zfail_casters = v.zfail_casters;
     row.fill_per_pixel = v.fill_per_pixel;
-}
-
-struct Timing {
-    double median_ms = 0.0;
-    int redrawn = 0;
-};
-
-// Renders `frames` frames after `warmup` untimed ones, each finished with glFinish.
-template <typename SceneAt>
-Timing time_frames(render::Renderer& r, const render::Settings& s, const render::FrameInputs& in, int warmup, int frames,
-                   SceneAt scene_at) {
-    std::vector<double> ms;
-    Timing t;
-    for (int i = 0; i < warmup + frames; ++i) {
-        const scene::Scene& sc = scene_at(i);
-        const auto start = Clock::now();
-        const render::FramePlan& plan = r.render(sc, s, in);
-        r.finish();
-        const double elapsed = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-        if (i >= warmup) {
-            ms.push_back(elapsed);
-            t.redrawn += plan.drawn("shadow-map") ? 1 : 0;
-        }
-    }
-    t.median_ms = measure::median(ms);
-    return t;
 }
 
 std::string load_average() {
@@ -532,6 +509,10 @@ void run_sweep(Sweep& w) {
 }  // namespace
 
 void run_bench(const BenchOptions& in) {
+    if (in.soft || in.truth_noise) {
+        run_soft_bench(in);
+        return;
+    }
     const auto t0 = Clock::now();
     Sweep w = configure(in);
     {

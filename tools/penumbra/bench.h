@@ -114,6 +114,48 @@ inline bool is_volumes(const std::string& technique) { return technique.rfind(kV
 // The technique column's suffix of the runs at the settings before issue 9 (bench.cpp, before_rows).
 inline constexpr const char* kBeforeSuffix = " (before)";
 
+// ---- bench.cpp: helpers the sweep and the soft-shadow bench (soft_bench.cpp) share -------------
+
+// "teapot@0.6" -> {teapot, 0.6, course@0.60}; "FILE.gltf" -> {FILE.gltf, 0, FILE's stem}.
+SceneSpec parse_scene_spec(const std::string& spec);
+
+// The red channel of an RGBA image: the visibility AOV, one byte per pixel.
+std::vector<std::uint8_t> red_channel(const std::vector<std::uint8_t>& rgba);
+
+// A static scene's "moving" frames: the light turned about the vertical axis through the scene's
+// centre, half a degree more each frame, so the map must be redrawn every time.
+void turn_light(scene::Light& light, const scene::Light& original, const glm::vec3& centre, int frame);
+
+struct Timing {
+    double median_ms = 0.0;
+    int redrawn = 0;
+};
+
+// Renders `frames` frames after `warmup` untimed ones, each finished with glFinish.
+template <typename SceneAt>
+Timing time_frames(render::Renderer& r, const render::Settings& s, const render::FrameInputs& in, int warmup, int frames,
+                   SceneAt scene_at) {
+    std::vector<double> ms;
+    Timing t;
+    for (int i = 0; i < warmup + frames; ++i) {
+        const scene::Scene& sc = scene_at(i);
+        const auto start = Clock::now();
+        const render::FramePlan& plan = r.render(sc, s, in);
+        r.finish();
+        const double elapsed = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        if (i >= warmup) {
+            ms.push_back(elapsed);
+            t.redrawn += plan.drawn("shadow-map") ? 1 : 0;
+        }
+    }
+    t.median_ms = measure::median(ms);
+    return t;
+}
+
+// ---- soft_bench.cpp: penumbra bench --soft ------------------------------------------------------
+
+void run_soft_bench(const BenchOptions& o);
+
 // ---- bench_report.cpp ------------------------------------------------------------------------
 
 // Writes results.csv, results.md, tradeoff.svg/.png and tradeoff_mae.svg/.png into `dir`;

@@ -54,6 +54,12 @@ struct BenchOptions {
     int soft_samples = -1;            // default 64 (quick 16)
     bool references = true;           // also the techniques none and planar
     std::string from_csv;             // rebuild the table and plots from these rows instead of measuring
+    // --soft: the soft-shadow bench instead (soft_bench.cpp): every soft method against the
+    // area-light truth at light radii of these fractions of the scene's size (default 0.02 0.05 0.15).
+    bool soft = false;
+    std::vector<double> radii;
+    // --truth-noise: only the area-light truth's own noise, mean |soft(N) - soft(4N)| (soft_bench.cpp).
+    bool truth_noise = false;
 };
 void run_bench(const BenchOptions& o);
 

@@ -37,7 +37,8 @@ std::shared_ptr<MeasureCommands> add_measure_commands(CLI::App& app) {
     m->truth_cmd->add_option("--out-dir", t.out_dir, "folder for the PNGs (default out/truth)");
     m->truth_cmd->add_option("--soft-samples", t.soft_samples, "also an area light, this many samples per pixel (default 0: none)");
     m->truth_cmd->add_option("--light-radius", t.light_radius,
-                             "area light radius: world units (point, spot) or radians (directional); default as bench");
+                             "area light radius: world units (point, spot) or radians (directional); default the scene light's "
+                             "(glTF extras penumbra.radius), else 1% of the scene's size (the bench's)");
     m->truth_cmd->add_option("--score", t.score, "a visibility PNG of the same frame and size to score against the truth");
     m->truth_cmd->add_flag("--json", t.json,
                            "with --score: print one JSON object (scene, time, width, height and one key per score column, "
@@ -60,7 +61,17 @@ std::shared_ptr<MeasureCommands> add_measure_commands(CLI::App& app) {
     m->bench_cmd->add_option("--from-csv", b.from_csv,
                              "measure nothing: rebuild results.md and the plots from this CSV's rows (ours, or others' "
                              "with the same columns, e.g. three.js runs scored by penumbra truth --score)");
-    m->bench_cmd->add_option("--soft-samples", b.soft_samples, "area-light samples per pixel for the soft truth (default 64, 0: none)");
+    m->bench_cmd->add_option("--soft-samples", b.soft_samples,
+                             "area-light samples per pixel for the soft truth (default 64, 0: none; with --soft 512, quick 256)");
+    m->bench_cmd->add_flag("--soft", b.soft,
+                           "the soft-shadow bench instead: hard, PCF, PCSS, Heckbert-Herf (and Gooch) against the area-light "
+                           "truth at several light sizes -> soft.csv, soft.md, soft.svg/.png (docs/soft.md)");
+    m->bench_cmd->add_option("--radii", b.radii,
+                             "with --soft: light radii as fractions of the scene's size, comma separated (default "
+                             "0.02,0.05,0.15; quick 0.15)")->delimiter(',');
+    m->bench_cmd->add_flag("--truth-noise", b.truth_noise,
+                           "only the area-light truth's own noise: mean |soft(N) - soft(4N)| on the course scene, N = 64, "
+                           "256, 1024 -> soft_truth_noise.csv (part of a full --soft run too)");
 #endif
     return m;
 }
