@@ -117,6 +117,28 @@ export function check(condition, message) {
   if (!condition) throw new Error(message);
 }
 
+// The page's pending GL errors (window.penumbra.glError until 0; at most 16).
+export async function glErrors(page) {
+  return page.evaluate(() => {
+    const out = [];
+    for (let e = window.penumbra.glError(), i = 0; e !== 0 && i < 16; e = window.penumbra.glError(), ++i) out.push(e);
+    return out;
+  });
+}
+
+// Sets render options through the page's module (window.penumbra.setOption); fails the test on
+// the first one the page refuses.
+export async function setOptions(page, options) {
+  const err = await page.evaluate((o) => {
+    for (const [k, v] of Object.entries(o)) {
+      const e = window.penumbra.setOption(k, v);
+      if (e) return `${k}=${v}: ${e}`;
+    }
+    return '';
+  }, options);
+  check(err === '', `setOption ${err}`);
+}
+
 // Runs `body` with a browser and the served site, closing both whatever happens; prints PASS or
 // the failure and sets the exit status.
 export async function runTest(name, body) {

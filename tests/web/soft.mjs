@@ -12,7 +12,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { runTest, openPage, waitFrames, readPixels, frameAt, compare, check } from './harness.mjs';
+import { runTest, openPage, waitFrames, readPixels, frameAt, compare, check, glErrors, setOptions } from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
 if (!cli || !outDir) throw new Error('usage: soft.mjs PENUMBRA_CLI OUT_DIR');
@@ -29,25 +29,6 @@ function penumbra(px) {
   let n = 0;
   for (let i = 0; i < px.width * px.height; ++i) if (px.data[4 * i] > 12 && px.data[4 * i] < 243) ++n;
   return n / (px.width * px.height);
-}
-
-async function glErrors(page) {
-  return page.evaluate(() => {
-    const out = [];
-    for (let e = window.penumbra.glError(), i = 0; e !== 0 && i < 16; e = window.penumbra.glError(), ++i) out.push(e);
-    return out;
-  });
-}
-
-async function setOptions(page, options) {
-  const err = await page.evaluate((o) => {
-    for (const [k, v] of Object.entries(o)) {
-      const e = window.penumbra.setOption(k, v);
-      if (e) return `${k}=${v}: ${e}`;
-    }
-    return '';
-  }, options);
-  check(err === '', `setOption ${err}`);
 }
 
 async function frameWith(page, options) {

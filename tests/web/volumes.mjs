@@ -9,7 +9,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { runTest, openPage, frameAt, compare, check } from './harness.mjs';
+import { runTest, openPage, frameAt, compare, check, glErrors, setOptions } from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
 if (!cli || !outDir) throw new Error('usage: volumes.mjs PENUMBRA_CLI OUT_DIR');
@@ -28,23 +28,8 @@ function shadowed(px) {
   return n / (px.width * px.height);
 }
 
-async function glErrors(page) {
-  return page.evaluate(() => {
-    const out = [];
-    for (let e = window.penumbra.glError(), i = 0; e !== 0 && i < 16; e = window.penumbra.glError(), ++i) out.push(e);
-    return out;
-  });
-}
-
 async function frameWith(page, options) {
-  const err = await page.evaluate((o) => {
-    for (const [k, v] of Object.entries(o)) {
-      const e = window.penumbra.setOption(k, v);
-      if (e) return `${k}=${v}: ${e}`;
-    }
-    return '';
-  }, options);
-  check(err === '', `setOption ${err}`);
+  await setOptions(page, options);
   return frameAt(page, T);
 }
 

@@ -25,15 +25,8 @@
 namespace fs = std::filesystem;
 
 namespace penumbra::tools::bench {
-namespace {
 
-std::string bytes_str(std::size_t b) {
-    if (b == 0) return "0";
-    if (b >= (1u << 20)) return fixed(static_cast<double>(b) / (1u << 20), b >= (16u << 20) ? 0 : 1) + " MiB";
-    return fixed(static_cast<double>(b) / 1024.0, 0) + " KiB";
-}
-
-void write_text(const fs::path& path, const std::string& text) {
+void write_text(const std::filesystem::path& path, const std::string& text) {
     const fs::path tmp = path.string() + ".tmp";
     {
         std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
@@ -44,6 +37,15 @@ void write_text(const fs::path& path, const std::string& text) {
     fs::rename(tmp, path, ec);
     if (ec) throw CommandError{path.string() + ": cannot write (" + ec.message() + ")", 1};
 }
+
+namespace {
+
+std::string bytes_str(std::size_t b) {
+    if (b == 0) return "0";
+    if (b >= (1u << 20)) return fixed(static_cast<double>(b) / (1u << 20), b >= (16u << 20) ? 0 : 1) + " MiB";
+    return fixed(static_cast<double>(b) / 1024.0, 0) + " KiB";
+}
+
 
 // One row per scene frame and technique; the score's columns are the score table's
 // (measure/score_columns.h), between the frame's and the time's.

@@ -184,17 +184,6 @@ std::string load_average() {
     return f >> one ? one : std::string("?");
 }
 
-void write_text(const fs::path& path, const std::string& text) {
-    const fs::path tmp = path.string() + ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        f << text;
-        if (!f) throw CommandError{path.string() + ": cannot write", 1};
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) throw CommandError{path.string() + ": cannot write (" + ec.message() + ")", 1};
-}
 
 // ---- the truth's own noise ---------------------------------------------------------------------
 
