@@ -400,9 +400,7 @@ std::string area_key(const PlanContext& c) {
     key.add(l.spot_outer_cone);
     for (int i : c.drawable) {
         const scene::Object& o = c.scene.objects[static_cast<size_t>(i)];
-        key.add(i);
-        key.add(o.world);
-        key.add(o.mesh);
+        key.add_placement(c.scene, i);
         key.add(o.casts_shadow);
         key.add(o.receives_shadow);
     }

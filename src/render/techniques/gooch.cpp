@@ -181,11 +181,7 @@ public:
         d.wrap = gl::Wrap::Clamp;
         ContentKey key;
         key.add(f.view_proj());
-        for (int i : casters) {
-            key.add(i);
-            key.add(c.scene.objects[static_cast<size_t>(i)].world);
-            key.add(c.scene.objects[static_cast<size_t>(i)].mesh);
-        }
+        for (int i : casters) key.add_placement(c.scene, i);
         const int r = c.add_resource(d, key.str(), "the casters seen from the light, black on white");
 
         Pass p;

@@ -127,11 +127,7 @@ public:
         // The map depends on the light's matrix, the casters and how depth is packed.
         ContentKey key;
         key.add(f.view_proj());
-        for (int i : casters) {
-            key.add(i);
-            key.add(c.scene.objects[static_cast<size_t>(i)].world);
-            key.add(c.scene.objects[static_cast<size_t>(i)].mesh);
-        }
+        for (int i : casters) key.add_placement(c.scene, i);
         key.add(s.encoding);
         key.add(s.map_faces);
         key.add(c.depth_path.mediump);

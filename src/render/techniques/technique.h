@@ -33,6 +33,12 @@ public:
     void add(const T& value) {
         add(&value, sizeof value);
     }
+    // Where scene object `object` stands and what it is: its index, world matrix and mesh.
+    void add_placement(const scene::Scene& scene, int object) {
+        add(object);
+        add(scene.objects[static_cast<size_t>(object)].world);
+        add(scene.objects[static_cast<size_t>(object)].mesh);
+    }
     std::string str() const;
 
 private:
