@@ -10,6 +10,7 @@
 #include <cstring>
 #include <exception>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "scene/gltf_internal.h"
@@ -66,28 +67,25 @@ std::string file_extension(const std::string& path) {
 
 }  // namespace
 
-LoadResult load_gltf(const std::string& path) {
+LoadResult load_gltf_memory(const std::string& name, const unsigned char* bytes, std::size_t size,
+                            const std::string& base_dir, const LoadOptions& options) {
+    (void)options;
     LoadResult result;
+    const std::string& path = name;
     try {
         const std::string ext = file_extension(path);
         if (ext != ".gltf" && ext != ".glb") {
             result.error = path + ": unknown file extension '" + ext + "' (expected .gltf or .glb)";
             return result;
         }
-        {
-            // tinygltf's own message for a missing file is vaguer than errno's.
-            errno = 0;
-            std::ifstream probe(path, std::ios::binary);
-            if (!probe) {
-                result.error = path + ": cannot open file: " + (errno ? std::strerror(errno) : "unreadable");
-                return result;
-            }
-        }
         tinygltf::TinyGLTF loader;
         tinygltf::Model model;
         std::string err, warn;
-        const bool parsed = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                                          : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+        const bool parsed =
+            ext == ".glb"
+                ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes, static_cast<unsigned int>(size), base_dir)
+                : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes),
+                                             static_cast<unsigned int>(size), base_dir);
         for (const auto& w : split_lines(warn)) result.warnings.push_back(path + ": " + w);
         if (!parsed) {
             result.error = path + ": invalid glTF: " + (err.empty() ? "tinygltf could not parse it" : one_line(err));
@@ -102,6 +100,25 @@ LoadResult load_gltf(const std::string& path) {
     }
     if (!result.ok) result.scene = Scene{};  // no half-built scene escapes a failed load
     return result;
+}
+
+LoadResult load_gltf(const std::string& path, const LoadOptions& options) {
+    LoadResult result;
+    const std::string ext = file_extension(path);
+    if (ext != ".gltf" && ext != ".glb") {
+        result.error = path + ": unknown file extension '" + ext + "' (expected .gltf or .glb)";
+        return result;
+    }
+    errno = 0;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        result.error = path + ": cannot open file: " + (errno ? std::strerror(errno) : "unreadable");
+        return result;
+    }
+    const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto slash = path.find_last_of('/');
+    return load_gltf_memory(path, bytes.data(), bytes.size(), slash == std::string::npos ? "." : path.substr(0, slash),
+                            options);
 }
 
 }  // namespace penumbra::scene

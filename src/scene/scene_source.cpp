@@ -5,13 +5,13 @@
 namespace penumbra::scene {
 
 bool SceneSource::open(const std::string& name, std::string& error, std::vector<std::string>& warnings,
-                       int teapot_level) {
+                       int teapot_level, const LoadOptions& load) {
     course_.reset();
     if (name == "teapot") {
         course_ = make_course_scene(teapot_level);
         return true;
     }
-    LoadResult r = load_gltf(name);
+    LoadResult r = load_gltf(name, load);
     warnings = r.warnings;
     if (!r.ok) {
         error = r.error;

@@ -8,6 +8,7 @@
 
 #include "scene/course_scene.h"
 #include "scene/eye.h"
+#include "scene/gltf_loader.h"
 #include "scene/scene.h"
 
 namespace penumbra::scene {
@@ -17,7 +18,7 @@ public:
     // Returns false with `error` set (one line) when the scene cannot be loaded; warnings are
     // the loader's notes (a missing camera or light replaced by a default).
     bool open(const std::string& name, std::string& error, std::vector<std::string>& warnings,
-              int teapot_level = 10);
+              int teapot_level = 10, const LoadOptions& load = {});
     // The scene at time t (both the light's and the jump's clocks at t), seen from the eye.
     const Scene& at(double t);
     // Where at() puts the eye from now on (Eye::Scene: the scene's own camera).
