@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <malloc.h>
 #include <memory>
 #include <string>
 #include <vector>
@@ -195,6 +196,9 @@ int penumbra_height() { return g ? g->height : 0; }
 // The oldest pending GL error (0: none), through Emscripten's glGetError.
 unsigned penumbra_gl_error() { return g && !g->lost ? gl::take_error() : 0u; }
 const char* penumbra_plan() { return hand(g && g->app ? g->app->last_plan() : ""); }
+// The wasm heap's bytes in use (malloc's allocated blocks; Module.HEAP8.length is the whole heap):
+// the soak (tests/web/soak.mjs) watches it for leaks.
+unsigned long penumbra_heap_used() { return static_cast<unsigned long>(mallinfo().uordblks); }
 
 }  // extern "C"
 
