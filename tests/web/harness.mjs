@@ -57,10 +57,12 @@ export async function launch() {
 }
 
 // Opens `url` in a fresh 1280x900 page, waits for the module (window.penumbra.ready) and returns
-// {page, problems}: problems collects console errors, page errors and failed requests.
-export async function openPage(browser, url, { waitReady = true } = {}) {
+// {page, problems}: problems collects console errors, page errors and failed requests. `init`: a
+// function run in the page before any of its scripts (page.addInitScript), e.g. to wrap WebGL calls.
+export async function openPage(browser, url, { waitReady = true, init = null } = {}) {
   const context = await browser.newContext({ viewport: { width: 1280, height: 900 } });
   const page = await context.newPage();
+  if (init) await page.addInitScript(init);
   const problems = [];
   page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
   page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
