@@ -112,7 +112,7 @@ namespace {
 
 std::string number_text(double v) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
+    std::snprintf(buf, sizeof buf, "%.10g", v);  // 1000000, not 1e+06
     return buf;
 }
 
@@ -146,7 +146,7 @@ std::string accepted_values(const OptionInfo& o) {
         case OptionType::Choice: return word_list(o.choices);
         case OptionType::Integer: return "a whole number" + range_words(o);
         case OptionType::Number: return "a number" + range_words(o);
-        case OptionType::Size: return "WIDTHxHEIGHT";
+        case OptionType::Size: return "WIDTHxHEIGHT" + (std::isfinite(o.max) ? ", each <= " + number_text(o.max) : std::string());
         case OptionType::Text: return std::string(o.help);
         case OptionType::NumberOrWord: return "a number" + range_words(o) + ", or " + word_list(o.choices);
     }
@@ -155,7 +155,7 @@ std::string accepted_values(const OptionInfo& o) {
 
 std::string check_value(const OptionInfo& o, std::string_view value) {
     const std::string opt = "--" + std::string(o.name) + ": ";
-    const std::string quoted = "'" + std::string(value) + "'";
+    const std::string quoted = "'" + scene::printable(value) + "'";  // one line, valid UTF-8
     const auto among = [&] {
         for (const Choice& c : o.choices)
             if (c.value == value) return true;
@@ -175,9 +175,15 @@ std::string check_value(const OptionInfo& o, std::string_view value) {
         case OptionType::NumberOrWord: {
             if (o.type == OptionType::NumberOrWord && among()) return {};
             double v = 0.0;
-            if (!parse_number(value, v))
+            if (!parse_number(value, v)) {
+                const std::string text(value);
+                char* end = nullptr;
+                const double x = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
+                if (!text.empty() && end == text.c_str() + text.size() && !std::isfinite(x))
+                    return opt + "must be a finite number" + range_words(o) + ", got " + quoted;
                 return opt + "not a number: " + quoted +
                        (o.type == OptionType::NumberOrWord ? " (or " + word_list(o.choices, "'") + ")" : "");
+            }
             if (std::string r = range_problem(o, v); !r.empty()) return opt + r + ", got " + quoted;
             return {};
         }
@@ -185,6 +191,8 @@ std::string check_value(const OptionInfo& o, std::string_view value) {
             int w = 0, h = 0;
             if (!parse_size(value, w, h)) return opt + "expected WIDTHxHEIGHT, got " + quoted;
             if (w < 1 || h < 1) return opt + "width and height must be at least 1, got " + quoted;
+            if (std::isfinite(o.max) && (w > o.max || h > o.max))
+                return opt + "width and height must be at most " + number_text(o.max) + " (the maximum), got " + quoted;
             return {};
         }
         case OptionType::Text:
@@ -257,10 +265,14 @@ std::vector<Option<Options>> make_table() {
         [](const Options& o) { return o.job.scene; });
 
     OptionInfo time = make_option_info("time", P::Job, T::Number, "seconds; the animation is a pure function of t", "Time (s)");
+    time.min = -kMaxTime;
+    time.max = kMaxTime;
     add(time, [](Options& o, std::string_view v) { o.job.time = number_of(v); },
         [](const Options& o) { return format_number(o.job.time); });
 
     OptionInfo size = make_option_info("size", P::Job, T::Size, "WxH of the image", "Image size");
+    size.min = 1;
+    size.max = kMaxImageSide;
     add(size, [](Options& o, std::string_view v) { parse_size(v, o.job.width, o.job.height); },
         [](const Options& o) { return std::to_string(o.job.width) + "x" + std::to_string(o.job.height); });
 
@@ -285,6 +297,7 @@ std::vector<Option<Options>> make_table() {
 
     OptionInfo map_size = make_option_info("map-size", P::Technique, T::Integer, "shadow map width = height in texels", "Map size");
     map_size.min = 1;
+    map_size.max = kMaxMapSize;
     map_size.presets = {{"256", "256 x 256"}, {"512", "512 x 512"}, {"1024", "1024 x 1024"}, {"2048", "2048 x 2048"},
                         {"4096", "4096 x 4096"}};
     add(map_size, [](Options& o, std::string_view v) { o.settings.map_size = int_of(v); },
@@ -356,7 +369,7 @@ std::vector<Option<Options>> make_table() {
                          "penumbra.radius; the course scene's is 0); 0 = a point light",
                          "Light radius", {{"scene", "the scene's"}});
     light_radius.min = 0.0;
-    light_radius.max = 1e6;
+    light_radius.max = kMaxLightRadius;
     light_radius.step = 0.01;
     add(light_radius,
         [](Options& o, std::string_view v) {
@@ -449,6 +462,7 @@ std::vector<Option<Options>> make_table() {
     OptionInfo frames = make_option_info("frames", P::Job, T::Integer, "render N frames, t advancing 1/60 s, and print the median ms/frame",
                       "Frames");
     frames.min = 1;
+    frames.max = kMaxFrames;
     add(frames, [](Options& o, std::string_view v) { o.job.frames = int_of(v); },
         [](const Options& o) { return std::to_string(o.job.frames); });
     return t;
@@ -472,7 +486,7 @@ std::string parse_option(Options& o, std::string_view name, std::string_view val
 
 std::string parse_option(Settings& s, std::string_view name, std::string_view value) {
     const auto* o = find_option(option_table(), name);
-    if (o && o->info.part != OptionPart::Technique) return "--" + std::string(name) + ": not a technique setting";
+    if (o && o->info.part != OptionPart::Technique) return "--" + scene::printable(name) + ": not a technique setting";
     Options all;
     all.settings = s;
     std::string err = parse_option(all, name, value);
@@ -500,7 +514,7 @@ std::string args_of(const std::vector<std::pair<std::string, std::string>>& pair
     std::string out;
     for (const auto& [k, v] : pairs) {
         if (k == "out" && v.empty()) continue;
-        out += (out.empty() ? "--" : " --") + k + " " + v;
+        out += (out.empty() ? "--" : " --") + k + " " + scene::printable(v);  // a log's one line
     }
     return out;
 }

@@ -14,8 +14,17 @@
 #include <vector>
 
 #include "render/settings.h"
+#include "scene/printable.h"
 
 namespace penumbra::render {
+
+// The bounds of the job's numbers (the table's ranges, the measuring commands' too).
+inline constexpr int kMaxImageSide = 16384;    // --size: each side (llvmpipe's and most GPUs' maximum)
+inline constexpr int kMaxFrames = 10000;       // --frames (render, plan, bench)
+inline constexpr double kMaxTime = 1e6;        // --time: seconds, either sign (about 11 days)
+inline constexpr int kMaxMapSize = 65536;      // --map-size (the context clamps it further, with a note)
+inline constexpr int kMaxSoftSamples = 16384;  // --soft-samples of truth and bench (area-light rays per pixel)
+inline constexpr double kMaxLightRadius = 1e6; // --light-radius
 
 // The job part: what to render and where the result goes.
 struct Job {
@@ -41,7 +50,7 @@ enum class OptionType {
     Choice,        // one of `choices`
     Integer,       // a whole number in [min, max]
     Number,        // a finite number in [min, max]
-    Size,          // WIDTHxHEIGHT, each a whole number >= 1
+    Size,          // WIDTHxHEIGHT, each a whole number in [1, max]
     Text,          // any non-empty text
     NumberOrWord,  // a number in [min, max] or one of `choices` (bias: default, auto)
 };
@@ -97,7 +106,7 @@ template <typename Target>
 std::string set_option(const std::vector<Option<Target>>& table, Target& target, std::string_view name,
                        std::string_view value) {
     const Option<Target>* o = find_option(table, name);
-    if (!o) return "unknown option --" + std::string(name);
+    if (!o) return "unknown option --" + scene::printable(name);
     if (std::string err = check_value(o->info, value); !err.empty()) return err;
     o->store(target, value);
     return {};
@@ -115,7 +124,8 @@ std::string parse_option(Settings& s, std::string_view name, std::string_view va
 // Every option (or every one of `part`) with its value, as parse_option reads it back.
 std::vector<std::pair<std::string, std::string>> to_pairs(const Options& o);
 std::vector<std::pair<std::string, std::string>> to_pairs(const Settings& s);
-// "--scene teapot --time 0 ..." for labels and logs (an empty --out is left out).
+// "--scene teapot --time 0 ..." for labels and logs (an empty --out is left out; each value through
+// scene::printable, so the line stays one line).
 std::string to_args(const Options& o);
 std::string to_args(const Settings& s);
 

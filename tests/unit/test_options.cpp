@@ -123,15 +123,22 @@ TEST(Options, BadValuesAreNamedAndLeaveTheOptionsAlone) {
         {"size", "0x100", "--size: width and height must be at least 1, got '0x100'"},
         {"size", "100", "--size: expected WIDTHxHEIGHT, got '100'"},
         {"size", "10x10x10", "--size: expected WIDTHxHEIGHT, got '10x10x10'"},
-        {"map-size", "-4", "--map-size: must be at least 1, got '-4'"},
+        {"map-size", "-4", "--map-size: must lie in [1, 65536], got '-4'"},
+        {"map-size", "65537", "--map-size: must lie in [1, 65536], got '65537'"},
+        {"size", "16385x16", "--size: width and height must be at most 16384 (the maximum), got '16385x16'"},
         {"map-size", "1.5", "--map-size: not a whole number: '1.5'"},
         {"map-size", "99999999999", "--map-size: not a whole number: '99999999999'"},
-        {"time", "nan", "--time: not a number: 'nan'"},
+        {"time", "nan", "--time: must be a finite number in [-1000000, 1000000], got 'nan'"},
+        {"time", "-inf", "--time: must be a finite number in [-1000000, 1000000], got '-inf'"},
+        {"time", "1e7", "--time: must lie in [-1000000, 1000000], got '1e7'"},
+        {"time", "a\nb", "--time: not a number: 'a\\nb'"},  // one line: the newline shown as \n
+        {"light-radius", "inf", "--light-radius: must be a finite number in [0, 1000000], got 'inf'"},
         {"time", "1s", "--time: not a number: '1s'"},
         {"precision", "lowp", "--precision: unknown value 'lowp' (highp, mediump)"},
         {"bias", "slope", "--bias: not a number: 'slope' (or 'auto', 'sheet')"},
         {"bias", "2", "--bias: must lie in [0, 1], got '2'"},
-        {"frames", "0", "--frames: must be at least 1, got '0'"},
+        {"frames", "0", "--frames: must lie in [1, 10000], got '0'"},
+        {"frames", "10001", "--frames: must lie in [1, 10000], got '10001'"},
         {"aov", "normal", "--aov: unknown value 'normal' (color, visibility, light-depth, stencil-count)"},
         {"technique", "volume", "--technique: unknown value 'volume' (shadowmap, planar, volumes, gooch, none)"},
         {"volume-method", "zmid", "--volume-method: unknown value 'zmid' (auto, zpass, zfail)"},
@@ -167,7 +174,8 @@ TEST(Options, ArgsLabelTheResult) {
 
 TEST(Options, AcceptedValuesAndListsComeFromTheTable) {
     EXPECT_EQ(accepted_values(option_info("encoding")), "r8, rgba, depthtex");
-    EXPECT_EQ(accepted_values(option_info("map-size")), "a whole number >= 1");
+    EXPECT_EQ(accepted_values(option_info("map-size")), "a whole number in [1, 65536]");
+    EXPECT_EQ(accepted_values(option_info("size")), "WIDTHxHEIGHT, each <= 16384");
     EXPECT_EQ(accepted_values(option_info("bias")), "a number in [0, 1], or auto, sheet");
     std::vector<std::string> out;
     EXPECT_EQ(parse_list(option_info("filter"), "hard,pcf4x4", out), "");
