@@ -6,11 +6,15 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <algorithm>
 #include <map>
+#include <stdexcept>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 #include <stb_image_write.h>  // implementation compiled in src/thirdparty/thirdparty_impl.cpp
+
+#include "scene/printable.h"
 
 namespace penumbra::scene {
 namespace {
@@ -39,17 +43,18 @@ std::string base64(const std::uint8_t* data, size_t size) {
     return out;
 }
 
-json matrix_json(const glm::mat4& m) {
-    json a = json::array();
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r) a.push_back(static_cast<double>(m[c][r]));
-    return a;
-}
+// A name in the file as text (JSON is UTF-8): a name that is not valid UTF-8 goes in escaped.
+std::string text(const std::string& name) { return valid_utf8(name) ? name : printable(name); }
 
-json vec_json(const float* v, int n) {
-    json a = json::array();
-    for (int i = 0; i < n; ++i) a.push_back(static_cast<double>(v[i]));
-    return a;
+template <typename V>
+bool all_finite(const std::vector<V>& values, size_t& bad) {
+    for (size_t i = 0; i < values.size(); ++i)
+        for (int k = 0; k < V::length(); ++k)
+            if (!std::isfinite(values[i][k])) {
+                bad = i;
+                return false;
+            }
+    return true;
 }
 
 // A rigid frame whose -Z is `forward` (glTF cameras and lights look down their -Z), at `origin`.
@@ -72,8 +77,13 @@ class Writer {
 public:
     explicit Writer(const GltfWriteOptions& o) : options_(o) {}
 
+    // The first value that cannot be written ("" when none): a number that is not finite (JSON has
+    // no NaN or infinity; nlohmann would write null, which no loader takes back) or a camera that
+    // glTF cannot express.
+    const std::string& problem() const { return problem_; }
+
     json run(const Scene& s) {
-        doc_["asset"] = {{"version", "2.0"}, {"generator", options_.generator}};
+        doc_["asset"] = {{"version", "2.0"}, {"generator", text(options_.generator)}};
         for (auto key : {"buffers", "bufferViews", "accessors", "meshes", "nodes", "materials", "images",
                          "samplers", "textures"})
             doc_[key] = json::array();
@@ -82,8 +92,8 @@ public:
         for (const auto& o : s.objects) {
             const int mesh = mesh_for(s, o);
             if (mesh < 0) continue;
-            json node = {{"name", o.name}, {"mesh", mesh}};
-            if (o.world != glm::mat4(1.0f)) node["matrix"] = matrix_json(o.world);
+            json node = {{"name", text(o.name)}, {"mesh", mesh}};
+            if (o.world != glm::mat4(1.0f)) node["matrix"] = matrix_json(o.world, "object '" + printable(o.name) + "': its world matrix");
             if (!o.casts_shadow || !o.receives_shadow)
                 node["extras"] = {{"penumbra", {{"castsShadow", o.casts_shadow}, {"receivesShadow", o.receives_shadow}}}};
             scene_nodes.push_back(add_node(std::move(node)));
@@ -103,6 +113,32 @@ public:
     }
 
 private:
+    // A number for the file; a non-finite one is recorded as the problem (named by `what`).
+    double number(double v, const std::string& what) {
+        if (!std::isfinite(v)) {
+            fail(what + " is not finite (" + (std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf") + ")");
+            return 0.0;
+        }
+        return v;
+    }
+
+    void fail(const std::string& why) {
+        if (problem_.empty()) problem_ = why;
+    }
+
+    json matrix_json(const glm::mat4& m, const std::string& what) {
+        json a = json::array();
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) a.push_back(number(static_cast<double>(m[c][r]), what));
+        return a;
+    }
+
+    json vec_json(const float* v, int n, const std::string& what) {
+        json a = json::array();
+        for (int i = 0; i < n; ++i) a.push_back(number(static_cast<double>(v[i]), what));
+        return a;
+    }
+
     int add_node(json node) {
         doc_["nodes"].push_back(std::move(node));
         return static_cast<int>(doc_["nodes"].size()) - 1;
@@ -133,8 +169,8 @@ private:
                 lo = glm::min(lo, p);
                 hi = glm::max(hi, p);
             }
-            a["min"] = vec_json(&lo.x, 3);
-            a["max"] = vec_json(&hi.x, 3);
+            a["min"] = vec_json(&lo.x, 3, "the positions' bounds");
+            a["max"] = vec_json(&hi.x, 3, "the positions' bounds");
         }
         return accessor(std::move(a));
     }
@@ -147,6 +183,11 @@ private:
         if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
         const Mesh& m = s.meshes[static_cast<size_t>(o.mesh)];
         int out = -1;
+        const std::string mesh_name = "mesh '" + printable(m.name) + "'";
+        size_t bad = 0;
+        if (!all_finite(m.positions, bad)) fail(mesh_name + ": position " + std::to_string(bad) + " is not finite");
+        if (!all_finite(m.normals, bad)) fail(mesh_name + ": normal " + std::to_string(bad) + " is not finite");
+        if (!all_finite(m.uvs, bad)) fail(mesh_name + ": uv " + std::to_string(bad) + " is not finite");
         if (!m.positions.empty() && m.indices.size() >= 3) {
             json attributes = {{"POSITION", vec3_accessor(m.positions, true)}};
             if (m.normals.size() == m.positions.size()) attributes["NORMAL"] = vec3_accessor(m.normals, false);
@@ -166,7 +207,7 @@ private:
                          {"mode", 4}};
             const int material = material_for(s, o.material);
             if (material >= 0) prim["material"] = material;
-            doc_["meshes"].push_back({{"name", m.name}, {"primitives", json::array({prim})}});
+            doc_["meshes"].push_back({{"name", text(m.name)}, {"primitives", json::array({prim})}});
             out = static_cast<int>(doc_["meshes"].size()) - 1;
         }
         meshes_[key] = out;
@@ -179,17 +220,19 @@ private:
         const Material& m = s.materials[static_cast<size_t>(index)];
         // Phong shininess as a roughness (Blinn-Phong <-> Beckmann: alpha^2 = 2 / (n + 2)), not
         // metallic: what a PBR renderer needs to look alike; the Phong values ride along in extras.
-        const double roughness = std::sqrt(std::sqrt(2.0 / (static_cast<double>(m.shininess) + 2.0)));
-        json pbr = {{"baseColorFactor", vec_json(&m.base_color.x, 4)},
+        const std::string what = "material '" + printable(m.name) + "'";
+        const double shininess = number(static_cast<double>(m.shininess), what + ": shininess");
+        const double roughness = std::min(1.0, std::sqrt(std::sqrt(2.0 / (std::max(shininess, 0.0) + 2.0))));
+        json pbr = {{"baseColorFactor", vec_json(&m.base_color.x, 4, what + ": base colour")},
                     {"metallicFactor", 0.0},
                     {"roughnessFactor", roughness}};
         const int texture = texture_for(s, m.base_color_texture);
         if (texture >= 0) pbr["baseColorTexture"] = {{"index", texture}};
         doc_["materials"].push_back(
-            {{"name", m.name},
+            {{"name", text(m.name)},
              {"pbrMetallicRoughness", pbr},
-             {"extras", {{"penumbra", {{"specular", static_cast<double>(m.specular)},
-                                       {"shininess", static_cast<double>(m.shininess)}}}}}});
+             {"extras", {{"penumbra", {{"specular", number(static_cast<double>(m.specular), what + ": specular")},
+                                       {"shininess", shininess}}}}}});
         const int out = static_cast<int>(doc_["materials"].size()) - 1;
         materials_[index] = out;
         return out;
@@ -224,40 +267,50 @@ private:
     }
 
     int add_camera(const Camera& c) {
-        json persp = {{"yfov", static_cast<double>(c.yfov)},
-                      {"znear", static_cast<double>(c.znear)},
-                      {"zfar", static_cast<double>(c.zfar)}};
+        const double yfov = number(static_cast<double>(c.yfov), "the camera's yfov");
+        const double znear = number(static_cast<double>(c.znear), "the camera's znear");
+        const double zfar = number(static_cast<double>(c.zfar), "the camera's zfar");
+        // What glTF's perspective camera requires (and the loader would otherwise replace).
+        if (!(yfov > 0.0 && yfov < 3.14159265358979)) fail("the camera's yfov " + std::to_string(yfov) + " is not in (0, pi)");
+        if (!(znear > 0.0)) fail("the camera's znear " + std::to_string(znear) + " is not > 0");
+        if (!(zfar > znear)) fail("the camera's zfar " + std::to_string(zfar) + " is not > its znear");
+        json persp = {{"yfov", yfov}, {"znear", znear}, {"zfar", zfar}};
         const float aspect = c.aspect > 0.0f ? c.aspect : options_.aspect;
-        if (aspect > 0.0f) persp["aspectRatio"] = static_cast<double>(aspect);
+        if (aspect > 0.0f) persp["aspectRatio"] = number(static_cast<double>(aspect), "the camera's aspect ratio");
         doc_["cameras"] = json::array({{{"name", "camera"}, {"type", "perspective"}, {"perspective", persp}}});
         // The camera node's world matrix is the inverse of the view, computed in double.
         const glm::mat4 world = glm::mat4(glm::inverse(glm::dmat4(c.view)));
-        return add_node({{"name", "camera"}, {"camera", 0}, {"matrix", matrix_json(world)}});
+        return add_node({{"name", "camera"}, {"camera", 0}, {"matrix", matrix_json(world, "the camera's matrix")}});
     }
 
     int add_light(const Light& l) {
-        json light = {{"name", "light"}, {"color", vec_json(&l.color.x, 3)}, {"intensity", static_cast<double>(l.intensity)}};
-        if (l.radius > 0.0f) light["extras"] = {{"penumbra", {{"radius", static_cast<double>(l.radius)}}}};
+        json light = {{"name", "light"},
+                      {"color", vec_json(&l.color.x, 3, "the light's colour")},
+                      {"intensity", number(static_cast<double>(l.intensity), "the light's intensity")}};
+        if (l.radius > 0.0f) light["extras"] = {{"penumbra", {{"radius", number(static_cast<double>(l.radius), "the light's radius")}}}};
         json node = {{"name", "light"}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}};
         switch (l.type) {
             case LightType::Directional: light["type"] = "directional"; break;
             case LightType::Point: light["type"] = "point"; break;
             case LightType::Spot:
                 light["type"] = "spot";
-                light["spot"] = {{"innerConeAngle", static_cast<double>(l.spot_inner_cone)},
-                                 {"outerConeAngle", static_cast<double>(l.spot_outer_cone)}};
+                light["spot"] = {{"innerConeAngle", number(static_cast<double>(l.spot_inner_cone), "the spot light's inner cone")},
+                                 {"outerConeAngle", number(static_cast<double>(l.spot_outer_cone), "the spot light's outer cone")}};
                 break;
         }
         if (l.type == LightType::Point) {
-            node["translation"] = vec_json(&l.position.x, 3);
+            node["translation"] = vec_json(&l.position.x, 3, "the light's position");
         } else {
-            node["matrix"] = matrix_json(frame_looking(l.position, l.direction));
+            vec_json(&l.position.x, 3, "the light's position");
+            vec_json(&l.direction.x, 3, "the light's direction");
+            node["matrix"] = matrix_json(frame_looking(l.position, l.direction), "the light's matrix");
         }
         doc_["extensions"] = {{"KHR_lights_punctual", {{"lights", json::array({light})}}}};
         return add_node(std::move(node));
     }
 
     const GltfWriteOptions& options_;
+    std::string problem_;
     json doc_ = json::object();
     std::vector<std::uint8_t> bin_;
     std::map<std::pair<int, int>, int> meshes_;
@@ -267,28 +320,43 @@ private:
 
 }  // namespace
 
-std::string to_gltf(const Scene& scene, const GltfWriteOptions& options) {
+std::string to_gltf(const Scene& scene, const GltfWriteOptions& options, std::string& error) {
     Writer w(options);
-    return w.run(scene).dump(1);
+    const json doc = w.run(scene);
+    error = w.problem();
+    if (!error.empty()) return {};
+    // Every string went through text(): replacing would only ever touch what that missed.
+    return doc.dump(1, ' ', false, json::error_handler_t::replace);
+}
+
+std::string to_gltf(const Scene& scene, const GltfWriteOptions& options) {
+    std::string error;
+    std::string out = to_gltf(scene, options, error);
+    if (!error.empty()) throw std::invalid_argument("cannot write glTF: " + error);
+    return out;
 }
 
 std::string write_gltf(const std::string& path, const Scene& scene, const GltfWriteOptions& options) {
-    const std::string text = to_gltf(scene, options);
+    const std::string name = printable(path);  // one line, valid UTF-8, whatever the path's bytes
+    std::string error;
+    const std::string doc = to_gltf(scene, options, error);
+    if (!error.empty()) return name + ": not written: " + error;
     const std::string tmp = path + ".tmp";
     {
         std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        if (!f) return path + ": cannot write (" + std::strerror(errno) + ")";
-        f << text << "\n";
+        if (!f) return name + ": cannot write (" + std::strerror(errno) + ")";
+        f << doc << "\n";
         f.flush();
         if (!f) {
+            const std::string why = std::strerror(errno);
             std::remove(tmp.c_str());
-            return path + ": write failed";
+            return name + ": write failed (" + why + ")";
         }
     }
     if (std::rename(tmp.c_str(), path.c_str()) != 0) {
         const std::string why = std::strerror(errno);
         std::remove(tmp.c_str());
-        return path + ": cannot rename into place (" + why + ")";
+        return name + ": cannot rename into place (" + why + ")";
     }
     return {};
 }

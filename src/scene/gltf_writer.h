@@ -19,11 +19,17 @@ struct GltfWriteOptions {
     std::string generator = "penumbra";
 };
 
-// The glTF JSON text for `scene`; the camera is written from yfov/znear/zfar.
+// The glTF JSON text for `scene`; the camera is written from yfov/znear/zfar. Every file it
+// writes loads back: a value glTF cannot hold (a number that is not finite: JSON has no NaN, a
+// camera with znear <= 0, zfar <= znear or yfov outside (0, pi)) is refused, and `error` names the
+// first one ("the camera's znear is not finite (nan)"; "" when written). Names that are not valid
+// UTF-8 go in escaped (scene::printable).
+std::string to_gltf(const Scene& scene, const GltfWriteOptions& options, std::string& error);
+// The same; a refused value throws std::invalid_argument with the message.
 std::string to_gltf(const Scene& scene, const GltfWriteOptions& options = {});
 
 // Writes to_gltf(scene) to `path` through a temporary file renamed into place. Returns "" or one
-// line naming the problem.
+// line naming the problem (a refused value: nothing is written).
 std::string write_gltf(const std::string& path, const Scene& scene, const GltfWriteOptions& options = {});
 
 }  // namespace penumbra::scene
