@@ -10,6 +10,8 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include "scene/printable.h"
+
 namespace penumbra::measure {
 
 namespace {
@@ -21,31 +23,38 @@ void append(void* context, void* data, int size) {
 }  // namespace
 
 std::string write_png(const std::string& path, const Pixels& px) {
-    std::vector<std::uint8_t> encoded;
-    if (!stbi_write_png_to_func(append, &encoded, px.width, px.height, px.channels, px.data.data(),
-                                px.width * px.channels))
-        return path + ": could not encode PNG";
+    const std::string name = scene::printable(path);  // one line, valid UTF-8, whatever the path's bytes
+    if (px.width <= 0 || px.height <= 0 || px.channels < 1 || px.channels > 4 ||
+        px.data.size() < static_cast<size_t>(px.width) * static_cast<size_t>(px.height) * static_cast<size_t>(px.channels))
+        return name + ": no image to write";
     namespace fs = std::filesystem;
     const fs::path target(path);
     std::error_code ec;
     if (target.has_parent_path() && !fs::is_directory(target.parent_path(), ec))
-        return path + ": folder " + target.parent_path().string() + " does not exist";
+        return name + ": folder " + scene::printable(target.parent_path().string()) + " does not exist";
+    if (fs::is_directory(target, ec)) return name + ": cannot write (" + std::strerror(EISDIR) + ")";
+    std::vector<std::uint8_t> encoded;
+    if (!stbi_write_png_to_func(append, &encoded, px.width, px.height, px.channels, px.data.data(),
+                                px.width * px.channels))
+        return name + ": could not encode PNG";
     std::random_device rd;
     const fs::path tmp = target.string() + ".tmp" + std::to_string(rd() % 1000000u);
     {
         std::ofstream f(tmp, std::ios::binary);
-        if (!f) return path + ": cannot write (" + std::strerror(errno) + ")";
+        if (!f) return name + ": cannot write (" + std::strerror(errno) + ")";
         f.write(reinterpret_cast<const char*>(encoded.data()), static_cast<std::streamsize>(encoded.size()));
         f.close();
         if (!f) {
+            const std::string why = std::strerror(errno);
             fs::remove(tmp, ec);
-            return path + ": write failed";
+            return name + ": write failed (" + why + ")";
         }
     }
     fs::rename(tmp, target, ec);
     if (ec) {
+        const std::string why = ec.message();
         fs::remove(tmp, ec);
-        return path + ": cannot move the written file into place";
+        return name + ": cannot move the written file into place (" + why + ")";
     }
     return {};
 }
@@ -53,7 +62,8 @@ std::string write_png(const std::string& path, const Pixels& px) {
 std::string read_png(const std::string& path, Pixels& out, int channels) {
     int w = 0, h = 0, n = 0;
     unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, channels);
-    if (!data) return path + ": " + (stbi_failure_reason() ? stbi_failure_reason() : "cannot read PNG");
+    if (!data)
+        return scene::printable(path) + ": " + (stbi_failure_reason() ? stbi_failure_reason() : "cannot read PNG");
     out.width = w;
     out.height = h;
     out.channels = channels ? channels : n;
