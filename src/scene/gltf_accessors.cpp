@@ -163,11 +163,20 @@ std::uint32_t read_index(const AccessorData& a, size_t i) {
     }
 }
 
-std::vector<glm::vec3> read_vec3(const AccessorData& a) {
+// `name` names the accessor in the message when an element is not finite (NaN or infinite
+// floats would reach every matrix, bound and ray built from them).
+std::vector<glm::vec3> read_vec3(const AccessorData& a, const std::string& name) {
     std::vector<glm::vec3> out(a.count);
-    for (size_t i = 0; i < a.count; ++i)
+    for (size_t i = 0; i < a.count; ++i) {
         out[i] = glm::vec3(read_float(a, i, 0), read_float(a, i, 1), read_float(a, i, 2));
+        if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z))
+            fail(name + ": element " + std::to_string(i) + " is not finite");
+    }
     return out;
+}
+
+std::string accessor_name(int index, const std::string& what) {
+    return "accessors[" + std::to_string(index) + "] (" + what + ")";
 }
 
 // Area-weighted sum of the face normals around each vertex: smooth where triangles share
@@ -213,7 +222,7 @@ Mesh convert_primitive(const tinygltf::Model& model, int mesh_index, size_t p) {
                                    {TINYGLTF_COMPONENT_TYPE_FLOAT}, TINYGLTF_TYPE_VEC3);
     if (pos.count > std::numeric_limits<std::uint32_t>::max())
         fail(where + " has more vertices than 32-bit indices can address");
-    mesh.positions = read_vec3(pos);
+    mesh.positions = read_vec3(pos, accessor_name(pos_it->second, "POSITION of " + where));
     const size_t n = mesh.positions.size();
 
     if (prim.indices >= 0) {
@@ -246,7 +255,7 @@ Mesh convert_primitive(const tinygltf::Model& model, int mesh_index, size_t p) {
         if (nrm.count != n)
             fail(where + " has " + std::to_string(nrm.count) + " normals for " + std::to_string(n) +
                  " vertices");
-        mesh.normals = read_vec3(nrm);
+        mesh.normals = read_vec3(nrm, accessor_name(nrm_it->second, "NORMAL of " + where));
         // Shaders assume unit normals; files are not always careful. Zero or broken ones
         // fall back to the computed normal of that vertex.
         std::vector<glm::vec3> computed;
@@ -273,7 +282,12 @@ Mesh convert_primitive(const tinygltf::Model& model, int mesh_index, size_t p) {
             fail(where + " has " + std::to_string(uv.count) + " texture coordinates for " +
                  std::to_string(n) + " vertices");
         mesh.uvs.resize(n);
-        for (size_t i = 0; i < n; ++i) mesh.uvs[i] = glm::vec2(read_float(uv, i, 0), read_float(uv, i, 1));
+        for (size_t i = 0; i < n; ++i) {
+            mesh.uvs[i] = glm::vec2(read_float(uv, i, 0), read_float(uv, i, 1));
+            if (!std::isfinite(mesh.uvs[i].x) || !std::isfinite(mesh.uvs[i].y))
+                fail(accessor_name(uv_it->second, "TEXCOORD_0 of " + where) + ": element " + std::to_string(i) +
+                     " is not finite");
+        }
     }
     seal(mesh);
     return mesh;

@@ -27,6 +27,7 @@ struct LoadLimits {
     std::size_t max_elements = 1u << 20;                   // entries in any one top-level array (nodes, accessors...)
     std::size_t max_vertices = std::size_t{1} << 26;       // per accessor
     double max_coordinate = 1e12;                          // |world-space vertex, translation, light position|
+    std::size_t max_image_pixels = std::size_t{1} << 26;   // per decoded texture (256 MiB as RGBA8)
 };
 
 struct LoadOptions {

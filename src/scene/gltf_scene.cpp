@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <optional>
@@ -43,6 +44,12 @@ glm::mat4 local_matrix(const tinygltf::Node& node) {
     return m;
 }
 
+std::string short_number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
 bool finite(const glm::mat4& m) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -60,13 +67,14 @@ glm::vec3 node_forward(const glm::mat4& world) {
 // Builds the Scene from a parsed model; one instance per load so the caches stay local.
 class Converter {
 public:
-    Converter(const tinygltf::Model& model, LoadResult& result, const std::string& path)
-        : model_(model), result_(result), scene_(result.scene), path_(path) {}
+    Converter(const tinygltf::Model& model, LoadResult& result, const std::string& path, const LoadContext& context)
+        : model_(model), result_(result), scene_(result.scene), path_(path), context_(context) {}
 
     void run() {
         check_required_extensions();
         walk_nodes();
         if (scene_.objects.empty()) fail("the scene has no meshes to draw");
+        check_extent();
         const Bounds bounds = scene_bounds(scene_);
         set_camera(bounds);
         set_light(bounds);
@@ -75,6 +83,22 @@ public:
 
 private:
     void warn(const std::string& w) { result_.warnings.push_back(w); }
+
+    // Every world-space vertex within the limit: beyond it squared distances and matrix products
+    // leave float's range, and the ray tracer's bounds turn infinite.
+    void check_extent() const {
+        const double limit = context_.limits.max_coordinate;
+        for (size_t i = 0; i < scene_.objects.size(); ++i) {
+            const Bounds b = object_bounds(scene_, scene_.objects[i]);
+            if (b.empty()) continue;
+            for (const glm::vec3& c : corners(b))
+                for (int k = 0; k < 3; ++k)
+                    if (!(std::fabs(static_cast<double>(c[k])) <= limit))
+                        fail("nodes[" + std::to_string(object_nodes_[i]) + "] puts '" + scene_.objects[i].name +
+                             "' at a coordinate of " + short_number(c[k]) + ": over the limit of " +
+                             short_number(limit) + " world units");
+        }
+    }
 
     void check_required_extensions() {
         for (const auto& ext : model_.extensionsRequired)
@@ -134,6 +158,7 @@ private:
             if (model_.cameras[static_cast<size_t>(node.camera)].type == "perspective") {
                 camera_node_ = world;
                 camera_index_ = node.camera;
+                camera_node_index_ = index;
             } else if (!warned_ortho_) {
                 warned_ortho_ = true;
                 warn("orthographic camera in " + path_ + " ignored: only perspective cameras are used");
@@ -177,6 +202,7 @@ private:
             o.material = material(mesh.primitives[p].material, has_uvs);
             o.world = world;
             scene_.objects.push_back(std::move(o));
+            object_nodes_.push_back(index);
         }
     }
 
@@ -249,10 +275,13 @@ private:
         int out = -1;
         Image img;
         std::string problem;
-        if (convert_image(model_.images[static_cast<size_t>(source)], img, problem)) {
+        const auto known = context_.image_problems.find(source);
+        if (known == context_.image_problems.end() &&
+            convert_image(model_.images[static_cast<size_t>(source)], img, problem)) {
             scene_.images.push_back(std::move(img));
             out = static_cast<int>(scene_.images.size()) - 1;
         } else {
+            if (known != context_.image_problems.end()) problem = known->second;
             warn("image " + std::to_string(source) + " in " + path_ + " " + problem + ": texture ignored");
         }
         image_cache_[source] = out;
@@ -309,6 +338,13 @@ private:
             // The view must be rigid: drop any scale on the camera node (glTF forbids it, but
             // a scaled view would distort depth and lighting).
             const glm::mat4& w = *camera_node_;
+            // A camera node scaled to zero (or flattened) has no view: its axes must be usable.
+            const float sx = glm::length(glm::vec3(w[0])), sy = glm::length(glm::vec3(w[1])),
+                        sz = glm::length(glm::vec3(w[2]));
+            const float ortho = glm::length(glm::cross(glm::vec3(w[1]), glm::vec3(w[2])));
+            if (!(sx > 1e-12f && sy > 1e-12f && sz > 1e-12f && ortho > 1e-6f * sy * sz))
+                fail("nodes[" + std::to_string(camera_node_index_) + "] (camera " + std::to_string(camera_index_) +
+                     "): its transform is singular (scaled to zero or flattened), so the camera has no view");
             glm::mat4 rigid(1.0f);
             const glm::vec3 z = glm::normalize(glm::vec3(w[2]));
             const glm::vec3 x = glm::normalize(glm::cross(glm::vec3(w[1]), z));
@@ -443,12 +479,15 @@ private:
     LoadResult& result_;
     Scene& scene_;
     const std::string& path_;
+    const LoadContext& context_;
+    std::vector<int> object_nodes_;  // the node of each scene object, for messages
     std::map<std::pair<int, size_t>, int> mesh_cache_;
     std::map<std::pair<int, bool>, int> material_cache_;
     std::map<int, int> image_cache_;
     int default_material_ = -1;
     std::optional<glm::mat4> camera_node_;
     int camera_index_ = -1;
+    int camera_node_index_ = -1;
     bool warned_ortho_ = false;
     std::optional<glm::mat4> light_node_;
     int light_index_ = -1;
@@ -456,8 +495,8 @@ private:
 
 }  // namespace
 
-void build_scene(const tinygltf::Model& model, LoadResult& result, const std::string& path) {
-    Converter(model, result, path).run();
+void build_scene(const tinygltf::Model& model, LoadResult& result, const std::string& path, const LoadContext& context) {
+    Converter(model, result, path, context).run();
 }
 
 }  // namespace penumbra::scene::gltf_internal
