@@ -1,27 +1,44 @@
 #!/usr/bin/env bash
-# Bad input to `penumbra render`: one line on stderr that names the problem, a non-zero exit, and
-# no output file left behind (not even a partial one). usage: cli_errors.sh PENUMBRA WORKDIR
+# Bad input to `penumbra`: one line on stderr (valid UTF-8) that names the problem, the exact exit
+# status (2 for every bad input, an unwritable output included; 1 only for a failure while
+# rendering; never a signal), and nothing written: no output file, not even a partial one or an
+# empty folder. usage: cli_errors.sh PENUMBRA WORKDIR
 set -uo pipefail
 penumbra=$1 work=$2
+data=$(cd "$(dirname "${BASH_SOURCE[0]}")/data" && pwd) || exit 1
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 printf '{ "asset": {"version": "2.0"}, "meshes": [ ' > broken.gltf
+touch afile                  # a regular file: a path under it fails with ENOTDIR
+mkdir adir.png adir.gltf     # existing folders named like the outputs
+nonutf8=$(printf 'a\xff.gltf')
+cp "$data/sphere_over_plane.gltf" "$nonutf8"
 pass=0 fail=0
+have_truth=0
+"$penumbra" truth --help >/dev/null 2>&1 && have_truth=1
 
-# expect_error NAME WORD ARGS...: must exit non-zero, print exactly one line containing WORD,
-# and leave out.png absent.
-expect_error() {
-  local name=$1 word=$2; shift 2
-  rm -f out.png
-  local err rc
-  err=$("$penumbra" render --out out.png "$@" 2>&1 >/dev/null); rc=$?
-  local lines; lines=$(printf '%s\n' "$err" | grep -c .)
-  if [ "$rc" -ne 0 ] && [ "$lines" -eq 1 ] && grep -qi -- "$word" <<<"$err" && [ ! -e out.png ] \
-     && ! ls out.png.tmp* >/dev/null 2>&1; then
+# expect STATUS NAME WORD ARGS...: `penumbra ARGS` must exit with exactly STATUS, print exactly one
+# line on stderr, valid UTF-8, containing WORD (a fixed string), and leave the folder as it was.
+expect() {
+  local status=$1 name=$2 word=$3; shift 3
+  local before after err rc lines
+  before=$(find . | LC_ALL=C sort)
+  err=$("$penumbra" "$@" 2>&1 >/dev/null); rc=$?
+  after=$(find . | LC_ALL=C sort)
+  lines=$(printf '%s\n' "$err" | grep -c '')
+  if [ "$rc" -eq "$status" ] && [ "$lines" -eq 1 ] && grep -qiF -- "$word" <<<"$err" \
+     && printf '%s' "$err" | iconv -f UTF-8 -t UTF-8 >/dev/null 2>&1 && [ "$before" = "$after" ]; then
     pass=$((pass + 1))
   else
-    echo "FAIL $name: rc=$rc lines=$lines stderr: $err"; ls; fail=$((fail + 1))
+    echo "FAIL $name: rc=$rc (want $status) lines=$lines stderr: $err"
+    [ "$before" = "$after" ] || { echo "  the folder changed:"; diff <(echo "$before") <(echo "$after"); }
+    fail=$((fail + 1))
   fi
+  # Whatever a failed case left, the next starts clean.
+  rm -rf out.png out.png.tmp* nowhere newdir ./*.probe* 2>/dev/null
 }
+
+# `penumbra render --out out.png ARGS`: bad input, exit status 2.
+expect_error() { local name=$1 word=$2; shift 2; expect 2 "$name" "$word" render --out out.png "$@"; }
 
 expect_error "missing file"      "no_such.gltf"  --scene no_such.gltf
 expect_error "malformed file"    "broken.gltf"   --scene broken.gltf
@@ -34,16 +51,72 @@ expect_error "zero size"         "--size"        --size 0x512
 expect_error "bad size"          "--size"        --size 512
 expect_error "huge size"         "maximum"       --size 100000x64
 expect_error "zero map size"     "--map-size"    --map-size 0
+expect_error "huge map size"     "[1, 65536]"    --map-size 100000
 expect_error "bad time"          "--time"        --time soon
 expect_error "bad bias"          "--bias"        --bias -1
 expect_error "zero frames"       "--frames"      --frames 0
 expect_error "light-depth planar" "light-depth"  --aov light-depth --technique planar
+# Numbers: finite and in range, the option, the value and the rule named.
+expect_error "time nan"          "--time: must be a finite number in [-1000000, 1000000], got 'nan'" --time nan
+expect_error "time inf"          "--time: must be a finite number" --time inf
+expect_error "time too far"      "--time: must lie in [-1000000, 1000000], got '1e300'" --time 1e300
+expect_error "light radius inf"  "--light-radius: must be a finite number in [0, 1000000], got 'inf'" --light-radius inf
+expect_error "frames too many"   "--frames: must lie in [1, 10000], got '100000'" --frames 100000
+expect 2 "plan frames too many"  "--frames: must lie in [1, 10000]" plan --frames 100000
+expect 2 "gallery time nan"      "--time: must be a finite number" gallery --out-dir newdir --time nan
 
-# A folder that does not exist: named, nothing written.
-err=$("$penumbra" render --out nowhere/out.png 2>&1 >/dev/null); rc=$?
-if [ "$rc" -ne 0 ] && grep -q nowhere <<<"$err" && [ ! -e nowhere ]; then pass=$((pass + 1)); else echo "FAIL missing folder: $err"; fail=$((fail + 1)); fi
+# A folder that does not exist: named, nothing written (not the folder either).
+expect 2 "missing folder"        "folder nowhere does not exist" render --out nowhere/out.png
+# Unwritable outputs are bad input too (2), with the system's reason, found before any rendering.
+# The tests may run as root, for whom chmod does not stop a write: a read-only folder is tried
+# only for others; every user gets a path under a regular file (ENOTDIR), under /proc (nothing
+# can be created there, not even by root) and an existing folder as the output file (EISDIR).
+if [ "$(id -u)" -ne 0 ]; then
+  mkdir ro && chmod 555 ro
+  expect 2 "read-only folder"    "Permission denied" render --out ro/out.png --size 16x16
+  expect 2 "read-only out-dir"   "Permission denied" shaders --out ro/shaders
+fi
+expect 2 "out under a file"      "Not a directory"   render --out afile/out.png --size 16x16
+expect 2 "out under /proc"       "--out /proc/penumbra-cli-test.png: cannot write" render --out /proc/penumbra-cli-test.png --size 16x16
+expect 2 "out is a folder"       "--out adir.png: cannot write (Is a directory)" render --out adir.png --size 16x16
+expect 2 "export out is a folder" "Is a directory"   export --out adir.gltf
+expect 2 "export out under /proc" "/proc"            export --out /proc/penumbra-cli-test.gltf
+expect 2 "export out extension"  "must end in .gltf" export --out x.png
+expect 2 "shaders under /proc"   "--out /proc/penumbra-cli-test"  shaders --out /proc/penumbra-cli-test
+expect 2 "gallery under a file"  "--out-dir afile/g: cannot create" gallery --out-dir afile/g --size 16x16
+# A newline in a name stays one line (\n); so does a byte that is not UTF-8 (\xFF).
+expect 2 "newline in --out"      'no\nwhere'         render --out "$(printf 'no\nwhere')/out.png"
+expect 2 "newline in --scene"    'new\nline'         render --scene "$(printf 'new\nline.gltf')"
+expect 2 "newline in a value"    "--encoding: unknown value 'r\\n8'" render --encoding "$(printf 'r\n8')"
+expect 2 "missing non-UTF-8 scene" 'b\xFF.gltf'      render --scene "$(printf 'b\xff.gltf')"
+# Subcommands.
+expect 2 "unknown subcommand"    "unknown subcommand 'frobnicate' (expected one of render, plan, gallery" frobnicate
+expect 2 "no subcommand"         "a subcommand is required" 
+expect 2 "export time nan"       "--time: must be a finite number" export --time nan --out x.gltf
+expect 2 "export size"           "--size: width and height must be at most 16384" export --size 100000x10 --out x.gltf
 
-# And the good case writes a PNG whose size is what was asked.
+if [ "$have_truth" -eq 1 ]; then
+  # truth checks every option before it creates its folder or does any work.
+  expect 2 "truth huge size"     "--size: width and height must be at most 16384 (the maximum), got '100000x100000'" \
+    truth --size 100000x100000 --out-dir newdir
+  expect 2 "truth time nan"      "--time: must be a finite number" truth --time nan --out-dir newdir
+  expect 2 "truth light radius"  "--light-radius: must be a finite number in [0, 1000000], got 'inf'" \
+    truth --light-radius inf --out-dir newdir
+  expect 2 "truth soft samples"  "--soft-samples: must lie in [0, 16384], got '100000'" truth --soft-samples 100000 --out-dir newdir
+  expect 2 "truth negative soft" "--soft-samples: must lie in [0, 16384], got '-1'" truth --soft-samples -1 --out-dir newdir
+  expect 2 "truth out-dir /proc" "--out-dir /proc/penumbra-cli-test: cannot create" \
+    truth --size 16x16 --out-dir /proc/penumbra-cli-test
+  expect 2 "truth out-dir file"  "--out-dir afile" truth --size 16x16 --out-dir afile
+  expect 2 "bench frames -5"     "--frames: must lie in [1, 10000], got '-5'" bench --frames -5 --out-dir newdir
+  expect 2 "bench frames huge"   "--frames: must lie in [1, 10000], got '100000'" bench --frames 100000 --out-dir newdir
+  expect 2 "bench rounds"        "--rounds: must lie in [1, 100], got '0'" bench --rounds 0 --out-dir newdir
+  expect 2 "bench soft samples"  "--soft-samples: must lie in [0, 16384]" bench --soft-samples 100000 --out-dir newdir
+  expect 2 "bench scene time"    "--scenes: 'teapot@nan'" bench --scenes teapot@nan --out-dir newdir
+  expect 2 "bench out-dir file"  "--out-dir afile/b: cannot create" bench --from-csv none.csv --out-dir afile/b
+fi
+
+# The good cases. A non-UTF-8 scene path works: export writes valid JSON naming it escaped, and
+# the file loads back (rendered from it); no "null" (a number JSON cannot hold) in it.
 rm -f out.png
 if "$penumbra" render --out out.png --size 64x48 --map-size 256 2>/dev/null && [ -s out.png ] \
    && [ "$(head -c 24 out.png | tail -c 8 | od -An -tu1 | tr -s ' ')" = " 0 0 0 64 0 0 0 48" ]; then
@@ -51,5 +124,46 @@ if "$penumbra" render --out out.png --size 64x48 --map-size 256 2>/dev/null && [
 else
   echo "FAIL good render"; fail=$((fail + 1))
 fi
+rm -f out.png
+for t in 0 0.6 7.25; do
+  if "$penumbra" export --time "$t" --out course.gltf >/dev/null 2>&1 && ! grep -q null course.gltf \
+     && "$penumbra" render --scene course.gltf --size 32x32 --map-size 256 --out back.png 2>/dev/null && [ -s back.png ]; then
+    pass=$((pass + 1))
+  else
+    echo "FAIL export at t = $t does not load back"; fail=$((fail + 1))
+  fi
+  rm -f course.gltf back.png
+done
+if "$penumbra" export --scene "$nonutf8" --out nonutf8.gltf >/dev/null 2>&1 \
+   && python3 -c 'import json,sys; json.load(open(sys.argv[1], encoding="utf-8"))' nonutf8.gltf \
+   && grep -qF 'a\\xFF.gltf' nonutf8.gltf \
+   && "$penumbra" render --scene nonutf8.gltf --size 32x32 --map-size 256 --out back.png 2>/dev/null && [ -s back.png ]; then
+  pass=$((pass + 1))
+else
+  echo "FAIL export of a non-UTF-8 scene path"; fail=$((fail + 1))
+fi
+rm -f nonutf8.gltf back.png
+if "$penumbra" render --scene "$nonutf8" --size 32x32 --map-size 256 --aov visibility --out vis.png 2>/dev/null; then
+  pass=$((pass + 1))
+else
+  echo "FAIL render of a non-UTF-8 scene path"; fail=$((fail + 1))
+fi
+if [ "$have_truth" -eq 1 ]; then
+  if "$penumbra" truth --scene "$nonutf8" --size 32x32 --out-dir truth --score vis.png --json 2>/dev/null > score.json \
+     && python3 -c 'import json,sys; assert json.load(open(sys.argv[1]))["scene"] == "a\\xFF.gltf"' score.json; then
+    pass=$((pass + 1))
+  else
+    echo "FAIL truth --json of a non-UTF-8 scene path"; fail=$((fail + 1))
+  fi
+fi
+# --allow-outside is taken by every command that takes --scene (the loader enforces it).
+for cmd in render plan gallery export truth bench; do
+  [ "$have_truth" -eq 0 ] && { [ "$cmd" = truth ] || [ "$cmd" = bench ]; } && continue
+  if "$penumbra" "$cmd" --help 2>/dev/null | grep -q -- "--allow-outside"; then
+    pass=$((pass + 1))
+  else
+    echo "FAIL $cmd --help has no --allow-outside"; fail=$((fail + 1))
+  fi
+done
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -17,6 +17,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "bench.h"
+#include "cli_options.h"
 #include "gl/caps.h"
 #include "gl/check.h"
 #include "measure.h"
@@ -25,6 +26,7 @@
 #include "render/options.h"
 #include "render/renderer.h"
 #include "scene/primitives.h"
+#include "scene/printable.h"
 #include "scene/probe_scenes.h"
 #include "scene/scene_source.h"
 
@@ -43,7 +45,9 @@ SceneSpec parse_scene_spec(const std::string& spec) {
         char* end = nullptr;
         const double v = std::strtod(t.c_str(), &end);
         if (t.empty() || end != t.c_str() + t.size() || !std::isfinite(v))
-            throw CommandError{"--scenes: '" + spec + "': expected NAME@SECONDS", 2};
+            throw CommandError{"--scenes: '" + scene::printable(spec) + "': expected NAME@SECONDS (finite)", 2};
+        if (const std::string err = render::check_value(render::option_info("time"), t); !err.empty())
+            throw CommandError{"--scenes '" + scene::printable(spec) + "': " + err, 2};
         s.name = spec.substr(0, at);
         s.time = v;
     }
@@ -370,7 +374,7 @@ void run_sweep(Sweep& w) {
         auto st = std::make_unique<SceneState>();
         st->spec = w.scenes[si];
         const SceneSpec& spec = st->spec;
-        st->src = open_scene(spec.name);
+        st->src = open_scene(spec.name, scene::Eye::Scene, o.allow_outside);
         st->still = st->src.at(spec.time);
         st->turning = st->still;
         st->centre = scene::scene_bounds(st->still).center();
@@ -535,15 +539,14 @@ void run_bench(const BenchOptions& in) {
         for (const auto& s : in.set) c << " --set " << s;
         w.command_line = c.str();
     }
-    std::error_code ec;
-    fs::create_directories(w.o.out_dir, ec);
-    if (ec || !fs::is_directory(w.o.out_dir)) throw CommandError{"--out-dir " + w.o.out_dir + ": cannot create", 2};
+    // Every scene must open before the folder is made and the long part starts.
+    if (in.from_csv.empty())
+        for (const auto& s : w.scenes) open_scene(s.name, scene::Eye::Scene, w.o.allow_outside);
+    prepare_output_dir("--out-dir", w.o.out_dir);
     if (!in.from_csv.empty()) {
         w.from_csv = in.from_csv;
         read_csv(w, in.from_csv);
     } else {
-        // Every scene must open before the long part starts.
-        for (const auto& s : w.scenes) open_scene(s.name);
         run_sweep(w);
     }
     if (w.rows.empty()) throw CommandError{"bench: nothing was measured", 1};

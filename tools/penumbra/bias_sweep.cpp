@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cli_options.h"
 #include "gl/caps.h"
 #include "measure/metrics.h"
 #include "platform/platform.h"
@@ -127,9 +128,7 @@ void write_chart(const std::string& path, const std::string& title, const std::v
 }  // namespace
 
 int run_bias_sweep(const BiasSweepOptions& o) {
-    std::error_code ec;
-    fs::create_directories(o.out_dir, ec);
-    if (ec) throw std::runtime_error("--out-dir " + o.out_dir + ": " + ec.message());
+    prepare_output_dir("--out-dir", o.out_dir);  // exit status 2 with the system's reason
     std::string error;
     auto ctx = platform::create_headless(error);
     if (!ctx) throw std::runtime_error(error);

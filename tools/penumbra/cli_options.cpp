@@ -1,8 +1,18 @@
 #include "cli_options.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include "measure.h"
+#include "scene/printable.h"
+
+namespace fs = std::filesystem;
 
 namespace penumbra::tools {
 
@@ -29,6 +39,96 @@ render::Options TableOptions::parse() const {
         if (const std::string err = render::parse_option(base, name, value); !err.empty()) throw CommandError{err, 2};
     }
     return base;
+}
+
+void check_given(const CLI::App& cmd, const render::OptionInfo& info) {
+    const CLI::Option* opt = cmd.get_option_no_throw("--" + std::string(info.name));
+    if (!opt) return;
+    for (const std::string& value : opt->results())
+        if (const std::string err = render::check_value(info, value); !err.empty()) throw CommandError{err, 2};
+}
+
+void add_allow_outside(CLI::App* cmd, std::vector<std::string>& paths) {
+    cmd->add_option("--allow-outside", paths,
+                    "the scene's files (buffers, images) may also be read under this folder; repeatable "
+                    "(default: only under the scene file's own folder)")
+        ->type_name("PATH");
+}
+
+namespace {
+
+std::string shown(const std::string& path) { return scene::printable(path); }
+
+std::string reason(int err) { return std::strerror(err); }
+
+// Creates and removes a new file in `folder` (the way the writers put theirs: a temporary file
+// beside the target); "" or the system's reason.
+std::string try_create_in(const fs::path& folder, const std::string& stem) {
+    const fs::path probe = folder / (stem + ".probe" + std::to_string(::getpid()));
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0) return reason(errno);
+    ::close(fd);
+    ::unlink(probe.c_str());
+    return {};
+}
+
+}  // namespace
+
+void check_output_file(const std::string& option, const std::string& path, const std::string& extension) {
+    const std::string what = option + " " + shown(path) + ": ";
+    const fs::path out(path);
+    if (path.empty() || !out.has_filename()) throw CommandError{what + "expected a file name", 2};
+    if (!extension.empty() && out.extension() != extension)
+        throw CommandError{what + "the file name must end in " + extension, 2};
+    const fs::path folder = out.has_parent_path() ? out.parent_path() : fs::path(".");
+    std::error_code ec;
+    const fs::file_status fst = fs::status(folder, ec);
+    if (!fs::exists(fst)) throw CommandError{what + "folder " + shown(folder.string()) + " does not exist", 2};
+    if (!fs::is_directory(fst))
+        throw CommandError{what + shown(folder.string()) + " is not a folder (" + reason(ENOTDIR) + ")", 2};
+    if (fs::is_directory(fs::status(out, ec))) throw CommandError{what + "cannot write (" + reason(EISDIR) + ")", 2};
+    if (const std::string why = try_create_in(folder, out.filename().string()); !why.empty())
+        throw CommandError{what + "cannot write in folder " + shown(folder.string()) + " (" + why + ")", 2};
+}
+
+void prepare_output_dir(const std::string& option, const std::string& dir) {
+    const std::string what = option + " " + shown(dir) + ": ";
+    if (dir.empty()) throw CommandError{option + ": expected a folder", 2};
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec) throw CommandError{what + "cannot create (" + ec.message() + ")", 2};
+    if (!fs::is_directory(dir, ec)) throw CommandError{what + "not a folder (" + reason(ENOTDIR) + ")", 2};
+    if (const std::string why = try_create_in(dir, "penumbra"); !why.empty())
+        throw CommandError{what + "cannot write in it (" + why + ")", 2};
+}
+
+std::string one_line(std::string_view m) {
+    std::string out;
+    out.reserve(m.size());
+    for (size_t i = 0; i < m.size();) {
+        const auto c = static_cast<unsigned char>(m[i]);
+        if (c >= 0x20 && c != 0x7F && c < 0x80) {
+            out += static_cast<char>(c);
+            ++i;
+            continue;
+        }
+        // A UTF-8 sequence as it is when valid (printable's rules), a control character escaped.
+        size_t n = 0;
+        if (c >= 0x80)
+            for (size_t len = 2; len <= 4 && i + len <= m.size(); ++len)
+                if (scene::valid_utf8(m.substr(i, len))) {
+                    n = len;
+                    break;
+                }
+        if (n) {
+            out.append(m.substr(i, n));
+            i += n;
+        } else {
+            out += scene::printable(m.substr(i, 1));
+            ++i;
+        }
+    }
+    return out;
 }
 
 }  // namespace penumbra::tools

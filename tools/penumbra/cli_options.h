@@ -1,10 +1,13 @@
 // The option table (render/options.h) on a CLI11 command: each option of the table becomes a
 // --name of the command, with the table's help, accepted values and default in --help, and is
 // checked and stored by the table's own parser after CLI11 has read the command line.
+// And the checks every command makes before any work: its numbers (finite, in range), its
+// outputs (a folder that exists and takes a new file), its messages (one line).
 #pragma once
 
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -30,5 +33,27 @@ private:
 
 // "--help" text of one option: its help, what it accepts and its default.
 std::string option_help(const render::OptionInfo& o, const std::string& default_value);
+
+// Each value given to `cmd`'s --NAME (NAME = info.name), as typed, checked as the option table
+// checks its own (a finite number in range, a whole number in range, ...): a problem throws
+// CommandError (exit status 2) naming the option, the value and the rule. Nothing when not given.
+void check_given(const CLI::App& cmd, const render::OptionInfo& info);
+
+// --allow-outside PATH (repeatable) on a command that takes --scene: where the scene's files may
+// also be read (scene::LoadOptions::allow_outside).
+void add_allow_outside(CLI::App* cmd, std::vector<std::string>& paths);
+
+// A file the command will write, checked before any work: `extension` (".png"; empty: any), a
+// folder that exists, not a folder itself, and a folder in which a new file can be created (tried
+// and removed at once). A problem throws CommandError (exit status 2) with the system's reason.
+void check_output_file(const std::string& option, const std::string& path, const std::string& extension);
+
+// A folder the command will write into: created when missing, then tried as above.
+void prepare_output_dir(const std::string& option, const std::string& dir);
+
+// A message as one line of valid UTF-8: control characters and bytes that are not UTF-8 escaped
+// (\n, \xNN), the rest (backslashes too) left as it is: the last guard before stderr, after the
+// names in it went through scene::printable.
+std::string one_line(std::string_view message);
 
 }  // namespace penumbra::tools

@@ -5,15 +5,20 @@
 //   shaders  write every shader variant's GLSL ES 1.00 source (for glslangValidator)
 //   caps     what the headless context can do
 // Their options come from the option table (render/options.h) through cli_options.h.
-// Bad input gets one line naming the problem, a non-zero exit, and no output file.
+// Bad input (an unwritable output included) gets one line naming the problem, exit status 2, and
+// no output file; a failure while rendering exit status 1; never a signal (out of memory is a line too).
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -30,6 +35,7 @@
 #include "render/options.h"
 #include "render/renderer.h"
 #include "render/shader_library.h"
+#include "scene/printable.h"
 #include "scene/scene_source.h"
 #include "measure.h"
 #include "measure_commands.h"
@@ -55,21 +61,16 @@ int channels_for(render::Aov aov) { return aov == render::Aov::Color || aov == r
 void write_image(render::Renderer& r, const render::Options& o, const std::string& path) {
     const auto px = measure::from_rgba(r.read_image(), o.job.width, o.job.height, channels_for(o.settings.aov));
     const std::string err = measure::write_png(path, px);
-    if (!err.empty()) throw Failure{err};
+    if (!err.empty()) throw Failure{err, 2};  // an unwritable output: bad input, as the checks before
 }
 
 // ---- render, plan ---------------------------------------------------------------------------
 
-int run_render(const render::Options& o, bool verbose) {
+int run_render(const render::Options& o, bool verbose, const std::vector<std::string>& allow_outside) {
     const render::Job& job = o.job;
-    if (!job.out.empty()) {
-        const fs::path out(job.out);
-        if (out.extension() != ".png") throw Failure{"--out " + job.out + ": the file name must end in .png", 2};
-        std::error_code ec;
-        if (out.has_parent_path() && !fs::is_directory(out.parent_path(), ec))
-            throw Failure{"--out " + job.out + ": folder " + out.parent_path().string() + " does not exist", 2};
-    }
-    scene::SceneSource src = open_scene(job.scene, job.eye_in_shadow ? scene::Eye::InShadow : scene::Eye::Scene);
+    if (!job.out.empty()) tools::check_output_file("--out", job.out, ".png");  // before any work
+    scene::SceneSource src =
+        open_scene(job.scene, job.eye_in_shadow ? scene::Eye::InShadow : scene::Eye::Scene, allow_outside);
     auto ctx = make_context();
     render::Renderer r(gl::probe_caps(ctx->api()));
     const render::FrameInputs in = render::offscreen(job.width, job.height);
@@ -102,16 +103,17 @@ int run_render(const render::Options& o, bool verbose) {
     }
     if (!job.out.empty()) {
         write_image(r, o, job.out);
-        if (verbose) std::cerr << "wrote " << job.out << "\n";
+        if (verbose) std::cerr << "wrote " << scene::printable(job.out) << "\n";
     }
     return 0;
 }
 
 // The plan of frame --frames (1: the first; the frames before it are rendered, so a later frame
 // shows what it reuses), as text or JSON, on the headless context's real capabilities.
-int run_plan(const render::Options& o, bool json) {
+int run_plan(const render::Options& o, bool json, const std::vector<std::string>& allow_outside) {
     const render::Job& job = o.job;
-    scene::SceneSource src = open_scene(job.scene, job.eye_in_shadow ? scene::Eye::InShadow : scene::Eye::Scene);
+    scene::SceneSource src =
+        open_scene(job.scene, job.eye_in_shadow ? scene::Eye::InShadow : scene::Eye::Scene, allow_outside);
     auto ctx = make_context();
     render::Renderer r(gl::probe_caps(ctx->api()));
     const render::FrameInputs in = render::offscreen(job.width, job.height);
@@ -124,11 +126,10 @@ int run_plan(const render::Options& o, bool json) {
 
 // ---- gallery --------------------------------------------------------------------------------
 
-int run_gallery(const std::string& dir, const render::Options& base) {
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec) throw Failure{"--out-dir " + dir + ": cannot create (" + ec.message() + ")", 2};
-    scene::SceneSource src = open_scene(base.job.scene, base.job.eye_in_shadow ? scene::Eye::InShadow : scene::Eye::Scene);
+int run_gallery(const std::string& dir, const render::Options& base, const std::vector<std::string>& allow_outside) {
+    scene::SceneSource src =
+        open_scene(base.job.scene, base.job.eye_in_shadow ? scene::Eye::InShadow : scene::Eye::Scene, allow_outside);
+    tools::prepare_output_dir("--out-dir", dir);  // created (and tried) once the scene has opened
     const scene::Scene& frame = src.at(base.job.time);
     const render::FrameInputs in = render::offscreen(base.job.width, base.job.height);
     auto ctx = make_context();
@@ -188,22 +189,20 @@ int run_gallery(const std::string& dir, const render::Options& base) {
         "<th>light depth</th></tr>\n" + body + "</table>\n";
     std::ofstream f(index);
     f << page;
-    if (!f) throw Failure{index + ": cannot write"};
-    std::printf("wrote %zu images and %s\n", written, index.c_str());
+    if (!f) throw Failure{scene::printable(index) + ": cannot write", 2};
+    std::printf("wrote %zu images and %s\n", written, scene::printable(index).c_str());
     return 0;
 }
 
 // ---- shaders, caps --------------------------------------------------------------------------
 
 int run_shaders(const std::string& dir) {
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec) throw Failure{"--out " + dir + ": cannot create (" + ec.message() + ")", 2};
+    tools::prepare_output_dir("--out", dir);
     size_t n = 0;
     const auto write = [&](const std::string& file, const std::string& text) {
         std::ofstream f(fs::path(dir) / file);
         f << text;
-        if (!f) throw Failure{dir + "/" + file + ": cannot write"};
+        if (!f) throw Failure{scene::printable(dir) + "/" + file + ": cannot write", 2};
         ++n;
     };
     // Each file as it is (no defines), then each variant; the extension tells the stage.
@@ -215,7 +214,7 @@ int run_shaders(const std::string& dir) {
         write(stem(v.vertex) + tag + ".vert", render::variant_source(v.vertex, v.defines));
         write(stem(v.fragment) + tag + ".frag", render::variant_source(v.fragment, v.defines));
     }
-    std::printf("wrote %zu shader files to %s\n", n, dir.c_str());
+    std::printf("wrote %zu shader files to %s\n", n, scene::printable(dir).c_str());
     return 0;
 }
 
@@ -227,13 +226,33 @@ int run_caps() {
 
 }  // namespace
 
+namespace {
+int run(int argc, char** argv);
+}
+
 int main(int argc, char** argv) {
+    // A reader that goes away (penumbra plan --json | head -c 10) is an output that cannot be
+    // written: a line and exit status 2, not death by SIGPIPE.
+    std::signal(SIGPIPE, SIG_IGN);
+    const int rc = run(argc, argv);
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        std::fprintf(stderr, "penumbra: error: cannot write to standard output (%s)\n", std::strerror(errno));
+        return rc ? rc : 2;
+    }
+    return rc;
+}
+
+namespace {
+
+int run(int argc, char** argv) {
     CLI::App app{"penumbra: shadow mapping on GLES2, headless (EGL)"};
     app.require_subcommand(1);
 
     // render and plan: every option of the table, parsed by the table.
     auto* render_cmd = app.add_subcommand("render", "render one frame (or time --frames N) to a PNG");
     const tools::TableOptions render_options(render_cmd);
+    std::vector<std::string> render_allow, plan_allow, gallery_allow;
+    tools::add_allow_outside(render_cmd, render_allow);
     bool verbose = false;
     render_cmd->add_flag("-v,--verbose", verbose, "list the context, the settings and each frame's passes");
 
@@ -242,6 +261,7 @@ int main(int argc, char** argv) {
     for (const auto& o : render::option_table())
         if (o.info.name != "out") plan_names.emplace_back(o.info.name);
     const tools::TableOptions plan_options(plan_cmd, plan_names);
+    tools::add_allow_outside(plan_cmd, plan_allow);
     bool plan_json = false;
     plan_cmd->add_flag("--json", plan_json, "as JSON (passes, resources, uniforms, variants)");
 
@@ -251,6 +271,7 @@ int main(int argc, char** argv) {
     render::Options gallery_defaults;  // the course at t = 0.6
     gallery_defaults.job.time = 0.6;
     const tools::TableOptions gallery_options(gallery_cmd, {"scene", "time", "size", "map-size"}, gallery_defaults);
+    tools::add_allow_outside(gallery_cmd, gallery_allow);
 
     auto* shaders_cmd = app.add_subcommand("shaders", "write every shader variant's source to a folder");
     std::string shader_dir;
@@ -270,21 +291,41 @@ int main(int argc, char** argv) {
     sweep_cmd->add_option("--map-size", sweep.map_size, "shadow map size (default 1024)")->check(CLI::Range(16, 8192));
 #endif
 
+    // The first word must be a subcommand: CLI11 would call an unknown one a missing one.
+    std::string subcommands;
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+        subcommands += (subcommands.empty() ? "" : ", ") + sub->get_name();
+        if (argc > 1 && sub->check_name(argv[1])) known = true;
+    }
+    if (argc > 1 && !known && argv[1][0] != '-') {
+        std::fprintf(stderr, "penumbra: error: unknown subcommand '%s' (expected one of %s; see penumbra --help)\n",
+                     scene::printable(argv[1]).c_str(), subcommands.c_str());
+        return 2;
+    }
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
         return app.exit(e);
+    } catch (const CLI::RequiredError& e) {
+        if (argc < 2 || argv[1][0] == '-')  // no subcommand at all (CLI11: "A subcommand is required")
+            std::fprintf(stderr, "penumbra: error: a subcommand is required: one of %s (see penumbra --help)\n",
+                         subcommands.c_str());
+        else
+            std::fprintf(stderr, "penumbra: error: %s (see penumbra --help)\n", tools::one_line(e.what()).c_str());
+        return 2;
     } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "penumbra: error: %s (see penumbra --help)\n", e.what());
+        std::fprintf(stderr, "penumbra: error: %s (see penumbra --help)\n", tools::one_line(e.what()).c_str());
         return 2;
     }
 
     try {
-        if (*render_cmd) return run_render(render_options.parse(), verbose);
-        if (*plan_cmd) return run_plan(plan_options.parse(), plan_json);
-        if (*gallery_cmd) return run_gallery(gallery_dir, gallery_options.parse());
+        if (*render_cmd) return run_render(render_options.parse(), verbose, render_allow);
+        if (*plan_cmd) return run_plan(plan_options.parse(), plan_json, plan_allow);
+        if (*gallery_cmd) return run_gallery(gallery_dir, gallery_options.parse(), gallery_allow);
         if (*shaders_cmd) return run_shaders(shader_dir);
         if (*caps_cmd) return run_caps();
         if (const int rc = tools::run_measure_commands(*measure); rc >= 0) return rc;
@@ -292,14 +333,22 @@ int main(int argc, char** argv) {
         if (*sweep_cmd) return tools::run_bias_sweep(sweep);
 #endif
     } catch (const Failure& f) {
-        std::fprintf(stderr, "penumbra: error: %s\n", f.message.c_str());
+        std::fprintf(stderr, "penumbra: error: %s\n", tools::one_line(f.message).c_str());
         return f.code;
     } catch (const gl::Error& e) {
-        std::fprintf(stderr, "penumbra: error: GL: %s\n", e.what());
+        std::fprintf(stderr, "penumbra: error: GL: %s\n", tools::one_line(e.what()).c_str());
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "penumbra: error: out of memory\n");
         return 1;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "penumbra: error: %s\n", e.what());
+        std::fprintf(stderr, "penumbra: error: %s\n", tools::one_line(e.what()).c_str());
+        return 1;
+    } catch (...) {
+        std::fprintf(stderr, "penumbra: error: an unexpected failure\n");
         return 1;
     }
     return 0;
 }
+
+}  // namespace

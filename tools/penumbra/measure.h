@@ -14,16 +14,18 @@ struct CommandError {
     int code = 1;
 };
 
-// Opens "teapot" or a glTF file; the loader's notes go to stderr; a failure is a CommandError
-// (exit status 2) naming the file.
-// The scene by name, seen from `eye` (--eye).
-scene::SceneSource open_scene(const std::string& name, scene::Eye eye = scene::Eye::Scene);
+// Opens "teapot" or a glTF file, seen from `eye` (--eye); the scene's files may be read under its
+// own folder and under `allow_outside` (--allow-outside); the loader's notes go to stderr; a
+// failure is a CommandError (exit status 2) naming the file.
+scene::SceneSource open_scene(const std::string& name, scene::Eye eye = scene::Eye::Scene,
+                              const std::vector<std::string>& allow_outside = {});
 
 struct ExportOptions {
     std::string scene = "teapot";
     double time = 0.0;
     std::string size = "512x512";  // written as the camera's aspect ratio when the scene leaves it to the viewport
     std::string out;
+    std::vector<std::string> allow_outside;  // --allow-outside
 };
 void run_export(const ExportOptions& o);
 
@@ -38,6 +40,7 @@ struct TruthCommandOptions {
     std::string score;           // a visibility PNG (red channel) to compare with the truth
     bool json = false;           // with score: one JSON object on stdout (the score columns' keys)
     bool score_columns = false;  // print the score table as JSON and trace nothing
+    std::vector<std::string> allow_outside;  // --allow-outside
 };
 void run_truth(const TruthCommandOptions& o);
 
@@ -60,6 +63,7 @@ struct BenchOptions {
     std::vector<double> radii;
     // --truth-noise: only the area-light truth's own noise, mean |soft(N) - soft(4N)| (soft_bench.cpp).
     bool truth_noise = false;
+    std::vector<std::string> allow_outside;  // --allow-outside: for every scene of --scenes
 };
 void run_bench(const BenchOptions& o);
 

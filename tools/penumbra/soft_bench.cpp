@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "soft_bench.h"
+#include "cli_options.h"
 #include "gl/caps.h"
 #include "gl/check.h"
 #include "measure/metrics.h"
@@ -33,6 +34,7 @@
 #include "plot.h"
 #include "render/options.h"
 #include "render/renderer.h"
+#include "scene/printable.h"
 #include "scene/scene_source.h"
 
 namespace fs = std::filesystem;
@@ -215,7 +217,7 @@ void run_soft(SoftRun& w) {
     for (size_t i = w.scenes.size(); i-- > 0;)
         if (w.scenes[i].name == "teapot") convergence_scene = i;
     for (const SceneSpec& spec : w.scenes) {
-        scene::SceneSource src = open_scene(spec.name);
+        scene::SceneSource src = open_scene(spec.name, scene::Eye::Scene, w.o.allow_outside);
         const scene::Scene still = src.at(spec.time);
         scene::Scene turning = still;
         const glm::vec3 centre = scene::scene_bounds(still).center();
@@ -332,21 +334,21 @@ void bench::run_soft_bench(const BenchOptions& in) {
         w.command_line = c.str();
     }
     if (!in.from_csv.empty()) throw CommandError{"--from-csv: not with --soft or --truth-noise", 2};
+    // Every scene opens before the folder is made and the long part starts.
+    if (in.soft)
+        for (const auto& s : w.scenes) open_scene(s.name, scene::Eye::Scene, w.o.allow_outside);
     const fs::path dir(w.o.out_dir);
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec || !fs::is_directory(dir)) throw CommandError{"--out-dir " + w.o.out_dir + ": cannot create", 2};
+    prepare_output_dir("--out-dir", w.o.out_dir);
     if (w.noise) {
         truth_noise(w);
         write_text(dir / "soft_truth_noise.csv", noise_csv(w));
     }
     if (!in.soft) {
         std::printf("%s", noise_table(w).c_str());
-        std::printf("bench --truth-noise: wrote %s/soft_truth_noise.csv in %s\n", w.o.out_dir.c_str(),
+        std::printf("bench --truth-noise: wrote %s/soft_truth_noise.csv in %s\n", scene::printable(w.o.out_dir).c_str(),
                     duration_str(seconds_since(t0)).c_str());
         return;
     }
-    for (const auto& s : w.scenes) open_scene(s.name);  // every scene opens before the long part
     run_soft(w);
     if (w.rows.empty()) throw CommandError{"bench --soft: nothing was measured", 1};
     std::vector<std::string> front;

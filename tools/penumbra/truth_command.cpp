@@ -18,7 +18,9 @@
 #include "platform/platform.h"
 #include "render/options.h"
 #include "render/plan.h"
+#include "scene/printable.h"
 #include "scene/scene_source.h"
+#include "cli_options.h"
 
 namespace fs = std::filesystem;
 
@@ -44,7 +46,7 @@ float default_light_radius(const scene::Scene& s) {
 }
 
 void write_or_throw(const std::string& path, const Pixels& px) {
-    if (const std::string err = write_png(path, px); !err.empty()) throw CommandError{err, 1};
+    if (const std::string err = write_png(path, px); !err.empty()) throw CommandError{err, 2};  // an unwritable output
 }
 
 // The truth as a picture: lit white, shadowed black; pixels left out of the comparison in colour.
@@ -128,24 +130,32 @@ void run_truth(const TruthCommandOptions& o) {
         return;
     }
     if (o.json && o.score.empty()) throw CommandError{"--json: needs --score (it prints the score)", 2};
+    // Every option before any work (no folder is created for a command that cannot run): the
+    // numbers are the table's (run_measure_commands checked them as typed; these are the same rules).
     render::Options size;
     if (const std::string err = render::parse_option(size, "size", o.size); !err.empty()) throw CommandError{err, 2};
-    if (o.soft_samples < 0) throw CommandError{"--soft-samples: must be 0 or more", 2};
+    if (const std::string err = render::check_value(render::option_info("time"), render::format_number(o.time)); !err.empty())
+        throw CommandError{err, 2};
+    if (o.soft_samples < 0 || o.soft_samples > render::kMaxSoftSamples)
+        throw CommandError{"--soft-samples: must lie in [0, " + std::to_string(render::kMaxSoftSamples) + "], got '" +
+                               std::to_string(o.soft_samples) + "'", 2};
+    if (!std::isfinite(o.light_radius) || o.light_radius > render::kMaxLightRadius)
+        throw CommandError{"--light-radius: must be a finite number <= " + render::format_number(render::kMaxLightRadius) +
+                               ", got '" + render::format_number(o.light_radius) + "'", 2};
+    if (o.eye != "scene" && o.eye != "in-shadow")
+        throw CommandError{"--eye: unknown value '" + scene::printable(o.eye) + "' (scene, in-shadow)", 2};
     std::optional<Pixels> scored;
     if (!o.score.empty()) {
         Pixels px;
         if (const std::string err = read_png(o.score, px, 0); !err.empty()) throw CommandError{"--score: " + err, 2};
         if (px.width != size.job.width || px.height != size.job.height)
-            throw CommandError{"--score " + o.score + ": " + std::to_string(px.width) + "x" + std::to_string(px.height) +
-                                   ", but --size is " + o.size, 2};
+            throw CommandError{"--score " + scene::printable(o.score) + ": " + std::to_string(px.width) + "x" +
+                                   std::to_string(px.height) + ", but --size is " + o.size, 2};
         scored = std::move(px);
     }
-    std::error_code ec;
-    fs::create_directories(o.out_dir, ec);
-    if (ec || !fs::is_directory(o.out_dir)) throw CommandError{"--out-dir " + o.out_dir + ": cannot create", 2};
-
-    if (o.eye != "scene" && o.eye != "in-shadow") throw CommandError{"--eye: unknown value '" + o.eye + "' (scene, in-shadow)", 2};
-    scene::SceneSource src = open_scene(o.scene, o.eye == "in-shadow" ? scene::Eye::InShadow : scene::Eye::Scene);
+    scene::SceneSource src =
+        open_scene(o.scene, o.eye == "in-shadow" ? scene::Eye::InShadow : scene::Eye::Scene, o.allow_outside);
+    prepare_output_dir("--out-dir", o.out_dir);
     const scene::Scene s = src.at(o.time);
     measure::TruthOptions to;
     to.width = size.job.width;
@@ -174,8 +184,8 @@ void run_truth(const TruthCommandOptions& o) {
     }
     // With --json, stdout holds the JSON object alone; this line goes to stderr.
     std::fprintf(o.json ? stderr : stdout, "truth of %s at t = %g, %dx%d, in %.2f s: %s; wrote visibility.png, mask.png, classes.png%s to %s\n",
-                 o.scene.c_str(), o.time, t.width, t.height, secs, class_summary(t).c_str(), t.soft.empty() ? "" : ", area_light.png",
-                 o.out_dir.c_str());
+                 scene::printable(o.scene).c_str(), o.time, t.width, t.height, secs, class_summary(t).c_str(),
+                 t.soft.empty() ? "" : ", area_light.png", scene::printable(o.out_dir).c_str());
     if (scored) {
         std::vector<std::uint8_t> rendered(t.lit.size());
         const size_t ch = static_cast<size_t>(scored->channels);
@@ -183,11 +193,13 @@ void run_truth(const TruthCommandOptions& o) {
         const measure::Score sc = measure::score(rendered, t.lit, t.valid_mask(), t.soft.empty() ? nullptr : &t.soft);
         write_or_throw((dir / "errors.png").string(), error_image(rendered, t));
         if (o.json) {
-            nlohmann::ordered_json j = {{"scene", o.scene}, {"time", o.time}, {"width", t.width}, {"height", t.height}};
+            // JSON is UTF-8: a scene path that is not (raw bytes) goes in escaped.
+            nlohmann::ordered_json j = {
+                {"scene", scene::printable(o.scene)}, {"time", o.time}, {"width", t.width}, {"height", t.height}};
             j.update(measure::score_json(sc));
             std::printf("%s\n", j.dump().c_str());
         } else {
-            std::printf("score of %s: %s; wrote errors.png\n", o.score.c_str(), score_line(sc).c_str());
+            std::printf("score of %s: %s; wrote errors.png\n", scene::printable(o.score).c_str(), score_line(sc).c_str());
         }
     }
 }
