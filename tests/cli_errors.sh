@@ -89,6 +89,8 @@ expect 2 "newline in --out"      'no\nwhere'         render --out "$(printf 'no\
 expect 2 "newline in --scene"    'new\nline'         render --scene "$(printf 'new\nline.gltf')"
 expect 2 "newline in a value"    "--encoding: unknown value 'r\\n8'" render --encoding "$(printf 'r\n8')"
 expect 2 "missing non-UTF-8 scene" 'b\xFF.gltf'      render --scene "$(printf 'b\xff.gltf')"
+expect 2 "newline in CLI11's error" 'Could not convert: --frames = 1\n2' bench --frames "$(printf '1\n2')" --out-dir newdir
+expect 2 "newline in a subcommand" "unknown subcommand 'sub\ncmd'" "$(printf 'sub\ncmd')"
 # Subcommands.
 expect 2 "unknown subcommand"    "unknown subcommand 'frobnicate' (expected one of render, plan, gallery" frobnicate
 expect 2 "no subcommand"         "a subcommand is required" 
@@ -155,6 +157,23 @@ if [ "$have_truth" -eq 1 ]; then
   else
     echo "FAIL truth --json of a non-UTF-8 scene path"; fail=$((fail + 1))
   fi
+fi
+# --allow-outside PATH reaches the loader: a buffer in a sibling folder loads with it.
+mkdir -p outside/scene outside/shared
+python3 - "$data/sphere_over_plane.gltf" <<'PY'
+import base64, json, sys
+g = json.load(open(sys.argv[1]))
+b = g["buffers"][0]
+open("outside/shared/data.bin", "wb").write(base64.b64decode(b["uri"].split(",", 1)[1]))
+b["uri"] = "../shared/data.bin"
+json.dump(g, open("outside/scene/s.gltf", "w"))
+PY
+if "$penumbra" render --scene outside/scene/s.gltf --allow-outside outside/shared --size 16x16 --map-size 64 --out outside.png 2>/dev/null \
+   && [ -s outside.png ] && "$penumbra" plan --scene outside/scene/s.gltf --allow-outside outside/shared --size 16x16 >/dev/null 2>&1 \
+   && "$penumbra" export --scene outside/scene/s.gltf --allow-outside outside/shared --out outside.gltf >/dev/null 2>&1; then
+  pass=$((pass + 1))
+else
+  echo "FAIL --allow-outside"; fail=$((fail + 1))
 fi
 # --allow-outside is taken by every command that takes --scene (the loader enforces it).
 for cmd in render plan gallery export truth bench; do
