@@ -171,6 +171,11 @@ struct RayTracer::Impl {
 
     // True when nothing between `origin` and `target` (or along `dir` forever) blocks the light.
     bool unblocked(const glm::vec3& origin, const glm::vec3& dir, float tfar) const {
+        // Embree asserts on a ray that is not finite (a direction from tan(radius) near pi/2, say):
+        // no light arrives along it.
+        if (!std::isfinite(origin.x + origin.y + origin.z) || !std::isfinite(dir.x + dir.y + dir.z) ||
+            std::isnan(tfar))
+            return false;
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         RTCRay ray;
@@ -275,9 +280,22 @@ TruthImage RayTracer::render(const TruthOptions& opt) const {
             const glm::dvec4 b = inv * glm::dvec4(nx, ny, 1.0, 1.0);
             const glm::dvec3 o = glm::dvec3(a) / a.w;
             const glm::dvec3 far = glm::dvec3(b) / b.w;
-            const double len = glm::length(far - o);
+            double len = glm::length(far - o);
+            glm::dvec3 d = (far - o) / len;
+            if (!(std::isfinite(len) && len > 0.0)) {
+                // A far plane so much farther than the near one (znear 1e-9) that it unprojects to
+                // infinity: aim through the middle of the depth range and run the ray to the end.
+                const glm::dvec4 m = inv * glm::dvec4(nx, ny, 0.0, 1.0);
+                const glm::dvec3 mid = glm::dvec3(m) / m.w - o;
+                d = mid / glm::length(mid);
+                len = static_cast<double>(kInf);
+            }
             origin[i] = glm::vec3(o);
-            dir[i] = glm::vec3((far - o) / len);
+            dir[i] = glm::vec3(d);
+            // Embree asserts on a ray that is not finite; such a pixel sees nothing.
+            if (!std::isfinite(origin[i].x) || !std::isfinite(origin[i].y) || !std::isfinite(origin[i].z) ||
+                !std::isfinite(dir[i].x) || !std::isfinite(dir[i].y) || !std::isfinite(dir[i].z))
+                continue;
             RTCRayHit rh;
             rh.ray.org_x = origin[i].x;
             rh.ray.org_y = origin[i].y;
