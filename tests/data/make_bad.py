@@ -152,6 +152,22 @@ case("buffer_is_folder.gltf", 2, "buffers[0].uri '.' is not a regular file",
 case("image_traversal.gltf", 2, "images[0].uri '../../../../../../../../etc/passwd' is outside the scene's folder",
      textured("../../../../../../../../etc/passwd"))
 
+def glb(doc):
+    """doc (a document, or JSON text as bytes) as a binary glTF: the 12-byte header and one JSON
+    chunk padded with spaces."""
+    text = doc if isinstance(doc, bytes) else json.dumps(doc).encode()
+    text += b" " * (-len(text) % 4)
+    return struct.pack("<4sII", b"glTF", 2, 12 + 8 + len(text)) + struct.pack("<I4s", len(text), b"JSON") + text
+
+
+# The same checks reach the JSON chunk of a .glb.
+case("version_3.glb", 2, "asset.version is '3.0': only glTF 2.x is read",
+     glb(spoil(lambda g: g["asset"].update(version="3.0"))))
+case("deep_nesting.glb", 2, "nested deeper than 64 levels",
+     glb(b'{"asset":{"version":"2.0"},"extras":' + b"[" * 70 + b"]" * 70 + b"}"))
+case("glb_traversal.glb", 2, "buffers[0].uri '../../../../../../../../etc/passwd' is outside the scene's folder",
+     glb(spoil(lambda g: g["buffers"][0].update(uri="../../../../../../../../etc/passwd"))))
+
 # A damaged texture costs the texture, not the scene (exit 0, a note).
 case("truncated_png.gltf", 0, "image 0 in",
      textured("data:image/png;base64," + base64.b64encode(png(32, 32)[:500]).decode()))
@@ -160,7 +176,7 @@ case("truncated_png.gltf", 0, "image 0 in",
 def main():
     os.makedirs(OUT, exist_ok=True)
     for old in os.listdir(OUT):
-        if old.endswith(".gltf"):
+        if old.endswith(".gltf") or old.endswith(".glb"):
             os.remove(os.path.join(OUT, old))
     lines = ["# file\texit status\tmessage fragment (penumbra render, export and truth; written by make_bad.py)"]
     for name, status, message, doc in CASES:
