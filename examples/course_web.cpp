@@ -11,9 +11,11 @@
 #include <malloc.h>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "exercises.h"
+#include "query.h"
 #include "gl/check.h"
 #include "render/json.h"
 #include "platform/platform.h"
@@ -111,6 +113,18 @@ int penumbra_set_option(const char* name, const char* value) {
         return 0;
     }
     return 1;
+}
+
+// Applies the page's URL query ("?a=b&c=d", examples/query.h: decoded and checked in C++, each pair
+// through set_option): returns the notes, one a line ("" when every pair was taken).
+const char* penumbra_set_query(const char* query) {
+    if (!g || !g->app) return hand("");
+    std::string notes;
+    for (const auto& n : examples::apply_query(query ? query : "", [](std::string_view name, std::string_view value) {
+             return g->app->set_option(name, value);
+         }))
+        notes += (notes.empty() ? "" : "\n") + n;
+    return hand(notes);
 }
 
 const char* penumbra_last_error() { return hand(g ? g->last_error : ""); }

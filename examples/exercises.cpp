@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "platform/platform.h"
+#include "query.h"
 #include "scene/eye.h"
 #include "scene/primitives.h"
 #include "shadow/encoding.h"
@@ -160,7 +161,8 @@ std::string CourseApp::value_of(std::string_view name) const {
 
 std::string CourseApp::query() const {
     std::string q;
-    for (const auto& [k, v] : options()) q += (q.empty() ? "" : "&") + k + "=" + v;
+    for (const auto& [k, v] : options())
+        q += (q.empty() ? "" : "&") + encode_query_component(k) + "=" + encode_query_component(v);
     return q;
 }
 

@@ -56,7 +56,7 @@ public:
     // The options this exercise shows, plus any other setting that differs from its default, as
     // name/value pairs that set_option reads back; time=T only while paused.
     std::vector<std::pair<std::string, std::string>> options() const;
-    std::string query() const;  // options() as "name=value&name=value"
+    std::string query() const;  // options() as "name=value&name=value" (query.h's encoding: "1e%2B06")
     const render::Settings& settings() const { return settings_; }
     const Toggles& toggles() const { return toggles_; }
     bool eye_in_shadow() const { return eye_in_shadow_; }

@@ -185,14 +185,17 @@
   function start() {
     api = {
       setOption: Module.cwrap('penumbra_set_option', 'number', ['string', 'string']),
+      setQuery: Module.cwrap('penumbra_set_query', 'string', ['string']),
       lastError: () => Module.UTF8ToString(Module._penumbra_last_error()),
       query: () => Module.UTF8ToString(Module._penumbra_query()),
     };
-    const problems = [];
-    for (const [name, value] of new URLSearchParams(location.search)) {
-      const err = setOption(name, value);
-      if (err) problems.push(err);
-    }
+    // The URL's query is read by the module (examples/query.h: decoded, checked, each pair through
+    // set_option); what it refused comes back as notes, one a line. A query longer than the module
+    // reads (8192 bytes) is cut just past that, so the module notes it rather than the page copying
+    // a huge URL onto the wasm stack.
+    const search = location.search.length > 8194 ? location.search.slice(0, 8194) : location.search;
+    const notes = api.setQuery(search);
+    const problems = notes ? notes.split('\n') : [];
     bindControls();
     syncControls();
     updateUrl();
