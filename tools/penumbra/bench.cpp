@@ -52,7 +52,7 @@ SceneSpec parse_scene_spec(const std::string& spec) {
         s.time = v;
     }
     if (s.name == "teapot") s.label = "course@" + fixed(s.time, 2);
-    else s.label = fs::path(s.name).stem().string();
+    else s.label = scene::printable(fs::path(s.name).stem().string());  // into CSV, SVG and Markdown: UTF-8, one line
     return s;
 }
 
@@ -530,13 +530,13 @@ void run_bench(const BenchOptions& in) {
         if (in.rounds > 0) c << " --rounds " << w.o.rounds;
         if (!in.scenes.empty()) {
             c << " --scenes ";
-            for (size_t i = 0; i < in.scenes.size(); ++i) c << (i ? "," : "") << in.scenes[i];
+            for (size_t i = 0; i < in.scenes.size(); ++i) c << (i ? "," : "") << scene::printable(in.scenes[i]);
         }
         if (!in.maps.empty()) {
             c << " --maps ";
             for (size_t i = 0; i < in.maps.size(); ++i) c << (i ? "," : "") << in.maps[i];
         }
-        for (const auto& s : in.set) c << " --set " << s;
+        for (const auto& s : in.set) c << " --set " << scene::printable(s);
         w.command_line = c.str();
     }
     // Every scene must open before the folder is made and the long part starts.

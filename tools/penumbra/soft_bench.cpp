@@ -325,7 +325,7 @@ void bench::run_soft_bench(const BenchOptions& in) {
         if (in.soft_samples > 0) c << " --soft-samples " << in.soft_samples;
         if (!in.scenes.empty()) {
             c << " --scenes ";
-            for (size_t i = 0; i < in.scenes.size(); ++i) c << (i ? "," : "") << in.scenes[i];
+            for (size_t i = 0; i < in.scenes.size(); ++i) c << (i ? "," : "") << scene::printable(in.scenes[i]);
         }
         if (!in.radii.empty()) {
             c << " --radii ";
