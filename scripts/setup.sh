@@ -14,6 +14,7 @@ packages=(
   librsvg2-dev fonts-dejavu-core                 # the bench plots' PNGs: the SVG rendered by librsvg, in DejaVu Sans
   libglfw3-dev xvfb xauth                        # the desktop app, and its test on a virtual X server
   emscripten chromium nodejs                     # the web pages, and their tests in headless Chromium
+  clang libclang-rt-14-dev                       # the libFuzzer targets (preset fuzz, tests/fuzz) with ASan + UBSan
 )
 missing=()
 for p in "${packages[@]}"; do

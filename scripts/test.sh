@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The test command: builds with warnings as errors and runs every test ring (unit, GL on headless
 # EGL, shader validation, command line, the desktop app under Xvfb, the web pages in headless
-# Chromium), then the unit and GL tests again under ASan + UBSan.
-# Set PENUMBRA_SKIP_ASAN=1 to skip the sanitizer pass.
+# Chromium), then the fuzz targets for 60 s each (clang, libFuzzer with ASan + UBSan: the glTF
+# loader, the option parser, the pages' URL query; docs/reliability.md), then the unit and GL tests
+# again under ASan + UBSan.
+# Set PENUMBRA_SKIP_FUZZ=1 to skip the fuzz runs, PENUMBRA_SKIP_ASAN=1 to skip the sanitizer pass.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$(date +%s)
@@ -13,6 +15,12 @@ cmake --preset web >/dev/null
 cmake --build --preset web
 { [ -d node_modules/playwright-core ] && [ -d node_modules/three ]; } || npm ci --no-audit --no-fund --loglevel=error
 ctest --preset ci
+if [ "${PENUMBRA_SKIP_FUZZ:-0}" != 1 ]; then
+  echo "== the fuzz targets, 60 s each (build-fuzz; scripts/fuzz.sh for long runs) =="
+  cmake --preset fuzz >/dev/null
+  cmake --build --preset fuzz
+  ctest --preset fuzz
+fi
 if [ "${PENUMBRA_SKIP_ASAN:-0}" != 1 ]; then
   echo "== again under AddressSanitizer + UndefinedBehaviorSanitizer (Debug, per-call GL checks) =="
   cmake --preset asan >/dev/null
