@@ -66,18 +66,23 @@ on_scene "a folder as the scene" 2 "folder.gltf: is a folder, not a regular file
 # ... and as a buffer's uri, inside the scene's folder.
 mkdir -p scene
 cp "$data/bad/buffer_is_folder.gltf" scene/base.gltf
-uri_case() {  # uri_case LABEL URI FRAGMENT
-  sed 's#"uri": "\."#"uri": "'"$2"'"#' scene/base.gltf > scene/uri.gltf
-  on_scene "$1" 2 "$3" scene/uri.gltf
+uri_case() {  # uri_case LABEL URI FRAGMENT [OPTIONS...]
+  local label=$1 uri=$2 fragment=$3; shift 3
+  sed 's#"uri": "\."#"uri": "'"$uri"'"#' scene/base.gltf > scene/uri.gltf
+  on_scene "$label" 2 "$fragment" scene/uri.gltf "$@"
 }
 mkfifo scene/fifo.bin
 uri_case "a FIFO as a buffer" "fifo.bin" "buffers[0].uri 'fifo.bin' is not a regular file"
 ln -s /dev/zero scene/zero.bin  # the link resolves to /dev/zero: outside the folder before anything else
 uri_case "a device as a buffer" "zero.bin" "buffers[0].uri 'zero.bin' is outside the scene's folder"
+# --allow-outside lets the link through the folder check, not past the regular-file one.
+uri_case "a device as a buffer, /dev allowed" "zero.bin" "buffers[0].uri 'zero.bin' is not a regular file" --allow-outside /dev
 mkdir scene/sub
 uri_case "a folder as a buffer" "sub" "buffers[0].uri 'sub' is not a regular file"
 ln -s /etc/passwd scene/link.bin
 uri_case "a symbolic link out of the folder" "link.bin" "buffers[0].uri 'link.bin' is outside the scene's folder"
+# Allowed, /etc/passwd is read as a buffer and fails as one (its size is not the buffer's).
+uri_case "a file outside, allowed" "link.bin" "File size mismatch" --allow-outside /etc
 
 # A name with a newline and bytes that are not UTF-8: one line, escaped.
 cp "$data/bad/version_3.gltf" "$work/two"$'\n'"lines.gltf"
