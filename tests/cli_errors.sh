@@ -13,6 +13,7 @@ mkdir adir.png adir.gltf     # existing folders named like the outputs
 nonutf8=$(printf 'a\xff.gltf')
 cp "$data/sphere_over_plane.gltf" "$nonutf8"
 pass=0 fail=0
+runner=()  # what runs penumbra: nothing, or setpriv for the read-only folder as root
 have_truth=0
 "$penumbra" truth --help >/dev/null 2>&1 && have_truth=1
 
@@ -22,7 +23,7 @@ expect() {
   local status=$1 name=$2 word=$3; shift 3
   local before after err rc lines
   before=$(find . | LC_ALL=C sort)
-  err=$("$penumbra" "$@" 2>&1 >/dev/null); rc=$?
+  err=$("${runner[@]}" "$penumbra" "$@" 2>&1 >/dev/null); rc=$?
   after=$(find . | LC_ALL=C sort)
   lines=$(printf '%s\n' "$err" | grep -c '')
   if [ "$rc" -eq "$status" ] && [ "$lines" -eq 1 ] && grep -qiF -- "$word" <<<"$err" \
@@ -68,14 +69,21 @@ expect 2 "gallery time nan"      "--time: must be a finite number" gallery --out
 # A folder that does not exist: named, nothing written (not the folder either).
 expect 2 "missing folder"        "folder nowhere does not exist" render --out nowhere/out.png
 # Unwritable outputs are bad input too (2), with the system's reason, found before any rendering.
-# The tests may run as root, for whom chmod does not stop a write: a read-only folder is tried
-# only for others; every user gets a path under a regular file (ENOTDIR), under /proc (nothing
-# can be created there, not even by root) and an existing folder as the output file (EISDIR).
-if [ "$(id -u)" -ne 0 ]; then
-  mkdir ro && chmod 555 ro
-  expect 2 "read-only folder"    "Permission denied" render --out ro/out.png --size 16x16
-  expect 2 "read-only out-dir"   "Permission denied" shaders --out ro/shaders
+# The tests may run as root, for whom chmod does not stop a write: then the read-only folder is
+# tried as user nobody (setpriv) where that can run penumbra here, and skipped where it cannot.
+# Every user gets a path under a regular file (ENOTDIR), under /proc (nothing can be created
+# there, not even by root) and an existing folder as the output file (EISDIR).
+mkdir ro && chmod 555 ro
+if [ "$(id -u)" -eq 0 ]; then
+  runner=(setpriv --reuid=65534 --regid=65534 --clear-groups)
+  { "${runner[@]}" "$penumbra" --help && "${runner[@]}" test -r . -a -x .; } >/dev/null 2>&1 || { runner=(); echo "note: root without a way to run as nobody: read-only folder not tried"; }
 fi
+if [ "$(id -u)" -ne 0 ] || [ "${#runner[@]}" -gt 0 ]; then
+  expect 2 "read-only folder"    "--out ro/out.png: cannot write in folder ro (Permission denied)" render --out ro/out.png --size 16x16
+  expect 2 "read-only out-dir"   "--out ro/shaders: cannot create (Permission denied)" shaders --out ro/shaders
+  expect 2 "read-only export"    "Permission denied" export --out ro/x.gltf
+fi
+runner=()
 expect 2 "out under a file"      "Not a directory"   render --out afile/out.png --size 16x16
 expect 2 "out under /proc"       "--out /proc/penumbra-cli-test.png: cannot write" render --out /proc/penumbra-cli-test.png --size 16x16
 expect 2 "out is a folder"       "--out adir.png: cannot write (Is a directory)" render --out adir.png --size 16x16
