@@ -15,7 +15,8 @@ struct Pixels {
 };
 
 // Encodes in memory, writes a temporary file beside `path` and renames it into place, so a
-// failure never leaves a partial file. Returns "" or one line naming the problem.
+// failure never leaves a partial file. Returns "" or one line naming the problem: the path through
+// scene::printable and the system's reason ("out.png: cannot write (Is a directory)").
 std::string write_png(const std::string& path, const Pixels& px);
 
 // Reads a PNG as `channels` channels (0: as stored). Returns "" or the problem.
