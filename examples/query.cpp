@@ -50,10 +50,6 @@ std::string one_line(std::string s) {
     return plain ? s : scene::printable(s);
 }
 
-}  // namespace
-
-namespace {
-
 // Each pair of `query` in order: `on_pair(pair)` or `on_note(note)` for one that is refused.
 template <typename OnPair, typename OnNote>
 void for_each_pair(std::string_view query, OnPair on_pair, OnNote on_note) {
