@@ -2,13 +2,21 @@
 // (GLFW, GLES 2 through EGL), with keys for the same controls the web pages have.
 //
 //   penumbra-desktop [--exercise NAME] [--size WxH] [--frames N] [--screenshot FILE.png]
-//                    [--resize WxH] [--no-vsync] [-v] [--time T] [any option the pages take]
+//                    [--resize WxH] [--no-vsync] [-v] [--time T] [--keys KEYS] [--print-title]
+//                    [any option the pages take]
 //
 // The options the pages take (the exercises' toggles and the technique settings) come from the
 // option tables (examples/exercise_list.h, render/options.h), as does --help. --frames N stops
 // after N frames (for unattended runs), --screenshot writes the last frame as a PNG (top row
 // first), --resize asks the window for a new size halfway through, --time fixes both clocks
-// (paused). Bad input gets one line and exit status 2; a GL failure exit status 1.
+// (paused), --keys presses keys one a frame from the first (unattended runs, tests), --print-title
+// prints the window's title whenever its controls change and at the end. Bad input gets one line
+// and exit status 2; a GL failure exit status 1.
+//
+// The window title is the exercise and its controls' state as the page shows it and keeps in its
+// URL (CourseApp::options(): the same names and values), then the ms/frame:
+//   "W09P2c | light=on jump=on encoding=rgba filter=hard ... | 2.10 ms/frame"
+// It changes at the frame after a key changes a control; the ms every half second.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -33,12 +41,68 @@ struct Args {
     int resize_w = 0, resize_h = 0;
     bool vsync = true;
     bool verbose = false;
+    std::string keys;  // --keys: pressed one a frame from the first
+    bool print_title = false;
     std::vector<std::pair<std::string, std::string>> options;  // for CourseApp::set_option
 };
 
 [[noreturn]] void usage_error(const std::string& message) {
     std::fprintf(stderr, "penumbra-desktop: error: %s (see penumbra-desktop --help)\n", message.c_str());
     std::exit(2);
+}
+
+// The keys, each with the option (the page's control, the URL's name) it changes: the option-bound
+// ones from the exercises' key table, the others as CourseApp::on_key handles them.
+std::string key_list() {
+    std::string out = "keys (key, the option it changes as in the page's URL and the title, what it does):\n";
+    const auto line = [&](const std::string& key, std::string_view option, std::string_view help) {
+        std::string l = "  " + key;
+        l.resize(14, ' ');
+        l += option;
+        if (l.size() < 31) l.resize(31, ' ');
+        else l += ' ';
+        out += l + std::string(help) + "\n";
+    };
+    for (size_t i = 0; i < examples::exercise_list().size(); ++i) {
+        const examples::ExerciseInfo& x = examples::exercise_list()[i];
+        line(std::to_string(i + 1), "exercise " + std::string(x.name), x.title);
+    }
+    for (const examples::KeyBinding& k : examples::key_bindings()) {
+        std::string key(1, static_cast<char>(k.key));
+        if (k.help.find("Shift+") != std::string_view::npos) key += ", Shift+" + key;
+        line(key, k.option, k.help);
+    }
+    line("[ ]", "bias", "W09P2c: bias down / up (x1.5)");
+    line("B", "bias", "W09P2c: bias=sheet (the encoding's default, the sheet's constant)");
+    line("U", "bias", "W09P2c: bias=auto (the encoding's quantum + a receiver-slope term per fragment)");
+    line("- =", "light-radius", "soft: light radius down / up (0.05)");
+    line("Space", "time", "pause / resume both clocks (paused: time=T in the title and the URL)");
+    line("P", "", "print the settings: the URL query and the penumbra render command of this frame");
+    line("H, F1", "", "this list");
+    line("Esc", "", "quit");
+    return out;
+}
+
+// The short name of an exercise: its title up to the colon ("W09P2c", "Soft shadows").
+std::string short_name(examples::Exercise e) {
+    const std::string_view t = examples::exercise_info(e).title;
+    return std::string(t.substr(0, t.find(':')));
+}
+
+// The title's controls part: the exercise and its options as the page's URL has them.
+std::string title_controls(const examples::CourseApp& app) {
+    std::string t = short_name(app.exercise()) + " |";
+    for (const auto& [name, value] : app.options()) t += " " + name + "=" + value;
+    return t;
+}
+
+// A --keys character as a key press: letters as typed (upper case: with Shift), digits and
+// [ ] - = and space as themselves. 0 for any other character.
+platform::KeyEvent key_of(char c) {
+    if (c >= 'a' && c <= 'z') return {c - 'a' + 'A', false};
+    if (c >= 'A' && c <= 'Z') return {c, true};
+    if ((c >= '0' && c <= '9') || c == '[' || c == ']' || c == '-' || c == '=' || c == ' ') return {c, false};
+    return {0, false};
 }
 
 void print_help() {
@@ -67,9 +131,12 @@ void print_help() {
         "  --resize WxH        resize the window halfway through --frames\n"
         "  --no-vsync          draw as fast as possible\n"
         "  -v, --verbose       print each frame's passes at the end\n"
-        "  --time T            both clocks at T seconds, paused\n\n"
+        "  --time T            both clocks at T seconds, paused\n"
+        "  --keys KEYS         press these keys, one a frame from the first (letters as typed:\n"
+        "                      upper case with Shift; digits, [ ] - = and space)\n"
+        "  --print-title       print the window title when its controls change, and at the end\n\n"
         "as the web pages' controls and URL:\n%s\n%s",
-        examples::exercise_names().c_str(), options.c_str(), examples::CourseApp::key_help().c_str());
+        examples::exercise_names().c_str(), options.c_str(), key_list().c_str());
 }
 
 Args parse_args(int argc, char** argv) {
@@ -87,6 +154,10 @@ Args parse_args(int argc, char** argv) {
         }
         if (arg == "--no-vsync") {
             a.vsync = false;
+            continue;
+        }
+        if (arg == "--print-title") {
+            a.print_title = true;
             continue;
         }
         if (arg.rfind("--", 0) != 0) usage_error("unexpected argument '" + arg + "'");
@@ -107,6 +178,15 @@ Args parse_args(int argc, char** argv) {
             if (value.size() < 5 || value.substr(value.size() - 4) != ".png")
                 usage_error("--screenshot " + value + ": the file name must end in .png");
             a.screenshot = value;
+        } else if (name == "keys") {
+            for (const char c : value)
+                if (!key_of(c).key) {
+                    char shown[8];
+                    if (c > ' ' && c < 127) std::snprintf(shown, sizeof shown, "'%c'", c);
+                    else std::snprintf(shown, sizeof shown, "\\x%02X", static_cast<unsigned char>(c));
+                    usage_error("--keys: " + std::string(shown) + " is not a key here (letters, digits, [ ] - = and space)");
+                }
+            a.keys = value;
         } else {
             a.options.emplace_back(name, value);
         }
@@ -128,7 +208,7 @@ int main(int argc, char** argv) {
     platform::WindowOptions wo;
     wo.width = args.width;
     wo.height = args.height;
-    wo.title = "penumbra: " + std::string(examples::exercise_info(args.exercise).title);
+    wo.title = title_controls(app);
     wo.swap_interval = args.vsync ? 1 : 0;
     auto window = platform::create_glfw_window(wo, error);
     if (!window) {
@@ -147,13 +227,18 @@ int main(int argc, char** argv) {
             if (const std::string err = app.set_option(name, value); !err.empty()) usage_error("--" + err);
 
     std::printf("%s\n%s\n%s\n%s", window->description().c_str(), app.caps()->summary().c_str(),
-                std::string(examples::exercise_info(app.exercise()).title).c_str(), examples::CourseApp::key_help().c_str());
+                std::string(examples::exercise_info(app.exercise()).title).c_str(), key_list().c_str());
     std::fflush(stdout);
 
     bool quit = false;
-    window->on_key([&](const platform::KeyEvent& k) {
+    const auto on_key = [&](const platform::KeyEvent& k) {
         if (k.key == platform::keys::Escape) {
             quit = true;
+            return;
+        }
+        if (k.key == 'H' || k.key == platform::keys::F1) {
+            std::printf("%s", key_list().c_str());
+            std::fflush(stdout);
             return;
         }
         const std::string message = app.on_key(k.key, k.shift);
@@ -161,11 +246,14 @@ int main(int argc, char** argv) {
             std::printf("%s\n", message.c_str());
             std::fflush(stdout);
         }
-    });
+    };
+    window->on_key(on_key);
 
-    double last_t = -1.0, last_title = 0.0;
+    double last_t = -1.0, last_ms_shown = -1.0;
+    std::string shown_controls, title;
     int last_w = 0, last_h = 0;
     window->run([&](const platform::FrameInfo& f) {
+        if (f.frame_index < static_cast<long>(args.keys.size())) on_key(key_of(args.keys[static_cast<size_t>(f.frame_index)]));
         if (quit) return false;
         if (last_t >= 0.0) app.advance(f.time_s - last_t);
         last_t = f.time_s;
@@ -185,16 +273,23 @@ int main(int argc, char** argv) {
             status = 1;
             return false;
         }
-        if (f.time_s - last_title > 0.5) {
-            last_title = f.time_s;
-            char samples[64] = "";
-            if (const auto& area = app.area())  // Heckbert-Herf's progress (soft shadows)
-                std::snprintf(samples, sizeof samples, " | light samples %d of %d", area->done, area->total);
-            char title[320];
-            std::snprintf(title, sizeof title, "penumbra: %s | %.2f ms/frame%s | %s",
-                          std::string(examples::exercise_info(app.exercise()).title).c_str(), app.median_ms(), samples,
-                          app.query().c_str());
+        // The title: at once when a control changed, the ms/frame (and the light samples) every half second.
+        const std::string controls = title_controls(app);
+        if (controls != shown_controls || f.time_s - last_ms_shown >= 0.5) {
+            last_ms_shown = f.time_s;
+            char figures[96];
+            std::snprintf(figures, sizeof figures, " | %.2f ms/frame", app.median_ms());
+            title = controls + figures;
+            if (const auto& area = app.area()) {  // Heckbert-Herf's progress (soft shadows)
+                std::snprintf(figures, sizeof figures, " | light samples %d of %d", area->done, area->total);
+                title += figures;
+            }
             window->set_title(title);
+            if (args.print_title && controls != shown_controls) {
+                std::printf("title: %s\n", title.c_str());
+                std::fflush(stdout);
+            }
+            shown_controls = controls;
         }
         const long n = f.frame_index + 1;
         if (args.resize_w && args.frames && n == std::max(1L, args.frames / 2))
@@ -218,6 +313,7 @@ int main(int argc, char** argv) {
     std::printf("%ld frames, median %.3f ms/frame (draw + wait, last %zu frames); %s\n", app.frames_drawn(),
                 app.median_ms(), static_cast<size_t>(std::min(60L, app.frames_drawn())), app.query().c_str());
     if (const auto& area = app.area()) std::printf("light samples %d of %d\n", area->done, area->total);
+    if (args.print_title) std::printf("title: %s\n", title.c_str());
     if (args.verbose) std::printf("%s", app.last_plan().c_str());
     return status;
 }
