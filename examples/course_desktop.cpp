@@ -9,7 +9,7 @@
 // option tables (examples/exercise_list.h, render/options.h), as does --help. --frames N stops
 // after N frames (for unattended runs), --screenshot writes the last frame as a PNG (top row
 // first), --resize asks the window for a new size halfway through, --time fixes both clocks
-// (paused), --keys presses keys one a frame from the first (unattended runs, tests), --print-title
+// (paused), --keys presses keys one a frame from the second (unattended runs, tests), --print-title
 // prints the window's title whenever its controls change and at the end. Bad input gets one line
 // and exit status 2; a GL failure exit status 1.
 //
@@ -41,7 +41,7 @@ struct Args {
     int resize_w = 0, resize_h = 0;
     bool vsync = true;
     bool verbose = false;
-    std::string keys;  // --keys: pressed one a frame from the first
+    std::string keys;  // --keys: pressed one a frame from the second
     bool print_title = false;
     std::vector<std::pair<std::string, std::string>> options;  // for CourseApp::set_option
 };
@@ -132,7 +132,7 @@ void print_help() {
         "  --no-vsync          draw as fast as possible\n"
         "  -v, --verbose       print each frame's passes at the end\n"
         "  --time T            both clocks at T seconds, paused\n"
-        "  --keys KEYS         press these keys, one a frame from the first (letters as typed:\n"
+        "  --keys KEYS         press these keys, one a frame from the second (letters as typed:\n"
         "                      upper case with Shift; digits, [ ] - = and space)\n"
         "  --print-title       print the window title when its controls change, and at the end\n\n"
         "as the web pages' controls and URL:\n%s\n%s",
@@ -253,7 +253,8 @@ int main(int argc, char** argv) {
     std::string shown_controls, title;
     int last_w = 0, last_h = 0;
     window->run([&](const platform::FrameInfo& f) {
-        if (f.frame_index < static_cast<long>(args.keys.size())) on_key(key_of(args.keys[static_cast<size_t>(f.frame_index)]));
+        if (f.frame_index >= 1 && f.frame_index <= static_cast<long>(args.keys.size()))  // the first frame as started
+            on_key(key_of(args.keys[static_cast<size_t>(f.frame_index - 1)]));
         if (quit) return false;
         if (last_t >= 0.0) app.advance(f.time_s - last_t);
         last_t = f.time_s;

@@ -12,7 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev glslang-tools    # tests and shader validation
   libembree-dev                                  # the ray-traced ground truth (penumbra bench / truth)
   librsvg2-dev fonts-dejavu-core                 # the bench plots' PNGs: the SVG rendered by librsvg, in DejaVu Sans
-  libglfw3-dev xvfb xauth                        # the desktop app, and its test on a virtual X server
+  libglfw3-dev xvfb xauth x11-utils              # the desktop app, and its tests on a virtual X server (xwininfo reads the title)
   emscripten chromium nodejs                     # the web pages, and their tests in headless Chromium
   clang libclang-rt-14-dev                       # the libFuzzer targets (preset fuzz, tests/fuzz) with ASan + UBSan
 )

@@ -28,6 +28,7 @@ expect "or 'auto', 'sheet'" --bias often
 expect "must end in .png" --frames 3 --screenshot "$out/x.jpg"
 expect "needs --frames" --screenshot "$out/x.png"
 expect "width and height must be at least 1" --size 0x10
+expect "is not a key here" --keys "ef!"
 expect "expected WIDTHxHEIGHT" --resize 640
 expect "unexpected argument" stray
 [ ! -e "$out/x.png" ] && [ ! -e "$out/x.jpg" ] || { echo "FAIL: a file was written"; fail=1; }
