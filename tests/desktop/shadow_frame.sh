@@ -1,37 +1,42 @@
 #!/usr/bin/env bash
-# desktop.w09p2c-frame: the shadow-mapping exercise in a real window (Xvfb), frozen at t = 0.6, the
-# shadow map view off so the whole frame is the scene: the screenshot is checked as a picture of
-# the scene (check_frame.py), not only its size. The P key prints the frame's settings as a
-# `penumbra render` command; the CLI renders that command headless (and once more with
-# --technique none, every pixel lit), the Embree ray tracer (`penumbra truth`) traces the same
-# frame, and the window's frame must match the CLI's, show the table, and a shadow on it where the
-# CLI's frame and the ray tracer have it. The title printed (--print-title) must be the exercise and
-# the options the app reports as its URL query.
-# usage: shadow_frame.sh PENUMBRA_DESKTOP PENUMBRA OUT_DIR [more penumbra-desktop options...]
-# (more options go to the window only, after the test's own: `--bias 1` takes the shadow away,
-# `--time 0.9` moves it; either must make the check fail.)
+# desktop.w09p2c-frame, desktop.w09p1-frame: an exercise with a shadow (W09P2c's shadow map, the
+# map's view off so the whole frame is the scene; W09P1's planar shadow) in a real window (Xvfb),
+# frozen at t = 0.6: the screenshot is checked as a picture of the scene (check_frame.py), not only
+# its size. The P key prints the frame's settings as a `penumbra render` command; the CLI renders
+# that command headless (and once more with --technique none, every pixel lit), the Embree ray
+# tracer (`penumbra truth`) traces the same frame, and the window's frame must match the CLI's,
+# show the table, and a shadow on it where the CLI's frame and the ray tracer have it. The title
+# printed (--print-title) must be the exercise and the options the app reports as its URL query.
+# usage: shadow_frame.sh PENUMBRA_DESKTOP PENUMBRA OUT_DIR w09p2c|w09p1 [more penumbra-desktop options...]
+# (more options go to the window only, after the test's own: `--bias 1` takes W09P2c's shadow
+# away, `--time 0.9` moves it; either must make the check fail.)
 set -euo pipefail
-app=$1 cli=$2 out=$3/w09p2c-frame
-shift 3
+app=$1 cli=$2 exercise=$4 out=$3/$4-frame
+shift 4
+case $exercise in
+  w09p2c) name=W09P2c own=(--map-view off) ;;
+  w09p1) name=W09P1 own=() ;;
+  *) echo "shadow_frame.sh: w09p2c or w09p1, not '$exercise'"; exit 2 ;;
+esac
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$out"
 rm -rf "$out"/*.png "$out/truth"
 log="$out/desktop.log"
-if ! xvfb-run -a -s "-screen 0 1280x1024x24" "$app" --exercise w09p2c --time 0.6 --map-view off --frames 5 --keys p \
+if ! xvfb-run -a -s "-screen 0 1280x1024x24" "$app" --exercise "$exercise" --time 0.6 "${own[@]}" --frames 5 --keys p \
      --print-title --screenshot "$out/desktop.png" "$@" >"$log" 2>&1; then
-  echo "desktop w09p2c-frame: penumbra-desktop failed:"; cat "$log"; exit 1
+  echo "desktop $exercise-frame: penumbra-desktop failed:"; cat "$log"; exit 1
 fi
-grep -q "^5 frames" "$log" || { echo "desktop w09p2c-frame: did not render 5 frames:"; cat "$log"; exit 1; }
+grep -q "^5 frames" "$log" || { echo "desktop $exercise-frame: did not render 5 frames:"; cat "$log"; exit 1; }
 
 # The title: the exercise, then each name=value of the app's URL query, then the ms/frame.
 query=$(sed -n 's/^5 frames, median .*; //p' "$log")
 title=$(sed -n 's/^title: //p' "$log" | tail -n 1)
-want="W09P2c | ${query//&/ } | "
-[[ "$title" == "$want"*" ms/frame" ]] || { echo "desktop w09p2c-frame: title '$title', expected '$want... ms/frame'"; exit 1; }
+want="$name | ${query//&/ } | "
+[[ "$title" == "$want"*" ms/frame" ]] || { echo "desktop $exercise-frame: title '$title', expected '$want... ms/frame'"; exit 1; }
 echo "title: $title"
 
 # The frame's settings as the app prints them on P, rendered by the CLI.
-command=$(grep -m 1 "^penumbra render " "$log") || { echo "desktop w09p2c-frame: P printed no command:"; cat "$log"; exit 1; }
+command=$(grep -m 1 "^penumbra render " "$log") || { echo "desktop $exercise-frame: P printed no command:"; cat "$log"; exit 1; }
 read -r -a args <<<"${command#penumbra render }"
 "$cli" render "${args[@]}" --out "$out/cli.png" >/dev/null
 for i in "${!args[@]}"; do [ "${args[$i]}" = --technique ] && args[$((i + 1))]=none; done
