@@ -98,7 +98,69 @@ void CourseApp::set_exercise(Exercise e) {
 
 // ---- options --------------------------------------------------------------------------------
 
+namespace {
+
+// The values the exercise's control for a technique option offers: a select's or radios' list, a
+// checkbox's two; empty where the control takes any value the option takes (a number box, a
+// slider) or the exercise has no control for it (a setting kept from a URL).
+std::vector<std::string> offered_values(Exercise e, std::string_view name) {
+    const auto* o = render::find_option(render::option_table(), name);
+    if (!o) return {};
+    for (const Control& c : exercise_info(e).controls) {
+        if (c.option != name) continue;
+        if (c.kind == ControlKind::Checkbox && c.values.empty()) return {"on", "off"};
+        if (c.kind != ControlKind::Select && c.kind != ControlKind::Radio && c.kind != ControlKind::Checkbox) return {};
+        if (!c.values.empty()) return {c.values.begin(), c.values.end()};
+        std::vector<std::string> out;
+        for (const auto& ch : o->info.choices.empty() ? o->info.presets : o->info.choices) out.emplace_back(ch.value);
+        return out;
+    }
+    return {};
+}
+
+std::string joined(const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+    return s;
+}
+
+}  // namespace
+
+std::string CourseApp::keep_to_the_list(render::Settings& t, std::string_view name) {
+    std::vector<std::string> offered = offered_values(exercise_, name);
+    if (offered.empty()) return {};
+    const std::string v = setting_value(t, name);
+    const auto* o = render::find_option(render::option_table(), name);
+    const bool listed_here = std::find(offered.begin(), offered.end(), v) != offered.end();
+    if (o->info.type != render::OptionType::Integer) {
+        if (listed_here) return {};
+        return std::string(name) + "=" + v + " is not offered here (" + joined(offered) + ")";
+    }
+    // A number: the listed one nearest on a log scale (sizes and sample counts go in powers of two;
+    // +1 for a count that may be 0) among those the context can render.
+    const std::vector<std::string> listed = offered;
+    if (name == "map-size" && renderer_) {
+        const int most = renderer_->caps().max_target_size();
+        offered.erase(std::remove_if(offered.begin(), offered.end(), [&](const std::string& x) { return std::stoi(x) > most; }),
+                      offered.end());
+        if (offered.empty()) offered = {listed.front()};
+    }
+    if (listed_here && std::find(offered.begin(), offered.end(), v) != offered.end()) return {};
+    const double want = std::stod(v);
+    const auto distance = [&](const std::string& x) { return std::fabs(std::log((std::stod(x) + 1.0) / (want + 1.0))); };
+    std::string best = offered.front();
+    for (const auto& x : offered)
+        if (distance(x) < distance(best)) best = x;
+    if (const std::string err = render::parse_option(t, name, best); !err.empty()) return without_dashes(err);
+    if (std::find(listed.begin(), listed.end(), v) != listed.end())
+        note_ = std::string(name) + "=" + v + " is more than this GL context renders; using " + best;
+    else
+        note_ = std::string(name) + "=" + v + " is not one of the values offered (" + joined(listed) + "); using " + best;
+    return {};
+}
+
 std::string CourseApp::set_option(std::string_view name, std::string_view value) {
+    note_.clear();
     if (render::find_option(toggle_table(), name))
         return without_dashes(render::set_option(toggle_table(), toggles_, name, value));
     if (name == "time") {
@@ -118,6 +180,7 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
         return std::string(name) + ": set by the exercise (or the canvas, the window), not an option here";
     render::Settings t = settings_;
     if (std::string err = render::parse_option(t, name, value); !err.empty()) return without_dashes(err);
+    if (std::string err = keep_to_the_list(t, name); !err.empty()) return err;
     if (exercise_ == Exercise::Soft) {
         // The soft exercise's methods exclude each other: a filter other than hard takes one light
         // sample, more than one light sample the hard filter (the last one set wins).
@@ -176,6 +239,7 @@ void CourseApp::create_gl(platform::Api api) {
     renderer_ = std::make_unique<render::Renderer>(gl::probe_caps(api));
     renderer_->load(course_.scene);
     ++generation_;
+    ms_.clear();  // frame times of the old context say nothing about this one
     if (settings_.encoding == shadow::Encoding::DepthTex && !renderer_->caps().depth_texture)
         settings_.encoding = shadow::Encoding::RGBA;
 }
@@ -192,6 +256,8 @@ void CourseApp::advance(double dt) {
     dt = std::min(dt, 0.25);  // a tab in the background must not make the teapot leap
     if (toggles_.light) light_time_ += dt;
     if (toggles_.jump) jump_time_ += dt;
+    // Switched off in mid-air, the teapot comes down and rests on the table.
+    else jump_time_ = std::min(jump_time_ + dt, scene::course_teapot_landing(jump_time_));
 }
 
 void CourseApp::set_time(double t) { light_time_ = jump_time_ = t; }

@@ -51,8 +51,13 @@ public:
     // One option by its URL / command-line name: a technique setting (render's option table), a
     // toggle (exercise_list.h), time=T (both clocks to T, paused) or eye=scene|in-shadow (the
     // camera moved into the teapot's shadow each frame, after the light has moved). Returns "" or one line naming
-    // the problem; nothing changes on a problem.
+    // the problem; nothing changes on a problem. Where the exercise's control offers a list (a
+    // select, radios, a checkbox), a value off the list is refused, or, for a number (the map
+    // size), the nearest listed one the context can render is used and note() says so.
     std::string set_option(std::string_view name, std::string_view value);
+    // What the last set_option changed in the value it was given ("map-size=3000 is not one of
+    // this page's sizes (256, 512, 1024, 2048); using 2048"), or "" when it took it as it was.
+    const std::string& note() const { return note_; }
     // The options this exercise shows, plus any other setting that differs from its default, as
     // name/value pairs that set_option reads back; time=T only while paused.
     std::vector<std::pair<std::string, std::string>> options() const;
@@ -108,6 +113,8 @@ public:
     std::string on_key(int key, bool shift);
 
 private:
+    // set_option's rule for the values a control lists (see there): "" or the refusal.
+    std::string keep_to_the_list(render::Settings& t, std::string_view name);
     void render(render::Settings s, const render::FrameInputs& in);
     // The inputs that show the scene from the light: its view and projection fitted tightly around
     // what the scene's camera sees in `camera` (its output) and, with `ortho`, a directional light
@@ -133,6 +140,7 @@ private:
     bool paused_ = false;
     std::vector<double> ms_;  // ring of the last frame times
     long frames_drawn_ = 0;
+    std::string note_;  // of the last set_option
     std::string plan_text_;  // this frame's passes, for --verbose
     std::optional<render::AreaStats> area_;  // the last frame's light samples
 };

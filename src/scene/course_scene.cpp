@@ -31,6 +31,11 @@ float course_teapot_lift(double t) {
     return kJumpHeight * static_cast<float>(std::fabs(std::sin(kTwoPi * 0.5 * t / kJumpPeriod)));
 }
 
+double course_teapot_landing(double t) {
+    // A clock a hair past a landing (sums of frame times) counts as on the table.
+    return std::ceil(t / kJumpPeriod - 1e-6) * kJumpPeriod;
+}
+
 CourseScene make_course_scene(int teapot_level) {
     CourseScene c;
     Scene& s = c.scene;

@@ -22,5 +22,7 @@ void animate_course(CourseScene& course, double light_time, double jump_time);
 // The light's position on its circle, and the teapot's lift above the table, at time t.
 glm::vec3 course_light_position(double t);
 float course_teapot_lift(double t);
+// The first time at or after t when the teapot touches the table (where a jump switched off lets it land).
+double course_teapot_landing(double t);
 
 }  // namespace penumbra::scene

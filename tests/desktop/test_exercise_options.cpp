@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "exercises.h"
+#include "scene/course_scene.h"
 
 using penumbra::examples::CourseApp;
 using penumbra::examples::Exercise;
@@ -317,4 +318,77 @@ TEST(ExerciseList, EveryControlNamesAnOptionAndOffersValidValues) {
                            render::find_option(render::option_table(), k.option);
         EXPECT_TRUE(known) << k.option;
     }
+}
+
+// A control's list is what the page can show: a map size off it becomes the nearest size listed
+// (on a log scale), with a note naming the option, the value given and the value used; a choice
+// off it is refused (the select would go blank); the note clears with the next good change.
+TEST(ExerciseValues, AMapSizeOffTheListTakesTheNearestListedWithANote) {
+    CourseApp a(Exercise::W09P2c);
+    EXPECT_EQ(a.set_option("map-size", "1500"), "");
+    EXPECT_EQ(a.settings().map_size, 2048) << "1500 is nearer 2048 than 1024 on a log scale";
+    EXPECT_NE(a.note().find("map-size=1500"), std::string::npos) << a.note();
+    EXPECT_NE(a.note().find("(256, 512, 1024, 2048, 4096); using 2048"), std::string::npos) << a.note();
+    EXPECT_EQ(a.set_option("map-size", "60000"), "");
+    EXPECT_EQ(a.settings().map_size, 4096) << "the page's largest size";
+    EXPECT_NE(a.note().find("using 4096"), std::string::npos) << a.note();
+    // Beyond what the option takes at all: refused with its range, nothing changed.
+    EXPECT_NE(a.set_option("map-size", "100000").find("[1, 65536]"), std::string::npos);
+    EXPECT_EQ(a.settings().map_size, 4096);
+    EXPECT_EQ(a.set_option("map-size", "512"), "");
+    EXPECT_EQ(a.note(), "");
+    EXPECT_EQ(a.settings().map_size, 512);
+    // W09P2b's texture sizes stop at 2048.
+    CourseApp b(Exercise::W09P2b);
+    EXPECT_EQ(b.set_option("map-size", "8192"), "");
+    EXPECT_EQ(b.settings().map_size, 2048);
+    EXPECT_EQ(b.query().find("8192"), std::string::npos) << b.query();
+}
+
+TEST(ExerciseValues, AChoiceOffTheListIsRefusedAndChangesNothing) {
+    CourseApp a(Exercise::W09P2c);
+    const std::string err = a.set_option("filter", "pcf2x2");
+    EXPECT_NE(err.find("filter=pcf2x2"), std::string::npos) << err;
+    EXPECT_NE(err.find("pcf4x4, hard"), std::string::npos) << err;
+    EXPECT_EQ(a.value_of("filter"), "hard");
+    EXPECT_NE(a.set_option("aov", "stencil-count"), "");
+    EXPECT_EQ(a.value_of("aov"), "color");
+    // The same values where the page offers them.
+    CourseApp v(Exercise::Volumes);
+    EXPECT_EQ(v.set_option("aov", "stencil-count"), "");
+    CourseApp s(Exercise::Soft);
+    EXPECT_EQ(s.set_option("filter", "pcss"), "");
+    // An option the page has no control for takes any value the option does (a link's setting).
+    EXPECT_EQ(a.set_option("pcf-kernel", "full"), "");
+    EXPECT_EQ(a.note(), "");
+}
+
+TEST(ExerciseValues, TheNoteBelongsToTheChangeThatCausedIt) {
+    CourseApp a(Exercise::W09P2c);
+    ASSERT_EQ(a.set_option("map-size", "3000"), "");
+    EXPECT_NE(a.note(), "");
+    ASSERT_EQ(a.set_option("encoding", "r8"), "");
+    EXPECT_EQ(a.note(), "");
+    ASSERT_EQ(a.set_option("map-size", "3000"), "");
+    EXPECT_NE(a.note(), "");
+    EXPECT_NE(a.set_option("encoding", "r16"), "");
+    EXPECT_EQ(a.note(), "") << "a refusal says its problem itself";
+}
+
+// Switched off in mid-air, the teapot comes down and rests on the table (it used to hang there).
+TEST(ExerciseValues, TheJumpSwitchedOffLandsTheTeapot) {
+    CourseApp a(Exercise::W09P1);
+    a.advance(0.2);
+    a.advance(0.2);
+    a.advance(0.2);  // 0.6 s: mid-bounce
+    ASSERT_GT(penumbra::scene::course_teapot_lift(a.jump_time()), 0.1f);
+    ASSERT_EQ(a.set_option("jump", "off"), "");
+    for (int i = 0; i < 60; ++i) a.advance(1.0 / 60.0);
+    EXPECT_NEAR(a.jump_time(), 1.5, 1e-9) << "lands at the bounce's end";
+    EXPECT_LT(penumbra::scene::course_teapot_lift(a.jump_time()), 1e-5f);
+    a.advance(0.2);
+    EXPECT_NEAR(a.jump_time(), 1.5, 1e-9) << "and stays";
+    ASSERT_EQ(a.set_option("jump", "on"), "");
+    a.advance(0.2);
+    EXPECT_NEAR(a.jump_time(), 1.7, 1e-9) << "and jumps again from there";
 }
