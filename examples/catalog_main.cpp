@@ -44,7 +44,8 @@ std::string catalog_json() {
         static const char* kinds[] = {"toggle", "radio", "select", "checkbox", "number", "slider"};
         j += std::string(i ? "," : "") + "{\"name\":" + json_quote(x.name) + ",\"title\":" + json_quote(x.title) +
              ",\"text\":" + json_quote(x.text) + ",\"brief\":" + json_quote(x.brief) +
-             ",\"canvas\":" + json_quote(x.canvas) + ",\"technique\":" + json_quote(render::to_string(x.technique)) +
+             ",\"lookFor\":" + json_quote(x.look_for) + ",\"canvas\":" + json_quote(x.canvas) +
+             ",\"technique\":" + json_quote(render::to_string(x.technique)) +
              ",\"controls\":[";
         for (size_t c = 0; c < x.controls.size(); ++c) {
             const Control& k = x.controls[c];

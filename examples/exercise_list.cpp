@@ -31,7 +31,7 @@ std::vector<render::Option<Toggles>> make_toggles() {
                         {{"persp", "perspective (point light)"}, {"ortho", "orthographic (directional light)"}}),
                  [](Toggles& g, std::string_view v) { g.ortho = v == "ortho"; },
                  [](const Toggles& g) { return std::string(g.ortho ? "ortho" : "persp"); }});
-    t.push_back({toggle("fbo-view", "W09P2b: what is rendered into the off-screen buffer", "Rendered into it",
+    t.push_back({toggle("fbo-view", "W09P2b: what is rendered into the off-screen buffer", "The buffer holds",
                         {{"light", "the view from the light"}, {"camera", "the camera's view"}}),
                  [](Toggles& g, std::string_view v) { g.fbo_light = v == "light"; },
                  [](const Toggles& g) { return std::string(g.fbo_light ? "light" : "camera"); }});
@@ -60,20 +60,29 @@ std::vector<ExerciseInfo> make_list() {
          "planar projected shadow on the table, counted once per pixel in the stencil buffer.",
          "The teapot and the ground drawn with different shader programs; the teapot's planar projected shadow; "
          "buttons for the light's circulation and the teapot's jump.",
-         "The teapot on the marble table with its planar projected shadow", render::Technique::Planar, {light, jump}},
+         "The teapot on the marble table with its planar projected shadow",
+         "Switch the jump off: the teapot lands and its shadow meets its base. Watch the shadow stay flat on "
+         "the table as the light circles.",
+         render::Technique::Planar, {light, jump}},
         {Exercise::W09P2a, "w09p2a", "W09P2a: Rendering from the point of view of the light source",
          "The scene drawn with the light's own projection and view matrices, the view volume a tight bound around the "
          "table and the teapot: a perspective projection for the point light, an orthographic one for a directional "
          "light along the same line of sight.",
          "The light's own projection and view matrices fitted tightly around the scene: perspective for the point "
          "light, orthographic for a directional one.",
-         "The scene seen from the light", render::Technique::None,
+         "The scene seen from the light",
+         "Switch between perspective and orthographic: the point light's view spreads out from the light, the "
+         "directional light's lines stay parallel, and both just fit the table and the teapot.",
+         render::Technique::None,
          {light, jump, {"projection", "Light projection", K::Radio}}},
         {Exercise::W09P2b, "w09p2b", "W09P2b: Drawing to an off-screen buffer",
          "Each frame the scene is first rendered into a framebuffer object (a colour texture with a depth "
          "renderbuffer), then drawn from the camera with that texture applied to the ground quad.",
          "The scene rendered into a framebuffer object, and that texture applied to the ground quad.",
-         "The scene with the off-screen buffer's picture on the ground quad", render::Technique::None,
+         "The scene with the off-screen buffer's picture on the ground quad",
+         "The table shows what the off-screen buffer holds; set its texture size to 256 and the picture turns "
+         "blocky.",
+         render::Technique::None,
          {light, jump, {"fbo-view", "Off-screen buffer", K::Select},
           {"map-size", "Off-screen buffer", K::Select, {"256", "512", "1024", "2048"}, "Texture size"}}},
         {Exercise::W09P2c, "w09p2c", "W09P2c: Shadow mapping in the fragment shader",
@@ -85,12 +94,15 @@ std::vector<ExerciseInfo> make_list() {
          "The depth encodings (8-bit red, bit-shift RGBA, depth texture), 4x4 PCF, the bias and the map size, with the "
          "shadow map shown scaled for visualisation.",
          "The teapot on the table, shadowed by a shadow map, with the shadow map in the corner",
+         "Choose the sheet's bias with 8-bit red: dark rings of acne appear on the teapot. Then tick PCF and "
+         "watch the shadow's edge soften.",
          render::Technique::ShadowMap,
          {light, jump, {"encoding", "Shadow map", K::Select},
-          {"filter", "Shadow map", K::Checkbox, {"pcf4x4", "hard"}, "4x4 PCF (percentage-closer filtering)"},
-          {"bias", "Shadow map", K::Number, {}, {}, "a depth offset"},
-          {"map-faces", "Shadow map", K::Select, {}, {}, "the teapot is open, so auto draws both of its faces"},
-          {"precision", "Shadow map", K::Select, {}, {}, "mediump rounds the depth path to 11 bits, as a phone's GPU does"},
+          {"filter", "Shadow map", K::Checkbox, {"pcf4x4", "hard"}, "4x4 PCF (percentage-closer filtering)",
+           "16 lookups, texmapscale = 1/size apart: a softer edge"},
+          {"bias", "Shadow map", K::Number, {}, {}, "added to the depth before the comparison"},
+          {"map-faces", "Shadow map", K::Select, {}, {}, "the teapot is open: auto draws both sides"},
+          {"precision", "Shadow map", K::Select, {}, {}, "mediump keeps about 10 bits, as a phone's GPU does"},
           {"map-size", "Shadow map", K::Select},
           {"aov", "View", K::Select, {"color", "visibility"}},
           {"map-view", "View", K::Checkbox, {"on", "off"}}}},
@@ -101,11 +113,12 @@ std::vector<ExerciseInfo> make_list() {
          "(+1 entering, -1 leaving); it fails when the eye is inside a shadow volume: the count starts one too low, so "
          "shadows vanish and lit ground turns dark. Depth-fail counts the faces behind the surface instead, with the "
          "volumes closed by caps, and holds wherever the eye is. Auto takes depth-pass unless the eye may be inside "
-         "the volume. What to look for: move the eye into the teapot's shadow, then compare depth-pass with depth-fail "
-         "(the stencil count view shows the counts).",
+         "the volume.",
          "Shadow volumes counted in the stencil buffer: depth-pass against depth-fail with the eye inside a shadow, "
          "the volumes drawn, and the stencil count in false colour.",
          "The teapot on the table, shadowed by shadow volumes counted in the stencil buffer",
+         "Move the eye into the teapot's shadow, then compare depth-pass with depth-fail (the stencil count "
+         "view shows the counts).",
          render::Technique::Volumes,
          {light, jump,
           {"volume-method", "Shadow volumes", K::Select, {}, {}, "depth-pass fails when the eye is inside a volume"},
@@ -121,12 +134,12 @@ std::vector<ExerciseInfo> make_list() {
          "the penumbra's width, and PCF filters over it. Heckbert-Herf renders the hard shadow from many points on "
          "the light and averages them: correct in the limit, and it works with each technique (shadow map, planar, "
          "shadow volumes); while nothing moves, each frame adds light samples, so the picture converges. The scene "
-         "stands still (turn the light or the jump on to see a frame restart). What to look for: the penumbra widens "
-         "away from where the teapot touches the table: compare PCF's constant blur with PCSS and with the averaged "
-         "light samples, and flip to the reference.",
+         "stands still (turn the light or the jump on to see a frame restart).",
          "Soft shadows from a light with a size: PCF's constant blur, PCSS and Heckbert-Herf's averaged light "
          "samples against a 256-sample reference, converging while the scene stands still.",
          "The teapot on the table with soft shadows from a light with a size",
+         "The penumbra widens away from where the teapot touches the table: compare PCF's constant blur with "
+         "PCSS and the averaged light samples, and flip to the reference.",
          render::Technique::ShadowMap,
          {light, jump,
           {"light-radius", "Light", K::Slider, {}, {}, "world units; 0 is a point light", 0.0, 1.0},

@@ -60,6 +60,7 @@ struct ExerciseInfo {
     std::string_view text;    // the page's paragraph under the title
     std::string_view brief;   // one line for the index page
     std::string_view canvas;  // the canvas's accessible label
+    std::string_view look_for;  // one line under the title: what to try and what to look for
     render::Technique technique;  // its technique (the default, where a control offers the technique)
     std::vector<Control> controls;
     // Options this exercise starts with instead of the defaults (name, value), set when it is

@@ -277,7 +277,7 @@ std::vector<Option<Options>> make_table() {
         [](const Options& o) { return std::to_string(o.job.width) + "x" + std::to_string(o.job.height); });
 
     OptionInfo encoding = make_option_info("encoding", P::Technique, T::Choice, "the depth in the shadow map", "Depth encoding",
-                        {{"r8", "8-bit red (r8)"}, {"rgba", "bit-shift packed RGBA (rgba)"}, {"depthtex", "depth texture (depthtex)"}});
+                        {{"r8", "8-bit: the red channel only (r8)"}, {"rgba", "bit-shift packing into RGBA (rgba)"}, {"depthtex", "depth texture (depthtex)"}});
     add(encoding, [](Options& o, std::string_view v) { o.settings.encoding = enum_of(v, shadow::kAllEncodings); },
         [](const Options& o) { return std::string(shadow::to_string(o.settings.encoding)); });
 
@@ -295,7 +295,7 @@ std::vector<Option<Options>> make_table() {
     add(pcf_kernel, [](Options& o, std::string_view v) { o.settings.pcf_kernel = enum_of(v, shadow::kAllPcfKernels); },
         [](const Options& o) { return std::string(shadow::to_string(o.settings.pcf_kernel)); });
 
-    OptionInfo map_size = make_option_info("map-size", P::Technique, T::Integer, "shadow map width = height in texels", "Map size");
+    OptionInfo map_size = make_option_info("map-size", P::Technique, T::Integer, "shadow map width = height in texels", "Shadow map size");
     map_size.min = 1;
     map_size.max = kMaxMapSize;
     map_size.presets = {{"256", "256 x 256"}, {"512", "512 x 512"}, {"1024", "1024 x 1024"}, {"2048", "2048 x 2048"},
@@ -305,7 +305,7 @@ std::vector<Option<Options>> make_table() {
 
     OptionInfo bias = make_option_info("bias", P::Technique, T::NumberOrWord,
                     "depth offset: 'auto' (the encoding's quantum + the receiver's slope), 'sheet' (the exercise sheet's constant: r8 0.005, rgba and depthtex 0.0015) or a number",
-                    "Bias", {{"auto", "auto: the encoding's quantum + the surface's slope"}, {"sheet", "the sheet's constant for the encoding"}});
+                    "Bias", {{"auto", "auto: from the packing's precision and the surface's slope"}, {"sheet", "the sheet's constant"}});
     bias.min = 0.0;
     bias.max = 1.0;
     bias.step = 0.0005;
