@@ -33,12 +33,14 @@ struct WebApp {
     std::string last_error;  // of the last failing call or frame
     std::string reported;    // the last frame error printed (each distinct one is printed once)
     double last_t = -1.0;
+    double restored_at = -1.0;  // the first frame's time after a restore
     int width = 0, height = 0;
     bool lost = false;
     std::vector<std::uint8_t> pixels;
     std::string text;  // the last string handed to JavaScript
 };
 WebApp* g = nullptr;
+constexpr double kRestoredSeconds = 3.0;  // how long the status says the context was restored
 
 // Draws one frame; a failure is shown in the status line and printed once to stderr (the page
 // routes stderr to console.error).
@@ -63,6 +65,12 @@ bool draw_frame() {
 }
 
 bool frame(const platform::FrameInfo& f) {
+    // "restored" is said for a few seconds of frames, then the status is "running" again.
+    if (g->restored_at < 0.0 && g->status.rfind("WebGL context restored:", 0) == 0) g->restored_at = f.time_s;
+    if (g->restored_at >= 0.0 && f.time_s - g->restored_at > kRestoredSeconds) {
+        if (g->status.rfind("WebGL context restored:", 0) == 0) g->status = "running";
+        g->restored_at = -1.0;
+    }
     if (g->last_t >= 0.0) g->app->advance(f.time_s - g->last_t);
     g->last_t = f.time_s;
     g->width = f.width;
@@ -74,6 +82,7 @@ bool frame(const platform::FrameInfo& f) {
 void on_context(platform::ContextEvent e) {
     if (e == platform::ContextEvent::Lost) {
         g->lost = true;
+        g->restored_at = -1.0;
         g->app->drop_gl();
         g->status = "WebGL context lost: waiting for the browser to restore it";
         std::printf("penumbra: %s\n", g->status.c_str());
@@ -119,11 +128,17 @@ int penumbra_set_option(const char* name, const char* value) {
 // through set_option): returns the notes, one a line ("" when every pair was taken).
 const char* penumbra_set_query(const char* query) {
     if (!g || !g->app) return hand("");
+    // Refused pairs come back from apply_query; a value taken but changed (a map size off the list)
+    // leaves the app's note, said too.
+    std::vector<std::string> changed;
     std::string notes;
-    for (const auto& n : examples::apply_query(query ? query : "", [](std::string_view name, std::string_view value) {
-             return g->app->set_option(name, value);
+    for (const auto& n : examples::apply_query(query ? query : "", [&](std::string_view name, std::string_view value) {
+             std::string err = g->app->set_option(name, value);
+             if (err.empty() && !g->app->note().empty()) changed.push_back(g->app->note());
+             return err;
          }))
         notes += (notes.empty() ? "" : "\n") + n;
+    for (const auto& n : changed) notes += (notes.empty() ? "" : "\n") + n;
     return hand(notes);
 }
 
@@ -172,6 +187,8 @@ const char* penumbra_state() {
     j += ",\"maxMapSize\":" + std::to_string(caps ? caps->max_target_size() : 0);
     j += ",\"renderer\":" + json_quote(caps ? caps->renderer : "");
     j += ",\"status\":" + json_quote(g->status);
+    // What the last option set changed in its value ("" when it took it as it was).
+    j += ",\"note\":" + json_quote(a.note());
     j += ",\"width\":" + std::to_string(g->width) + ",\"height\":" + std::to_string(g->height);
     j += "}";
     return hand(j);

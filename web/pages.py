@@ -121,7 +121,8 @@ def main() -> None:
     items = []
     for ex in catalog["exercises"]:
         write_if_changed(out / f'{ex["name"]}.html', page.substitute(
-            name=ex["name"], title=esc(ex["title"]), text=esc(ex["text"]), canvas=esc(ex["canvas"]),
+            name=ex["name"], title=esc(ex["title"]), text=esc(ex["text"]), look_for=esc(ex["lookFor"]),
+            canvas=esc(ex["canvas"]),
             controls=controls_html(ex, catalog["options"])))
         items.append(f'  <li><a href="{ex["name"]}.html">{esc(ex["title"])}</a>\n    <p>{esc(ex["brief"])}</p></li>')
     write_if_changed(out / "index.html", index.substitute(exercises="\n".join(items)))

@@ -1,7 +1,10 @@
 // The exercise pages' script: starts the WebGL module (penumbra.js) for the page's exercise,
+// sizes the canvas's backing store to its CSS size x devicePixelRatio (at most 2048 a side),
 // applies the URL's options, binds the controls, keeps the URL in step with them
-// (history.replaceState), shows ms/frame and the status (context lost / restored, errors), and
-// offers a small test hook, window.penumbra.
+// (history.replaceState), shows the status (context lost / restored, errors), the note of the last
+// change (a value refused, or changed to one offered; it clears with the next good change),
+// ms/frame, the first frame's time and the picture's size, and offers a small test hook,
+// window.penumbra.
 //
 // The controls are generated with the page (web/pages.py, from examples/exercise_list.cpp and the
 // option table); each carries data-option="NAME" (the option names of `penumbra render` and the URL):
@@ -19,11 +22,17 @@
   const canvas = document.getElementById('canvas');
   const statusEl = document.getElementById('status');
   const msEl = document.getElementById('ms');
+  const noteEl = document.getElementById('note');
+  const firstEl = document.getElementById('first-frame');
+  const pictureEl = document.getElementById('picture');
+  const MAX_SIDE = 2048; // the backing store's cap, a side
   const samplesRow = document.getElementById('samples-row');
   const samplesEl = document.getElementById('samples');
   let api = null;
   let lastStatus = '';
-  let note = null; // {text, until}: a problem with the URL or a control, shown beside the status
+  let firstFrameMs = null; // navigation start to the first frame drawn
+  let fixedSize = false; // the test hook set the backing store's size
+  let capped = false;
   let resolveReady;
   let rejectReady;
   const ready = new Promise((resolve, reject) => {
@@ -37,6 +46,41 @@
       lastStatus = text;
     }
   }
+
+  // The backing store follows the canvas's CSS size x devicePixelRatio, so the picture is drawn at
+  // the screen's own resolution (a phone's 3x too), capped at MAX_SIDE a side. Done before the
+  // module starts (the first frame is drawn at this size) and again whenever the size changes.
+  function fitCanvas() {
+    if (fixedSize) return;
+    const r = canvas.getBoundingClientRect();
+    if (!(r.width > 0 && r.height > 0)) return;
+    const dpr = window.devicePixelRatio || 1;
+    let w = Math.round(r.width * dpr);
+    let h = Math.round(r.height * dpr);
+    const k = Math.min(1, MAX_SIDE / Math.max(w, h));
+    capped = k < 1;
+    w = Math.max(1, Math.floor(w * k));
+    h = Math.max(1, Math.floor(h * k));
+    if (canvas.width !== w || canvas.height !== h) {
+      canvas.width = w;
+      canvas.height = h;
+    }
+    showPicture();
+  }
+
+  function showPicture() {
+    const r = canvas.getBoundingClientRect();
+    const dpr = window.devicePixelRatio || 1;
+    let text = canvas.width + ' x ' + canvas.height + ' pixels';
+    if (fixedSize) text += ' (set by a test)';
+    else if (dpr !== 1) text += ' (' + Math.round(r.width) + ' x ' + Math.round(r.height) + ' at ' + +dpr.toFixed(2) + 'x)';
+    if (capped) text += ', capped at ' + MAX_SIDE + ' a side';
+    pictureEl.textContent = text;
+  }
+
+  fitCanvas();
+  if (window.ResizeObserver) new ResizeObserver(fitCanvas).observe(canvas);
+  window.addEventListener('resize', fitCanvas);
 
   window.Module = {
     canvas: canvas,
@@ -66,8 +110,9 @@
     if (url !== location.pathname + location.search + location.hash) history.replaceState(null, '', url);
   }
 
-  // Puts every control in the state the module holds (after the URL, a key, a clamp...).
-  function syncControls() {
+  // Puts every control in the state the module holds (after the URL, a key, a clamp...); a box being
+  // typed in keeps its text unless `force` (its value was refused: it shows the value in effect).
+  function syncControls(force = false) {
     const s = state();
     const o = s.options;
     for (const el of document.querySelectorAll('[data-option]')) {
@@ -86,7 +131,7 @@
         el.checked = el.value === v;
       } else if (el.type === 'range' || el.type === 'number') {
         // A number (the light's radius): a word (scene) leaves the box empty, the slider at its start.
-        if (document.activeElement !== el) el.value = isFinite(+v) ? v : '';
+        if (force || document.activeElement !== el) el.value = isFinite(+v) ? v : '';
         if (el.type === 'number') el.placeholder = isFinite(+v) ? '' : v;
       }
     }
@@ -107,7 +152,7 @@
       const autoValue = document.getElementById('bias-auto-value');
       if (autoValue) autoValue.textContent = String(+s.autoBias.toPrecision(2));
       bias.disabled = mode !== 'fixed';
-      if (document.activeElement !== bias || mode !== 'fixed')
+      if (force || document.activeElement !== bias || mode !== 'fixed')
         bias.value = String(+(mode === 'fixed' ? s.bias : s.sheetBias).toPrecision(6));
     }
     const mapSize = document.querySelector('select[data-option="map-size"]');
@@ -117,10 +162,16 @@
     return s;
   }
 
+  // A change's note: what was refused or changed; the next good change clears it.
+  function setNote(text) {
+    noteEl.textContent = text;
+    noteEl.hidden = !text;
+  }
+
   function apply(name, value) {
     const err = setOption(name, value);
-    if (err) showNote('not applied: ' + err);
-    syncControls();
+    setNote(err ? 'not applied: ' + err : state().note);
+    syncControls(err !== '');
     updateUrl();
     return err;
   }
@@ -156,11 +207,6 @@
     }
   }
 
-  function showNote(text) {
-    note = { text: text, until: performance.now() + 8000 };
-    poll();
-  }
-
   // Heckbert-Herf's progress: "24 of 256 (converging)" while light samples are being added.
   function samplesText(s) {
     if (!s.area) return '';
@@ -172,14 +218,12 @@
 
   function poll() {
     const s = state();
-    msEl.textContent = s.frames > 0 ? s.ms.toFixed(2) + ' ms/frame' : '–';
+    msEl.textContent = s.lost ? '– (no context)' : s.ms > 0 ? s.ms.toFixed(2) + ' ms/frame' : '–';
     if (samplesRow) {
       samplesRow.hidden = !s.area;
       samplesEl.textContent = samplesText(s) || '–';
     }
-    let text = s.status;
-    if (note && performance.now() < note.until) text += ' — ' + note.text;
-    setStatus(text);
+    setStatus(s.status);
   }
 
   function start() {
@@ -200,12 +244,26 @@
     syncControls();
     updateUrl();
     if (problems.length) {
-      console.warn('penumbra: ignored from the URL: ' + problems.join('; '));
-      showNote('ignored from the URL: ' + problems.join('; '));
+      console.warn('penumbra: from the URL: ' + problems.join('; '));
+      setNote('from the URL: ' + problems.join('; '));
     }
     poll();
+    watchFirstFrame();
     setInterval(poll, 250);
     resolveReady();
+  }
+
+  // The first frame: the module's loop draws in an animation frame callback registered before this
+  // one, so the first callback that sees a frame counted runs just after it was drawn (and waited
+  // for: the module reads a pixel back).
+  function watchFirstFrame() {
+    if (Module._penumbra_frame_count() > 0) {
+      firstFrameMs = performance.now();
+      firstEl.textContent = Math.round(firstFrameMs) + ' ms';
+      console.log('penumbra: first frame ' + firstFrameMs.toFixed(0) + ' ms after navigation start');
+      return;
+    }
+    requestAnimationFrame(watchFirstFrame);
   }
 
   function toBase64(bytes) {
@@ -241,5 +299,20 @@
     setOption: (name, value) => apply(name, value),
     query: () => api.query(),
     plan: () => Module.UTF8ToString(Module._penumbra_plan()),
+    // The first frame's time after navigation start (ms), null until it is drawn.
+    firstFrameMs: () => firstFrameMs,
+    // Fixes the backing store at w x h pixels (the tests compare with 512x512 renders); no
+    // arguments: back to following the CSS size x devicePixelRatio.
+    setCanvasSize: (w, h) => {
+      fixedSize = w > 0 && h > 0;
+      if (fixedSize) {
+        canvas.width = w;
+        canvas.height = h;
+        capped = false;
+        showPicture();
+      } else {
+        fitCanvas();
+      }
+    },
   };
 })();

@@ -56,11 +56,14 @@ export async function launch() {
   return chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS, headless: true });
 }
 
-// Opens `url` in a fresh 1280x900 page, waits for the module (window.penumbra.ready) and returns
-// {page, problems}: problems collects console errors, page errors and failed requests. `init`: a
-// function run in the page before any of its scripts (page.addInitScript), e.g. to wrap WebGL calls.
-export async function openPage(browser, url, { waitReady = true, init = null } = {}) {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 900 } });
+// Opens `url` in a fresh page (1280x900 at a device pixel ratio of 1 unless `viewport` and `scale`
+// say otherwise), waits for the module (window.penumbra.ready), fixes the canvas's backing store at
+// 512x512 unless `fixedCanvas` is false, and returns {page, context, problems}: problems collects
+// console errors, page errors and failed requests. `init`: a function run in the page before any
+// of its scripts (page.addInitScript), e.g. to wrap WebGL calls.
+export async function openPage(browser, url,
+  { waitReady = true, init = null, fixedCanvas = true, viewport = { width: 1280, height: 900 }, scale = 1 } = {}) {
+  const context = await browser.newContext({ viewport, deviceScaleFactor: scale });
   const page = await context.newPage();
   if (init) await page.addInitScript(init);
   const problems = [];
@@ -69,7 +72,12 @@ export async function openPage(browser, url, { waitReady = true, init = null } =
   page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} (${r.failure()?.errorText})`));
   page.on('response', (r) => { if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`); });
   await page.goto(url, { waitUntil: 'load' });
-  if (waitReady) await page.evaluate(() => window.penumbra.ready);
+  if (waitReady) {
+    await page.evaluate(() => window.penumbra.ready);
+    // The tests compare with 512x512 renders: the backing store is fixed there, not at the CSS
+    // size x devicePixelRatio the page would use (tests/web/layout.mjs checks that).
+    if (fixedCanvas) await page.evaluate(() => window.penumbra.setCanvasSize(512, 512));
+  }
   return { page, context, problems };
 }
 

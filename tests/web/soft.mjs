@@ -147,8 +147,8 @@ await runTest('web.soft', async ({ server, browser }) => {
     s = await bad.evaluate(() => window.penumbra.state());
     check(s.options.filter === 'pcss' && s.options['light-radius'] === '0.2' && s.options['pcss-taps'] === '16',
           `bad link: ${JSON.stringify(s.options)}`);
-    const status = await bad.textContent('#status');
-    check(/pcss9/.test(status) && /pcss-taps/.test(status), `the status line does not name the bad values: ${status}`);
+    const note = await bad.textContent('#note');
+    check(/pcss9/.test(note) && /pcss-taps/.test(note), `the note does not name the bad values: ${note}`);
     const errs = (await glErrors(page)).concat(await glErrors(bad));
     check(errs.length === 0, `glGetError: ${errs.map((e) => '0x' + e.toString(16)).join(', ')}`);
     check(problems.length === 0 && badProblems.length === 0, problems.concat(badProblems).join('; '));

@@ -101,8 +101,8 @@ await runTest('web.url', async ({ server, browser }) => {
     const { page, problems } = await openPage(browser, `${server.url}/w09p2c.html?encoding=r16&filter=pcf4x4`);
     const s = await page.evaluate(() => window.penumbra.state());
     check(s.options.filter === 'pcf4x4' && s.options.encoding === 'rgba', `bad URL: ${JSON.stringify(s.options)}`);
-    const status = await page.textContent('#status');
-    check(/r16/.test(status), `the status line does not mention the bad value: '${status}'`);
+    const note = await page.textContent('#note');
+    check(/r16/.test(note) && (await page.isVisible('#note')), `the note does not mention the bad value: '${note}'`);
     check(!new URL(page.url()).search.includes('r16'), 'the bad value stayed in the URL');
     check(problems.length === 0, problems.join('; '));
   }

@@ -68,7 +68,7 @@ await runTest('web.volumes', async ({ server, browser }) => {
       await openPage(browser, `${server.url}/volumes.html?volume-method=zmaybe&eye=in-shadow`);
     s = await bad.evaluate(() => window.penumbra.state());
     check(s.options['volume-method'] === 'auto' && s.options.eye === 'in-shadow', `bad link: ${JSON.stringify(s.options)}`);
-    check(/zmaybe/.test(await bad.textContent('#status')), 'the status line does not name the bad value');
+    check(/zmaybe/.test(await bad.textContent('#note')), 'the note does not name the bad value');
     const errs = (await glErrors(page)).concat(await glErrors(bad));
     check(errs.length === 0, `glGetError: ${errs.map((e) => '0x' + e.toString(16)).join(', ')}`);
     check(problems.length === 0 && badProblems.length === 0, problems.concat(badProblems).join('; '));
