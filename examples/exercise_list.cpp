@@ -71,8 +71,8 @@ std::vector<ExerciseInfo> make_list() {
          "The light's own projection and view matrices fitted tightly around the scene: perspective for the point "
          "light, orthographic for a directional one.",
          "The scene seen from the light",
-         "Switch between perspective and orthographic: the point light's view spreads out from the light, the "
-         "directional light's lines stay parallel, and both just fit the table and the teapot.",
+         "Switch between perspective and orthographic: the point light's view spreads out from the light and "
+         "makes the near end of the table look larger; the directional light's lines stay parallel.",
          render::Technique::None,
          {light, jump, {"projection", "Light projection", K::Radio}}},
         {Exercise::W09P2b, "w09p2b", "W09P2b: Drawing to an off-screen buffer",
