@@ -18,6 +18,29 @@ constexpr float kTwoPi = 6.28318530717958647692f;
 constexpr int kOctaves = 5;
 constexpr int kBaseCells = 4;  // lattice cells across the image at the lowest octave
 
+// Where pixel centre p of a size-pixel image falls on a lattice of n cells (the same along x and y):
+// the two lattice points either side (wrapping) and the faded fraction between them. Made once per
+// octave rather than per pixel and sample: the marble is made before the pages' first frame.
+struct Axis {
+    struct Cell {
+        int i0 = 0, i1 = 0;
+        float t = 0.0f;
+    };
+    std::vector<Cell> cells;
+
+    Axis(int n, int size) : cells(static_cast<size_t>(size)) {
+        const auto fade = [](float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); };
+        for (int p = 0; p < size; ++p) {
+            const float c = (static_cast<float>(p) + 0.5f) / static_cast<float>(size);
+            const float f = c * static_cast<float>(n);
+            Cell& cell = cells[static_cast<size_t>(p)];
+            cell.i0 = std::min(static_cast<int>(f), n - 1);
+            cell.i1 = (cell.i0 + 1) % n;
+            cell.t = fade(f - static_cast<float>(cell.i0));
+        }
+    }
+};
+
 // One octave of periodic value noise: a cells x cells lattice of values in [0,1) that wraps,
 // so noise(u) with u in [0,1) tiles.
 struct Lattice {
@@ -33,22 +56,16 @@ struct Lattice {
             }
     }
 
-    float at(int x, int y) const { return values[static_cast<size_t>(y * cells + x)]; }
-
-    // u, v in [0,1): bilinear over the lattice with a quintic fade (C2, so no creases between cells).
-    float sample(float u, float v) const {
-        const float fx = u * static_cast<float>(cells);
-        const float fy = v * static_cast<float>(cells);
-        const int x0 = std::min(static_cast<int>(fx), cells - 1);
-        const int y0 = std::min(static_cast<int>(fy), cells - 1);
-        const int x1 = (x0 + 1) % cells;
-        const int y1 = (y0 + 1) % cells;
-        const auto fade = [](float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); };
-        const float tx = fade(fx - static_cast<float>(x0));
-        const float ty = fade(fy - static_cast<float>(y0));
-        const float a = at(x0, y0) + (at(x1, y0) - at(x0, y0)) * tx;
-        const float b = at(x0, y1) + (at(x1, y1) - at(x0, y1)) * tx;
-        return a + (b - a) * ty;
+    // The sample at pixel (x, y) of the image, through the lattice's per-pixel table (see Axis):
+    // bilinear with a quintic fade (C2, so no creases between cells).
+    float sample(const Axis& ax, int x, int y) const {
+        const Axis::Cell& cx = ax.cells[static_cast<size_t>(x)];
+        const Axis::Cell& cy = ax.cells[static_cast<size_t>(y)];
+        const float* r0 = &values[static_cast<size_t>(cy.i0 * cells)];
+        const float* r1 = &values[static_cast<size_t>(cy.i1 * cells)];
+        const float a = r0[cx.i0] + (r0[cx.i1] - r0[cx.i0]) * cx.t;
+        const float b = r1[cx.i0] + (r1[cx.i1] - r1[cx.i0]) * cx.t;
+        return a + (b - a) * cy.t;
     }
 };
 
@@ -64,17 +81,20 @@ Image make_marble(int size, std::uint32_t seed) {
     img.width = img.height = size;
     img.rgba.resize(static_cast<size_t>(size) * static_cast<size_t>(size) * 4u);
 
-    // Two independent turbulence fields (one per vein set) from different seed streams.
+    // Two independent turbulence fields (one per vein set) from different seed streams; both
+    // fields' octave o has the same cells, so one Axis each.
     std::vector<Lattice> lat_a, lat_b;
+    std::vector<Axis> axes;
     for (int o = 0; o < kOctaves; ++o) {
         lat_a.emplace_back(kBaseCells << o, seed, static_cast<std::uint32_t>(o));
         lat_b.emplace_back(kBaseCells << o, hash32(seed + 0x9e3779b9U), static_cast<std::uint32_t>(o));
+        axes.emplace_back(kBaseCells << o, size);
     }
     // Turbulence: sum of |2n - 1| over octaves with halving amplitude, normalised to [0,1].
-    const auto turbulence = [](const std::vector<Lattice>& lat, float u, float v) {
+    const auto turbulence = [&axes](const std::vector<Lattice>& lat, int x, int y) {
         float sum = 0.0f, amp = 1.0f, norm = 0.0f;
-        for (const Lattice& l : lat) {
-            sum += amp * std::fabs(2.0f * l.sample(u, v) - 1.0f);
+        for (size_t o = 0; o < lat.size(); ++o) {
+            sum += amp * std::fabs(2.0f * lat[o].sample(axes[o], x, y) - 1.0f);
             norm += amp;
             amp *= 0.5f;
         }
@@ -88,8 +108,8 @@ Image make_marble(int size, std::uint32_t seed) {
         for (int x = 0; x < size; ++x) {
             const float u = (static_cast<float>(x) + 0.5f) / static_cast<float>(size);
             // Whole periods across the image in u and v keep the sines tileable.
-            const float ta = turbulence(lat_a, u, v);
-            const float tb = turbulence(lat_b, u, v);
+            const float ta = turbulence(lat_a, x, y);
+            const float tb = turbulence(lat_b, x, y);
             const float sa = std::sin(kTwoPi * (2.0f * u + 1.0f * v) + 5.0f * ta);
             const float sb = std::sin(kTwoPi * (1.0f * u - 3.0f * v) + 4.0f * tb);
             // Veins are where the sine crosses zero; a high power of (1 - |s|) keeps them thin.
@@ -99,7 +119,7 @@ Image make_marble(int size, std::uint32_t seed) {
             const float fine_vein = 0.45f * b6 * b6;                                                 // ^12
             const float k = std::min(1.0f, main_vein + fine_vein);
             // A faint cloudiness from the low octaves so the white is not flat.
-            const float cloud = 0.94f + 0.08f * lat_b[0].sample(u, v);
+            const float cloud = 0.94f + 0.08f * lat_b[0].sample(axes[0], x, y);
             const glm::vec3 c = glm::mix(white * cloud, vein, k);
             std::uint8_t* px = &img.rgba[(static_cast<size_t>(y) * static_cast<size_t>(size) + static_cast<size_t>(x)) * 4u];
             px[0] = to_byte(c.r);
