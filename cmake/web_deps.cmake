@@ -19,5 +19,7 @@ set_target_properties(glm::glm PROPERTIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES $
 
 # The library throws gl::Error on any GL failure (a lost context among them) and the pages catch
 # it: Emscripten's exception catching is off unless asked for, in every translation unit.
+# The pages' module and its libraries add -fwasm-exceptions (web/CMakeLists.txt: WebAssembly's own
+# exceptions, no JavaScript invoke_* wrappers), which takes precedence over this.
 add_compile_options(-fexceptions)
 add_link_options(-fexceptions)
