@@ -201,8 +201,14 @@ int main(int argc, char** argv) {
     const Args args = parse_args(argc, argv);
     examples::CourseApp app(args.exercise);
     // Every option is checked before a window opens; what the context supports, after.
-    for (const auto& [name, value] : args.options)
+    // A value off a control's list becomes the nearest listed one: said on stderr, as the page says it.
+    const auto note = [&app] {
+        if (!app.note().empty()) std::fprintf(stderr, "penumbra-desktop: note: %s\n", app.note().c_str());
+    };
+    for (const auto& [name, value] : args.options) {
         if (const std::string err = app.set_option(name, value); !err.empty()) usage_error("--" + err);
+        if (name != "map-size") note();  // a map size is set again, and said, once the context's limit is known
+    }
 
     std::string error;
     platform::WindowOptions wo;
@@ -223,8 +229,10 @@ int main(int argc, char** argv) {
         return 1;
     }
     for (const auto& [name, value] : args.options)
-        if (name == "encoding")  // depthtex needs OES_depth_texture
+        if (name == "encoding" || name == "map-size") {  // depthtex needs OES_depth_texture; a size, the limit
             if (const std::string err = app.set_option(name, value); !err.empty()) usage_error("--" + err);
+            note();
+        }
 
     std::printf("%s\n%s\n%s\n%s", window->description().c_str(), app.caps()->summary().c_str(),
                 std::string(examples::exercise_info(app.exercise()).title).c_str(), key_list().c_str());
