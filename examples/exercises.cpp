@@ -40,11 +40,13 @@ std::string format_number(double v) {
     return buf;
 }
 
-// The value a technique option holds, as a URL shows it.
+// The value a technique option holds, as a URL shows it (as render::to_pairs(s) has it, for one name).
 std::string setting_value(const render::Settings& s, std::string_view name) {
-    for (const auto& [k, v] : render::to_pairs(s))
-        if (k == name) return v;
-    return {};
+    const auto* o = render::find_option(render::option_table(), name);
+    if (!o || o->info.part != render::OptionPart::Technique) return {};
+    render::Options opts;
+    opts.settings = s;
+    return o->print(opts);
 }
 
 }  // namespace
@@ -200,7 +202,7 @@ std::vector<std::pair<std::string, std::string>> CourseApp::options() const {
     std::vector<std::pair<std::string, std::string>> out;
     for (const auto& n : shown) out.emplace_back(n, value_of(n));
     // Any other setting that differs from its default keeps its value across a reload.
-    const auto defaults = render::to_pairs(render::Settings{});
+    static const auto defaults = render::to_pairs(render::Settings{});
     const auto pairs = render::to_pairs(settings_);
     for (size_t i = 0; i < pairs.size(); ++i) {
         const auto& [k, v] = pairs[i];
