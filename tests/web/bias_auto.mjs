@@ -42,7 +42,7 @@ await runTest('web.bias_auto', async ({ server, browser }) => {
   check(await page.isChecked('#bias-auto'), 'the bias does not start on auto');
   check(await page.isDisabled('#bias'), 'the number box is enabled with the auto bias');
   const label = await page.textContent('label:has(#bias-auto)');
-  check(/quantum/.test(label) && /slope/.test(label), `the auto choice does not say what it does: '${label}'`);
+  check(/precision/.test(label) && /slope/.test(label), `the auto choice does not say what it does: '${label}'`);
   const results = {};
   for (const filter of ['hard', 'pcf4x4']) {
     await page.setChecked('#filter', filter === 'pcf4x4');
