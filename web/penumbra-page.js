@@ -25,6 +25,7 @@
   const noteEl = document.getElementById('note');
   const firstEl = document.getElementById('first-frame');
   const pictureEl = document.getElementById('picture');
+  const lostEl = document.getElementById('lost');
   const MAX_SIDE = 2048; // the backing store's cap, a side
   const samplesRow = document.getElementById('samples-row');
   const samplesEl = document.getElementById('samples');
@@ -219,6 +220,7 @@
   function poll() {
     const s = state();
     msEl.textContent = s.lost ? '– (no context)' : s.ms > 0 ? s.ms.toFixed(2) + ' ms/frame' : '–';
+    lostEl.hidden = !s.lost;
     if (samplesRow) {
       samplesRow.hidden = !s.area;
       samplesEl.textContent = samplesText(s) || '–';

@@ -9,7 +9,8 @@
 // then, on W09P2c: values off a control's list or out of range from the URL and the controls are
 // changed to one offered or refused, with a note naming the option and the value used, the control
 // showing the value in effect; the note clears with the next good change; and the readouts while
-// the context is lost (no ms figure) and after it is restored ("restored", then "running").
+// the context is lost (no ms figure, a note over the canvas) and after it is restored ("restored",
+// then "running", the note gone).
 // Screenshots of every page at both sizes go to OUT_DIR (argument 1) for a person to look at.
 import { mkdirSync } from 'node:fs';
 import path from 'node:path';
@@ -167,11 +168,18 @@ await runTest('web.layout', async ({ server, browser }) => {
     await page.waitForFunction(() => /lost/i.test(document.getElementById('status').textContent), null, { timeout: 10000 });
     await page.waitForFunction(() => !/ms\/frame/.test(document.getElementById('ms').textContent), null, { timeout: 5000 });
     const lostMs = await page.textContent('#ms');
+    await page.waitForFunction(() => !document.getElementById('lost').hidden, null, { timeout: 5000 });
+    const over = await page.evaluate(() => {
+      const a = document.getElementById('lost').getBoundingClientRect(), c = document.getElementById('canvas').getBoundingClientRect();
+      return Math.abs(a.left - c.left) < 1 && Math.abs(a.top - c.top) < 1 && Math.abs(a.width - c.width) < 1 && Math.abs(a.height - c.height) < 1;
+    });
+    check(over, 'w09p2c: the lost-context overlay does not cover the canvas');
     await page.screenshot({ path: path.join(OUT, 'w09p2c-context-lost-800x700.png') });
     await page.evaluate(() => window.__lose.restoreContext());
     await page.waitForFunction(() => /restored/i.test(document.getElementById('status').textContent), null, { timeout: 10000 });
     const restored = await page.textContent('#status');
     await page.waitForFunction(() => document.getElementById('status').textContent === 'running', null, { timeout: 20000 });
+    check(await page.evaluate(() => document.getElementById('lost').hidden), 'w09p2c: the lost-context overlay stays after the restore');
     await page.waitForFunction(() => /ms\/frame/.test(document.getElementById('ms').textContent), null, { timeout: 20000 });
     check(problems.length === 0, problems.join('; '));
     console.log(`w09p2c context loss: ms '${lostMs}' while lost; '${restored}', then 'running', ms '${await page.textContent('#ms')}'`);
