@@ -50,8 +50,10 @@ const oursUrl = (server, c, aov) =>
 async function openOurs(browser, server, c, aov, problems) {
   const p = await openPage(browser, oursUrl(server, c, aov), problems);
   await p.page.evaluate(() => window.penumbra.ready);
-  // The canvas's size is known once the animation loop has drawn a frame.
-  await p.page.waitForFunction(() => window.penumbra.frameCount() > 0, null, { timeout: 60000 });
+  // The page sizes its canvas to the window (CSS size x devicePixelRatio): fixed at SIZE here, then
+  // the size is known once the animation loop has drawn a frame at it.
+  const n0 = await p.page.evaluate((n) => { window.penumbra.setCanvasSize(n, n); return window.penumbra.frameCount(); }, SIZE);
+  await p.page.waitForFunction((n) => window.penumbra.frameCount() > n, n0, { timeout: 60000 });
   const s = await p.page.evaluate(() => window.penumbra.state());
   if (s.width !== SIZE || s.height !== SIZE) throw new Error(`penumbra's canvas is ${s.width}x${s.height}`);
   if (s.mapSize !== c.map) throw new Error(`penumbra's map is ${s.mapSize}, not ${c.map}`);
