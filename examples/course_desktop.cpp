@@ -51,38 +51,6 @@ struct Args {
     std::exit(2);
 }
 
-// The keys, each with the option (the page's control, the URL's name) it changes: the option-bound
-// ones from the exercises' key table, the others as CourseApp::on_key handles them.
-std::string key_list() {
-    std::string out = "keys (key, the option it changes as in the page's URL and the title, what it does):\n";
-    const auto line = [&](const std::string& key, std::string_view option, std::string_view help) {
-        std::string l = "  " + key;
-        l.resize(14, ' ');
-        l += option;
-        if (l.size() < 31) l.resize(31, ' ');
-        else l += ' ';
-        out += l + std::string(help) + "\n";
-    };
-    for (size_t i = 0; i < examples::exercise_list().size(); ++i) {
-        const examples::ExerciseInfo& x = examples::exercise_list()[i];
-        line(std::to_string(i + 1), "exercise " + std::string(x.name), x.title);
-    }
-    for (const examples::KeyBinding& k : examples::key_bindings()) {
-        std::string key(1, static_cast<char>(k.key));
-        if (k.help.find("Shift+") != std::string_view::npos) key += ", Shift+" + key;
-        line(key, k.option, k.help);
-    }
-    line("[ ]", "bias", "W09P2c: bias down / up (x1.5)");
-    line("B", "bias", "W09P2c: bias=sheet (the encoding's default, the sheet's constant)");
-    line("U", "bias", "W09P2c: bias=auto (the encoding's quantum + a receiver-slope term per fragment)");
-    line("- =", "light-radius", "soft: light radius down / up (0.05)");
-    line("Space", "time", "pause / resume both clocks (paused: time=T in the title and the URL)");
-    line("P", "", "print the settings: the URL query and the penumbra render command of this frame");
-    line("H, F1", "", "this list");
-    line("Esc", "", "quit");
-    return out;
-}
-
 // The short name of an exercise: its title up to the colon ("W09P2c", "Soft shadows").
 std::string short_name(examples::Exercise e) {
     const std::string_view t = examples::exercise_info(e).title;
@@ -136,7 +104,7 @@ void print_help() {
         "                      upper case with Shift; digits, [ ] - = and space)\n"
         "  --print-title       print the window title when its controls change, and at the end\n\n"
         "as the web pages' controls and URL:\n%s\n%s",
-        examples::exercise_names().c_str(), options.c_str(), key_list().c_str());
+        examples::exercise_names().c_str(), options.c_str(), examples::CourseApp::key_help().c_str());
 }
 
 Args parse_args(int argc, char** argv) {
@@ -235,18 +203,13 @@ int main(int argc, char** argv) {
         }
 
     std::printf("%s\n%s\n%s\n%s", window->description().c_str(), app.caps()->summary().c_str(),
-                std::string(examples::exercise_info(app.exercise()).title).c_str(), key_list().c_str());
+                std::string(examples::exercise_info(app.exercise()).title).c_str(), examples::CourseApp::key_help().c_str());
     std::fflush(stdout);
 
     bool quit = false;
     const auto on_key = [&](const platform::KeyEvent& k) {
         if (k.key == platform::keys::Escape) {
             quit = true;
-            return;
-        }
-        if (k.key == 'H' || k.key == platform::keys::F1) {
-            std::printf("%s", key_list().c_str());
-            std::fflush(stdout);
             return;
         }
         const std::string message = app.on_key(k.key, k.shift);

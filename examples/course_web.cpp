@@ -33,7 +33,8 @@ struct WebApp {
     std::string last_error;  // of the last failing call or frame
     std::string reported;    // the last frame error printed (each distinct one is printed once)
     double last_t = -1.0;
-    double restored_at = -1.0;  // the first frame's time after a restore
+    bool restored = false;      // the context was restored and "restored" is still said
+    double restored_at = -1.0;  // the first frame's time after the restore
     int width = 0, height = 0;
     bool lost = false;
     std::vector<std::uint8_t> pixels;
@@ -65,11 +66,14 @@ bool draw_frame() {
 }
 
 bool frame(const platform::FrameInfo& f) {
-    // "restored" is said for a few seconds of frames, then the status is "running" again.
-    if (g->restored_at < 0.0 && g->status.rfind("WebGL context restored:", 0) == 0) g->restored_at = f.time_s;
-    if (g->restored_at >= 0.0 && f.time_s - g->restored_at > kRestoredSeconds) {
-        if (g->status.rfind("WebGL context restored:", 0) == 0) g->status = "running";
-        g->restored_at = -1.0;
+    // "restored" is said for a few seconds of frames, then the status is "running" again (unless a
+    // frame's error has replaced it).
+    if (g->restored) {
+        if (g->restored_at < 0.0) g->restored_at = f.time_s;
+        if (f.time_s - g->restored_at > kRestoredSeconds) {
+            if (g->reported.empty()) g->status = "running";
+            g->restored = false;
+        }
     }
     if (g->last_t >= 0.0) g->app->advance(f.time_s - g->last_t);
     g->last_t = f.time_s;
@@ -82,7 +86,7 @@ bool frame(const platform::FrameInfo& f) {
 void on_context(platform::ContextEvent e) {
     if (e == platform::ContextEvent::Lost) {
         g->lost = true;
-        g->restored_at = -1.0;
+        g->restored = false;
         g->app->drop_gl();
         g->status = "WebGL context lost: waiting for the browser to restore it";
         std::printf("penumbra: %s\n", g->status.c_str());
@@ -95,6 +99,8 @@ void on_context(platform::ContextEvent e) {
     try {
         g->app->create_gl(g->platform->api());
         g->lost = false;
+        g->restored = true;
+        g->restored_at = -1.0;
         g->status = "WebGL context restored: renderer and GL objects made again (generation " +
                     std::to_string(g->app->gl_generation()) + ")";
     } catch (const std::exception& ex) {

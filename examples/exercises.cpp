@@ -105,16 +105,14 @@ namespace {
 // The values the exercise's control for a technique option offers: a select's or radios' list, a
 // checkbox's two; empty where the control takes any value the option takes (a number box, a
 // slider) or the exercise has no control for it (a setting kept from a URL).
-std::vector<std::string> offered_values(Exercise e, std::string_view name) {
-    const auto* o = render::find_option(render::option_table(), name);
-    if (!o) return {};
+std::vector<std::string> offered_values(Exercise e, const render::OptionInfo& info) {
     for (const Control& c : exercise_info(e).controls) {
-        if (c.option != name) continue;
+        if (c.option != info.name) continue;
         if (c.kind == ControlKind::Checkbox && c.values.empty()) return {"on", "off"};
         if (c.kind != ControlKind::Select && c.kind != ControlKind::Radio && c.kind != ControlKind::Checkbox) return {};
         if (!c.values.empty()) return {c.values.begin(), c.values.end()};
         std::vector<std::string> out;
-        for (const auto& ch : o->info.choices.empty() ? o->info.presets : o->info.choices) out.emplace_back(ch.value);
+        for (const auto& ch : info.choices.empty() ? info.presets : info.choices) out.emplace_back(ch.value);
         return out;
     }
     return {};
@@ -129,13 +127,16 @@ std::string joined(const std::vector<std::string>& v) {
 }  // namespace
 
 std::string CourseApp::keep_to_the_list(render::Settings& t, std::string_view name) {
-    std::vector<std::string> offered = offered_values(exercise_, name);
+    const auto* o = render::find_option(render::option_table(), name);
+    if (!o) return {};
+    std::vector<std::string> offered = offered_values(exercise_, o->info);
     if (offered.empty()) return {};
     const std::string v = setting_value(t, name);
-    const auto* o = render::find_option(render::option_table(), name);
-    const bool listed_here = std::find(offered.begin(), offered.end(), v) != offered.end();
+    const auto offers = [&v](const std::vector<std::string>& values) {
+        return std::find(values.begin(), values.end(), v) != values.end();
+    };
     if (o->info.type != render::OptionType::Integer) {
-        if (listed_here) return {};
+        if (offers(offered)) return {};
         return std::string(name) + "=" + v + " is not offered here (" + joined(offered) + ")";
     }
     // A number: the listed one nearest on a log scale (sizes and sample counts go in powers of two;
@@ -147,14 +148,14 @@ std::string CourseApp::keep_to_the_list(render::Settings& t, std::string_view na
                       offered.end());
         if (offered.empty()) offered = {listed.front()};
     }
-    if (listed_here && std::find(offered.begin(), offered.end(), v) != offered.end()) return {};
+    if (offers(offered)) return {};
     const double want = std::stod(v);
     const auto distance = [&](const std::string& x) { return std::fabs(std::log((std::stod(x) + 1.0) / (want + 1.0))); };
     std::string best = offered.front();
     for (const auto& x : offered)
         if (distance(x) < distance(best)) best = x;
     if (const std::string err = render::parse_option(t, name, best); !err.empty()) return without_dashes(err);
-    if (std::find(listed.begin(), listed.end(), v) != listed.end())
+    if (offers(listed))
         note_ = std::string(name) + "=" + v + " is more than this GL context renders; using " + best;
     else
         note_ = std::string(name) + "=" + v + " is not one of the values offered (" + joined(listed) + "); using " + best;
@@ -391,20 +392,29 @@ std::string CourseApp::last_plan() const { return std::string(exercise_info(exer
 // ---- keys -----------------------------------------------------------------------------------
 
 std::string CourseApp::key_help() {
-    std::string h = "keys:\n";
-    char digit = '1';
-    for (const auto& x : exercise_list()) h += "  " + std::string(1, digit++) + "         " + std::string(x.title) + "\n";
-    for (const KeyBinding& k : key_bindings())
-        h += "  " + std::string(1, static_cast<char>(k.key)) + "         " + std::string(k.help) + "\n";
-    h += "  - =       soft: light radius down / up (0.05)\n"
-         "  [ ]       W09P2c: bias down / up (x1.5)\n"
-         "  B         W09P2c: bias back to the encoding's default\n"
-         "  U         W09P2c: bias auto (the encoding's quantum + a receiver-slope term per fragment)\n"
-         "  Space     pause/resume time\n"
-         "  P         print the settings (URL query and penumbra render options)\n"
-         "  H, F1     this help\n"
-         "  Esc       quit\n";
-    return h;
+    // A line a key: the key, the option it changes (the page's control, the URL's name), what it does.
+    std::string out = "keys (key, the option it changes as in the page's URL and the title, what it does):\n";
+    const auto line = [&](const std::string& key, std::string_view option, std::string_view help) {
+        std::string l = "  " + key;
+        l.resize(14, ' ');
+        l += option;
+        if (l.size() < 31) l.resize(31, ' ');
+        else l += ' ';
+        out += l + std::string(help) + "\n";
+    };
+    for (size_t i = 0; i < exercise_list().size(); ++i)
+        line(std::to_string(i + 1), "exercise " + std::string(exercise_list()[i].name), exercise_list()[i].title);
+    for (const KeyBinding& k : key_bindings()) line(std::string(1, static_cast<char>(k.key)), k.option, k.help);
+    // The keys on_key handles itself.
+    line("[ ]", "bias", "W09P2c: bias down / up (x1.5)");
+    line("B", "bias", "W09P2c: bias=sheet (the sheet's constant for the encoding)");
+    line("U", "bias", "W09P2c: bias=auto (the packing's precision + a receiver-slope term per fragment)");
+    line("- =", "light-radius", "soft: light radius down / up (0.05)");
+    line("Space", "time", "pause / resume both clocks (paused: time=T in the title and the URL)");
+    line("P", "", "print the settings: the URL query and the penumbra render command of this frame");
+    line("H, F1", "", "this list");
+    line("Esc", "", "quit");
+    return out;
 }
 
 std::vector<std::string> CourseApp::key_values(std::string_view option) const {

@@ -53,7 +53,7 @@ if [ -z "$last" ] || ! grep -Fq "\"${last% | *} | " "$titles"; then
   echo "FAIL: no window's title starts with the last title printed '${last% | *} | '"; fail=1
 fi
 # The keys printed at start, each with the option it changes.
-for pair in "E|encoding" "F|filter" "M, Shift\+M|map-size" "L|light" "\[ \]|bias" "U|bias" "Space|time" "4|exercise w09p2c"; do
+for pair in "E|encoding" "F|filter" "M|map-size" "L|light" "\[ \]|bias" "U|bias" "Space|time" "4|exercise w09p2c"; do
   key=${pair%|*} option=${pair#*|}
   grep -Eq "^  $key +$option " "$log" || { echo "FAIL: no key line for '$key' changing '$option'"; fail=1; }
 done
