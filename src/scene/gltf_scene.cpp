@@ -246,6 +246,12 @@ private:
                                      static_cast<float>(pbr.baseColorFactor[2]),
                                      static_cast<float>(pbr.baseColorFactor[3]));
         if (pbr.baseColorTexture.index >= 0 && has_uvs) m.base_color_texture = texture_image(gltf_material);
+        // alphaMode and alphaCutoff were checked by validate_json (one of the three, 0..1).
+        m.alpha_mode = src.alphaMode == "MASK"    ? AlphaMode::Mask
+                       : src.alphaMode == "BLEND" ? AlphaMode::Blend
+                                                  : AlphaMode::Opaque;
+        m.alpha_cutoff = static_cast<float>(src.alphaCutoff);
+        m.double_sided = src.doubleSided;
         scene_.materials.push_back(m);
         const int out = static_cast<int>(scene_.materials.size()) - 1;
         material_cache_[key] = out;

@@ -93,6 +93,7 @@ public:
         }
         each(doc, "nodes", [&](const json& n, const std::string& at) { check_node(n, at); });
         each(doc, "cameras", [&](const json& c, const std::string& at) { check_camera(c, at); });
+        each(doc, "materials", [&](const json& m, const std::string& at) { check_material(m, at); });
         each(doc, "accessors", [&](const json& a, const std::string& at) { check_accessor(a, at); });
         each(doc, "buffers", [&](const json& b, const std::string& at) { check_uri(b, at); });
         each(doc, "images", [&](const json& b, const std::string& at) { check_uri(b, at); });
@@ -184,6 +185,22 @@ private:
         const double v = o[key].get<double>();
         if (!(v >= lo && v <= hi))
             fail(at + "." + key + " is " + num(v) + ": outside " + num(lo) + ".." + num(hi));
+    }
+
+    // alphaMode one of glTF's three (tinygltf keeps any string), alphaCutoff a number in 0..1 (the
+    // walk has refused one that is not finite), doubleSided a boolean.
+    static void check_material(const json& m, const std::string& at) {
+        if (m.contains("alphaMode")) {
+            const json& a = m["alphaMode"];
+            if (!a.is_string()) fail(at + ".alphaMode is " + a.dump().substr(0, 40) + ": expected \"OPAQUE\", \"MASK\" or \"BLEND\"");
+            const std::string v = a.get<std::string>();
+            if (v != "OPAQUE" && v != "MASK" && v != "BLEND")
+                fail(at + ".alphaMode is '" + printable(v) + "': expected OPAQUE, MASK or BLEND");
+        }
+        if (m.contains("alphaCutoff") && !m["alphaCutoff"].is_number())
+            fail(at + ".alphaCutoff is not a number");
+        range(m, "alphaCutoff", at, 0.0, 1.0);
+        if (m.contains("doubleSided") && !m["doubleSided"].is_boolean()) fail(at + ".doubleSided is not a boolean");
     }
 
     void check_camera(const json& c, const std::string& at) const {

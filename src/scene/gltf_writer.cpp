@@ -228,11 +228,20 @@ private:
                     {"roughnessFactor", roughness}};
         const int texture = texture_for(s, m.base_color_texture);
         if (texture >= 0) pbr["baseColorTexture"] = {{"index", texture}};
-        doc_["materials"].push_back(
-            {{"name", text(m.name)},
-             {"pbrMetallicRoughness", pbr},
-             {"extras", {{"penumbra", {{"specular", number(static_cast<double>(m.specular), what + ": specular")},
-                                       {"shininess", shininess}}}}}});
+        json mat = {{"name", text(m.name)},
+                    {"pbrMetallicRoughness", pbr},
+                    {"extras", {{"penumbra", {{"specular", number(static_cast<double>(m.specular), what + ": specular")},
+                                              {"shininess", shininess}}}}}};
+        // glTF's defaults (OPAQUE, 0.5, single-sided) are left out; the cutoff only with MASK.
+        if (m.alpha_mode != AlphaMode::Opaque) mat["alphaMode"] = to_string(m.alpha_mode);
+        if (m.alpha_mode == AlphaMode::Mask) {
+            const double cutoff = number(static_cast<double>(m.alpha_cutoff), what + ": alpha cutoff");
+            if (!(cutoff >= 0.0 && cutoff <= 1.0))
+                fail(what + ": alpha cutoff " + std::to_string(cutoff) + " is outside 0..1, which glTF cannot hold");
+            mat["alphaCutoff"] = cutoff;
+        }
+        if (m.double_sided) mat["doubleSided"] = true;
+        doc_["materials"].push_back(std::move(mat));
         const int out = static_cast<int>(doc_["materials"].size()) - 1;
         materials_[index] = out;
         return out;

@@ -94,4 +94,47 @@ Bounds scene_bounds(const Scene& scene, bool casters_only) {
     return out;
 }
 
+const char* to_string(AlphaMode m) {
+    switch (m) {
+        case AlphaMode::Opaque: return "OPAQUE";
+        case AlphaMode::Mask: return "MASK";
+        case AlphaMode::Blend: return "BLEND";
+    }
+    return "OPAQUE";
+}
+
+bool repeats(const Image& image) {
+    const auto pot = [](int v) { return v > 0 && (v & (v - 1)) == 0; };
+    return pot(image.width) && pot(image.height);
+}
+
+float sample_alpha(const Image& image, glm::vec2 uv, bool repeat) {
+    const int w = image.width, h = image.height;
+    if (w <= 0 || h <= 0 || image.rgba.size() < static_cast<size_t>(w) * static_cast<size_t>(h) * 4u) return 1.0f;
+    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return 1.0f;
+    const auto texel = [&](int x, int y) {
+        if (repeat) {
+            x %= w;
+            y %= h;
+            if (x < 0) x += w;
+            if (y < 0) y += h;
+        } else {
+            x = x < 0 ? 0 : x >= w ? w - 1 : x;
+            y = y < 0 ? 0 : y >= h ? h - 1 : y;
+        }
+        return static_cast<float>(image.rgba[(static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)) * 4u + 3u]) /
+               255.0f;
+    };
+    // Far outside [0, 1] the repeat is the same texels; keep the floor's int in range.
+    if (repeat) uv -= glm::floor(uv);
+    else uv = glm::clamp(uv, glm::vec2(-1.0f), glm::vec2(2.0f));
+    const float fx = uv.x * static_cast<float>(w) - 0.5f, fy = uv.y * static_cast<float>(h) - 0.5f;
+    const float x0f = std::floor(fx), y0f = std::floor(fy);
+    const float tx = fx - x0f, ty = fy - y0f;
+    const int x0 = static_cast<int>(x0f), y0 = static_cast<int>(y0f);
+    const float top = texel(x0, y0) * (1.0f - tx) + texel(x0 + 1, y0) * tx;
+    const float bottom = texel(x0, y0 + 1) * (1.0f - tx) + texel(x0 + 1, y0 + 1) * tx;
+    return top * (1.0f - ty) + bottom * ty;
+}
+
 }  // namespace penumbra::scene

@@ -52,12 +52,22 @@ struct Image {
     std::vector<std::uint8_t> rgba;
 };
 
+// glTF's alphaMode: how a material's alpha (base_color.a times the base texture's alpha) is used.
+// Opaque ignores it; Mask keeps only what has alpha >= alpha_cutoff (a fence, a leaf: in the camera
+// pass and in every shadow pass); Blend is drawn over the opaque objects, sorted back to front, and
+// casts no shadow unless the settings say so (docs/alpha.md).
+enum class AlphaMode { Opaque, Mask, Blend };
+const char* to_string(AlphaMode m);  // "OPAQUE", "MASK", "BLEND": glTF's spelling
+
 struct Material {
     std::string name;
     glm::vec4 base_color{1.0f};
     int base_color_texture = -1;  // index into Scene::images, -1 when none
     float specular = 0.25f;       // Phong specular strength
     float shininess = 32.0f;
+    AlphaMode alpha_mode = AlphaMode::Opaque;
+    float alpha_cutoff = 0.5f;    // Mask: alpha below it is cut away
+    bool double_sided = false;    // glTF doubleSided: both faces drawn, the back one lit as seen
 };
 
 // One drawable instance: a mesh with a material placed in the world.
@@ -122,6 +132,13 @@ struct Scene {
     std::optional<glm::vec4> ground_plane;
     int ground_object = -1;
 };
+
+// Bilinear filtering of an image's alpha at texture coordinate uv, as GL samples a texture at its
+// base level (texel centres at (i + 0.5) / size; repeat or clamp to edge at the borders; rows top
+// first, glTF's uv origin at the top-left). An empty image reads 1.
+float sample_alpha(const Image& image, glm::vec2 uv, bool repeat);
+// What GL does with a scene image (Renderer::load): repeat for power-of-two sizes, else clamp.
+bool repeats(const Image& image);
 
 // Local-space bounds of a mesh, and world-space bounds of an object (its mesh's corners transformed).
 Bounds mesh_bounds(const Mesh& mesh);
