@@ -6,7 +6,9 @@
 // offsets over the penumbra's width at this receiver's distance from the light), LIGHT_AMBIENT /
 // LIGHT_DIRECT (only that term: Gooch's planes add the direct light once per plane that lights the
 // pixel, scaled by u_light_weight), TEXTURED (base colour texture), LIGHT_SPOT (cone falloff), AOV_VISIBILITY (write visibility
-// as grey instead of colour).
+// as grey instead of colour), ALPHA_TEST (glTF MASK: alpha below u_alpha_cutoff discarded, before
+// any output, so the visibility AOV sees through the gaps too), ALPHA_BLEND (glTF BLEND: the alpha
+// written for the blend), DOUBLE_SIDED (a back face is lit with its normal turned to the viewer).
 #include "precision.glsl"
 
 uniform vec4 u_base_color;
@@ -19,6 +21,9 @@ uniform float u_shininess;
 
 #ifdef TEXTURED
 uniform sampler2D u_base_texture;
+#endif
+#ifdef ALPHA_TEST
+uniform float u_alpha_cutoff;
 #endif
 #ifdef LIGHT_SPOT
 uniform vec3 u_spot_direction;  // where the light travels
@@ -55,7 +60,19 @@ uniform float u_light_weight;
 #endif
 
 void main() {
+#if defined(ALPHA_TEST) || defined(ALPHA_BLEND)
+    float alpha = u_base_color.a;
+#ifdef TEXTURED
+    alpha *= texture2D(u_base_texture, v_uv).a;
+#endif
+#ifdef ALPHA_TEST
+    if (alpha < u_alpha_cutoff) discard;
+#endif
+#endif
     vec3 n = normalize(v_normal);
+#ifdef DOUBLE_SIDED
+    if (!gl_FrontFacing) n = -n;
+#endif
     vec3 l = normalize(u_light.xyz - v_world * u_light.w);
     float visibility = 1.0;
 #if defined(SHADOW_MAP)
@@ -103,6 +120,9 @@ void main() {
     gl_FragColor = vec4(direct * u_light_weight, 1.0);
 #else
     gl_FragColor = vec4(base.rgb * u_ambient + direct, 1.0);
+#endif
+#ifdef ALPHA_BLEND
+    gl_FragColor.a = alpha;
 #endif
 #endif
 }

@@ -57,7 +57,8 @@ bool Settings::operator==(const Settings& o) const {
            light_fit == o.light_fit && precision == o.precision && volume_method == o.volume_method &&
            show_volumes == o.show_volumes && aov == o.aov && light_radius == o.light_radius &&
            pcss_search == o.pcss_search && pcss_taps == o.pcss_taps && area_samples == o.area_samples &&
-           area_per_frame == o.area_per_frame && gooch_planes == o.gooch_planes && gooch_method == o.gooch_method;
+           area_per_frame == o.area_per_frame && gooch_planes == o.gooch_planes && gooch_method == o.gooch_method &&
+           blend_shadows == o.blend_shadows;
 }
 
 bool Job::operator==(const Job& o) const {
@@ -433,6 +434,13 @@ std::vector<Option<Options>> make_table() {
                          {{"planes", "offset planes (stencil)"}, {"texture", "shadow texture, linear filtering"}});
     add(gooch_method, [](Options& o, std::string_view v) { o.settings.gooch_method = enum_of(v, kAllGoochMethods); },
         [](const Options& o) { return std::string(to_string(o.settings.gooch_method)); });
+
+    OptionInfo blend_shadows = make_option_info("blend-shadows", P::Technique, T::Choice,
+                         "glTF alphaMode BLEND objects: off = they cast no shadow; on = they cast one, alpha-tested at "
+                         "their alphaCutoff (0.5 by default) like MASK cut-outs", "Translucent casters",
+                         {{"off", "off: translucent objects cast no shadow"}, {"on", "on: cut out at their alpha cutoff"}});
+    add(blend_shadows, [](Options& o, std::string_view v) { o.settings.blend_shadows = v == "on"; },
+        [](const Options& o) { return std::string(o.settings.blend_shadows ? "on" : "off"); });
 
     OptionInfo aov = make_option_info("aov", P::Technique, T::Choice, "what the image shows", "Show",
                    {{"color", "colour"}, {"visibility", "visibility (white lit, black shadowed)"},

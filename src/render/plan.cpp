@@ -3,6 +3,7 @@
 #include "render/plan.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -20,12 +21,6 @@ constexpr glm::vec4 kWhite{1.0f};
 constexpr float kAmbient = 0.25f;
 
 bool valid_mesh(const scene::Scene& s, int mesh) { return mesh >= 0 && mesh < static_cast<int>(s.meshes.size()); }
-
-const scene::Material& material_of(const scene::Scene& s, int material) {
-    static const scene::Material fallback{};
-    if (material < 0 || material >= static_cast<int>(s.materials.size())) return fallback;
-    return s.materials[static_cast<size_t>(material)];
-}
 
 std::string size_str(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
 
@@ -50,6 +45,17 @@ std::string output_name(const Output& o) {
 }
 
 }  // namespace
+
+const scene::Material& material_of(const scene::Scene& s, int material) {
+    static const scene::Material fallback{};
+    if (material < 0 || material >= static_cast<int>(s.materials.size())) return fallback;
+    return s.materials[static_cast<size_t>(material)];
+}
+
+bool casts(const scene::Scene& scene, const scene::Object& o, bool blend_shadows) {
+    return o.casts_shadow && valid_mesh(scene, o.mesh) &&
+           (blend_shadows || material_of(scene, o.material).alpha_mode != scene::AlphaMode::Blend);
+}
 
 CameraView camera_view(const scene::Scene& scene, const FrameInputs& in) {
     const scene::Camera& cam = scene.camera;
@@ -174,7 +180,8 @@ StateCounts FramePlan::state_counts() const {
                 for (size_t i = 0; i < pass.bindings.size(); ++i)
                     if (d.bindings & (1u << i)) n.uniform_sets += static_cast<int>(pass.bindings[i].uniforms.size());
             }
-            if (pass.object_uniforms == ObjectUniforms::Lit && d.image >= 0)
+            if ((pass.object_uniforms == ObjectUniforms::Lit || (pass.object_uniforms == ObjectUniforms::Mvp && d.alpha)) &&
+                d.image >= 0)
                 bind(kBaseTextureUnit, d.image_resource >= 0 ? "resource " + std::to_string(d.image_resource)
                                                              : "image " + std::to_string(d.image));
             ++n.draws;
@@ -237,6 +244,19 @@ Draw PlanContext::mesh_draw(int object) const {
     return d;
 }
 
+AlphaTest PlanContext::caster_alpha(Draw& d) const {
+    const int material = scene.objects[static_cast<size_t>(d.object)].material;
+    const scene::Material& m = material_of(scene, material);
+    if (m.alpha_mode == scene::AlphaMode::Opaque) return {};
+    // BLEND reaches a shadow pass only under --blend-shadows: cut out at its cutoff there.
+    d.material = material;
+    d.alpha = true;
+    if (m.base_color_texture >= 0 && m.base_color_texture < static_cast<int>(scene.images.size()) &&
+        !scene.meshes[static_cast<size_t>(d.mesh)].uvs.empty())
+        d.image = m.base_color_texture;
+    return {true, d.image >= 0};
+}
+
 Draw PlanContext::object_draw(int object) {
     Draw d = mesh_draw(object);
     d.material = scene.objects[static_cast<size_t>(object)].material;
@@ -246,6 +266,8 @@ Draw PlanContext::object_draw(int object) {
             if (ov.material >= 0) d.material = ov.material;
         }
     const scene::Material& m = material_of(scene, d.material);
+    if (m.double_sided) d.cull = gl::Cull::None;  // a leaf seen from below
+    d.alpha = m.alpha_mode != scene::AlphaMode::Opaque;
     if (m.base_color_texture >= 0 && m.base_color_texture < static_cast<int>(scene.images.size()) &&
         !scene.meshes[static_cast<size_t>(d.mesh)].uvs.empty()) {
         d.image = m.base_color_texture;
@@ -260,6 +282,10 @@ Draw PlanContext::object_draw(int object) {
 LitFeatures PlanContext::base_features(const Draw& d) const {
     LitFeatures f;
     f.textured = d.image >= 0;
+    const scene::Material& m = material_of(scene, d.material);
+    f.alpha_test = m.alpha_mode == scene::AlphaMode::Mask;
+    f.alpha_blend = m.alpha_mode == scene::AlphaMode::Blend;
+    f.double_sided = m.double_sided;
     f.spot = light.type == scene::LightType::Spot;
     f.visibility_aov = settings.aov == Aov::Visibility;
     return f;
@@ -296,12 +322,12 @@ scene::Bounds shadowed_bounds(const scene::Scene& scene) {
     return b;
 }
 
-ShadowBounds shadow_bounds(const scene::Scene& scene) {
+ShadowBounds shadow_bounds(const scene::Scene& scene, bool blend_shadows) {
     ShadowBounds b;
     for (const auto& o : scene.objects) {
         if (!valid_mesh(scene, o.mesh)) continue;
         if (o.receives_shadow) b.receivers.push_back(scene::object_bounds(scene, o));
-        if (o.casts_shadow) b.casters.push_back(scene::object_bounds(scene, o));
+        if (casts(scene, o, blend_shadows)) b.casters.push_back(scene::object_bounds(scene, o));
     }
     return b;
 }
@@ -321,15 +347,16 @@ struct Planning {
 
     Planning(const scene::Scene& scene, const Settings& s, const gl::Caps& caps, const FrameInputs& in,
              const FramePlan* previous)
-        : ctx{scene, s, caps, in, previous, plan, in.light ? *in.light : scene.light, {}, {}, {}, {}},
+        : ctx{scene, s, caps, in, previous, plan, in.light ? *in.light : scene.light, {}, {}, {}, {}, {}},
           module(technique_module(s.technique)) {
         plan.settings = s;
         plan.output = output_name(in.output);
         for (size_t i = 0; i < scene.objects.size(); ++i) {
             const auto& o = scene.objects[i];
             if (!valid_mesh(scene, o.mesh)) continue;
-            ctx.drawable.push_back(static_cast<int>(i));
-            if (o.casts_shadow) ctx.casters.push_back(static_cast<int>(i));
+            const bool blend = material_of(scene, o.material).alpha_mode == scene::AlphaMode::Blend;
+            (blend ? ctx.translucent : ctx.drawable).push_back(static_cast<int>(i));
+            if (casts(scene, o, s.blend_shadows)) ctx.casters.push_back(static_cast<int>(i));
         }
         ctx.depth_path = {s.precision == shadow::Precision::Mediump, caps.unorm_floor};
         if (s.light_radius) ctx.light.radius = *s.light_radius;
@@ -363,6 +390,52 @@ Pass camera_pass(PlanContext& c, const Module& module, bool stencil,
     }
     if (c.settings.aov == Aov::Visibility) cam.detail += ", visibility AOV";
     return cam;
+}
+
+// The glTF BLEND objects (PlanContext::translucent) after everything else has been drawn into the
+// camera's target: sorted back to front by the view depth of their bounds' centres, blended by
+// their alpha over what is there, depth-tested against it but writing no depth (so one behind
+// another still shows). The technique shades them where it can by a lookup (the shadow map, Gooch's
+// texture); the stencil techniques' shadows are drawn already, so translucent objects get none of
+// theirs. Not in the visibility or other AOVs: those show the opaque surfaces.
+void blend_pass(PlanContext& c, const Module& module) {
+    if (c.translucent.empty()) return;
+    if (c.settings.aov != Aov::Color) {
+        c.plan.notes.push_back(std::to_string(c.translucent.size()) + " translucent (BLEND) object(s) left out of --aov " +
+                               std::string(to_string(c.settings.aov)));
+        return;
+    }
+    std::vector<std::pair<float, int>> order;  // (view depth, object)
+    for (int i : c.translucent) {
+        const glm::vec3 centre = scene::object_bounds(c.scene, c.scene.objects[static_cast<size_t>(i)]).center();
+        order.emplace_back(-(c.plan.camera.view * glm::vec4(centre, 1.0f)).z, i);
+    }
+    std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    Pass p;
+    p.name = "camera-blend";
+    p.module = "frame";
+    p.target = c.camera_target;
+    p.state.depth_write = false;
+    p.state.blend = gl::Blend::Alpha;
+    p.bindings = c.lit_bindings();
+    const std::uint32_t all = (1u << p.bindings.size()) - 1u;
+    std::vector<CameraItem> items;
+    std::string names;
+    for (const auto& [depth, i] : order) {
+        p.draws.push_back(c.object_draw(i));
+        items.push_back({i, c.base_features(p.draws.back()), all});
+        char b[48];
+        std::snprintf(b, sizeof b, " (depth %.3g)", static_cast<double>(depth));
+        names += (names.empty() ? "" : ", ") + p.draws.back().label + b;
+    }
+    p.detail = std::to_string(order.size()) + " translucent object(s) back to front: " + names +
+               "; blend alpha, depth test, no depth writes";
+    if (c.settings.technique != Technique::Volumes) module.shade(c, p, items);
+    for (size_t k = 0; k < items.size(); ++k) {
+        p.draws[k].variant = lit_variant(items[k].features);
+        p.draws[k].bindings = items[k].bindings;
+    }
+    c.add_pass(std::move(p));
 }
 
 // ---- Heckbert and Herf: the technique run from points on the light, averaged -------------------
@@ -404,6 +477,7 @@ std::string area_key(const PlanContext& c) {
         key.add(o.casts_shadow);
         key.add(o.receives_shadow);
     }
+    for (int i : c.casters) key.add_placement(c.scene, i);  // BLEND casters too (--blend-shadows)
     Settings s = c.settings;
     s.area_per_frame = 0;
     s.aov = Aov::Color;
@@ -476,7 +550,7 @@ void plan_area(Planning& p, bool stencil) {
             // No previous plan: a sample's shadow map is never taken for another's.
             PlanContext sc{c.scene, hard, c.caps, c.inputs, nullptr, p.plan,
                            shadow::area_light_sample(c.light, k, axis), c.drawable, c.casters, c.depth_path,
-                           {one_r, out.width, out.height, 0, 0, false}};
+                           {one_r, out.width, out.height, 0, 0, false}, {}};
             p.module.before_camera(sc);
             Pass cam = camera_pass(sc, p.module, stencil);
             cam.name = "area-camera";
@@ -509,6 +583,7 @@ void plan_area(Planning& p, bool stencil) {
     }
     Pass cam = camera_pass(c, technique_module(Technique::None), false, area_lookup);
     c.add_pass(std::move(cam));
+    blend_pass(c, technique_module(Technique::None));
     // The samples' resources (the shadow map) hold the last sample's content, not the first's
     // whose key they were declared with: nothing may reuse them.
     for (PlannedResource& r : p.plan.resources)
@@ -552,8 +627,10 @@ FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& cap
     }
     if (!why.empty()) p.plan.notes.push_back(why);
     p.module.before_camera(c);
-    if (!p.module.own_view(c)) c.add_pass(camera_pass(c, p.module, stencil));
+    const bool own = p.module.own_view(c);
+    if (!own) c.add_pass(camera_pass(c, p.module, stencil));
     p.module.after_camera(c);
+    if (!own) blend_pass(c, p.module);
     return std::move(p.plan);
 }
 

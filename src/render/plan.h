@@ -156,6 +156,9 @@ struct Draw {
     int image = -1;              // Lit: the scene image sampled as base colour (-1: none)...
     int image_resource = -1;     // ...or this resource's texture instead (an ImageOverride)
     std::optional<gl::Cull> cull;  // the pass's state with this face culling instead (a shadow map's faces)
+    // The material's alpha is read (ALPHA_TEST, ALPHA_BLEND): the executor sets u_base_color,
+    // u_alpha_cutoff and the base texture (`image`) in any pass, depth and stencil passes too.
+    bool alpha = false;
     // Instead of a mesh: triangles of homogeneous world points made for this frame (a shadow
     // volume), drawn with the pass's view_proj (ObjectUniforms::Mvp, world = identity).
     std::shared_ptr<const std::vector<glm::vec4>> triangles;
@@ -256,6 +259,12 @@ FramePlan plan(const scene::Scene& scene, const Settings& settings, const gl::Ca
 // camera's (its aspect, or the output's when it has none).
 CameraView camera_view(const scene::Scene& scene, const FrameInputs& inputs);
 
+// Whether an object casts a shadow in this frame: it casts (Object::casts_shadow), has a mesh,
+// and its material is not glTF BLEND, unless blend_shadows (--blend-shadows on) says BLEND casts.
+bool casts(const scene::Scene& scene, const scene::Object& object, bool blend_shadows);
+// The material of a draw or object (a default one for an index out of range).
+const scene::Material& material_of(const scene::Scene& scene, int material);
+
 // The world bounds of every object that casts or receives shadows.
 scene::Bounds shadowed_bounds(const scene::Scene& scene);
 // The world bounds of the objects (with a valid mesh) that receive shadows and of those that cast
@@ -264,7 +273,7 @@ struct ShadowBounds {
     std::vector<scene::Bounds> receivers;
     std::vector<scene::Bounds> casters;
 };
-ShadowBounds shadow_bounds(const scene::Scene& scene);
+ShadowBounds shadow_bounds(const scene::Scene& scene, bool blend_shadows = false);
 // The light's frustum fitted tightly around the receivers a camera with this view-projection
 // sees and the casters that can shadow them (shadow::fit_light_frustum_tight): the shadow map's
 // fit, and exercise W09P2a's view from the light.

@@ -13,12 +13,6 @@ namespace {
 
 bool power_of_two(int v) { return v > 0 && (v & (v - 1)) == 0; }
 
-const scene::Material& material_of(const scene::Scene& s, int material) {
-    static const scene::Material fallback{};
-    if (material < 0 || material >= static_cast<int>(s.materials.size())) return fallback;
-    return s.materials[static_cast<size_t>(material)];
-}
-
 void set_uniform(const gl::Program& p, const Uniform& u) {
     std::visit([&](const auto& v) { p.set(u.name.c_str(), v); }, u.value);
 }
@@ -166,6 +160,15 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
         }
         if (pass.object_uniforms == ObjectUniforms::Mvp) {
             p.set("u_mvp", pass.view_proj * d.world);
+            if (d.alpha) {  // a cut-out caster: its alpha, as the camera pass reads it
+                const scene::Material& m = material_of(scene, d.material);
+                p.set("u_base_color", m.base_color);
+                p.set("u_alpha_cutoff", m.alpha_cutoff);
+                if (d.image >= 0) {
+                    device_.bind_texture(kBaseTextureUnit, images_[static_cast<size_t>(d.image)]);
+                    p.set("u_base_texture", kBaseTextureUnit);
+                }
+            }
         } else if (pass.object_uniforms == ObjectUniforms::Lit) {
             const scene::Material& m = material_of(scene, d.material);
             p.set("u_model", d.world);
@@ -173,6 +176,7 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
             p.set("u_base_color", m.base_color);
             p.set("u_specular", m.specular);
             p.set("u_shininess", m.shininess);
+            if (d.alpha) p.set("u_alpha_cutoff", m.alpha_cutoff);
             if (d.image >= 0) {
                 device_.bind_texture(kBaseTextureUnit,
                                      d.image_resource >= 0

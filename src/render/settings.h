@@ -90,6 +90,8 @@ struct Settings {
     // --technique gooch: planes (or texture taps) averaged; 1 = the planar shadow (planes).
     int gooch_planes = 8;
     GoochMethod gooch_method = GoochMethod::Planes;
+    // glTF alphaMode BLEND objects cast shadows (alpha-tested at their cutoff) instead of none.
+    bool blend_shadows = false;
 
     // The constant bias: with bias_auto the quantum part, else the chosen one or the sheet's.
     float effective_bias() const {

@@ -103,13 +103,25 @@ Variant lit_variant(const LitFeatures& f) {
     if (f.textured) v.defines.emplace_back("TEXTURED");
     if (f.spot) v.defines.emplace_back("LIGHT_SPOT");
     if (f.visibility_aov) v.defines.emplace_back("AOV_VISIBILITY");
+    if (f.alpha_test) v.defines.emplace_back("ALPHA_TEST");
+    if (f.alpha_blend) v.defines.emplace_back("ALPHA_BLEND");
+    if (f.double_sided) v.defines.emplace_back("DOUBLE_SIDED");
     return v;
 }
 
-Variant depth_variant(shadow::Encoding e, const DepthPath& path) {
+namespace {
+void add_alpha(Variant& v, AlphaTest alpha) {
+    if (!alpha.on) return;
+    v.defines.emplace_back("ALPHA_TEST");
+    if (alpha.textured) v.defines.emplace_back("TEXTURED");
+}
+}  // namespace
+
+Variant depth_variant(shadow::Encoding e, const DepthPath& path, AlphaTest alpha) {
     Variant v{"depth.vert", "depth.frag", {encoding_define(e)}};
     if (path.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
     if (path.pack_floor) v.defines.emplace_back("PACK_FLOOR");
+    add_alpha(v, alpha);
     return v;
 }
 
@@ -124,7 +136,11 @@ Variant probe_variant() { return {"light_depth.vert", "probe.frag", {}}; }
 
 Variant volume_variant() { return {"volume.vert", "probe.frag", {}}; }
 
-Variant flat_variant() { return {"depth.vert", "probe.frag", {}}; }
+Variant flat_variant(AlphaTest alpha) {
+    Variant v{"depth.vert", "probe.frag", {}};
+    add_alpha(v, alpha);
+    return v;
+}
 
 std::vector<std::string> gooch_tap_defines(int taps) {
     std::string sum = "GOOCH_SUM(F) (";
@@ -188,17 +204,34 @@ std::vector<Variant> all_variants() {
                             shadowing.push_back(sm);
                         }
             }
+    // Each with the textured / spot / visibility bits, and the glTF material features that the
+    // camera passes ask for with them: MASK textured (one- or double-sided, any bits), BLEND
+    // one-sided, textured or not (never in the visibility AOV: translucent objects are left out of
+    // it). Not listed (compiled on first use, not checked by the shader tests): MASK without a
+    // texture, double-sided OPAQUE or BLEND, and any of them with EMULATE_MEDIUMP, so the list
+    // stays under twice its size without them (each of these multiplies ~170 bases).
     for (LitFeatures base : shadowing)
         for (int bits = 0; bits < 8; ++bits) {
             base.textured = bits & 1;
             base.spot = bits & 2;
             base.visibility_aov = bits & 4;
+            base.alpha_test = base.alpha_blend = base.double_sided = false;
             out.push_back(lit_variant(base));
+            if (base.mediump) continue;
+            base.alpha_test = true;
+            for (bool two : {false, true}) {
+                base.double_sided = two;
+                if (base.textured) out.push_back(lit_variant(base));
+            }
+            base.alpha_test = base.double_sided = false;
+            base.alpha_blend = true;
+            if (!base.visibility_aov) out.push_back(lit_variant(base));
         }
     for (auto e : shadow::kAllEncodings)
         for (bool mediump : {false, true}) {
             for (bool pack_floor : {false, true}) {
                 out.push_back(depth_variant(e, {mediump, pack_floor}));
+                for (bool textured : {false, true}) out.push_back(depth_variant(e, {mediump, pack_floor}, {true, textured}));
                 if (e != shadow::Encoding::DepthTex) out.push_back(ramp_variant(e, {mediump, pack_floor}));
             }
             out.push_back(light_depth_variant(e, false, {mediump, false}));
@@ -208,6 +241,8 @@ std::vector<Variant> all_variants() {
     out.push_back(volume_variant());
     out.push_back(area_add_variant());
     out.push_back(flat_variant());
+    out.push_back(flat_variant({true, false}));
+    out.push_back(flat_variant({true, true}));
     // PCSS's tap counts, each once (the loops' bounds).
     for (int n : {1, 8, 32, 64}) {
         LitFeatures p;

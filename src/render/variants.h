@@ -47,6 +47,18 @@ struct LitFeatures {
     // the visibility from the shadow texture sampled linearly at that many offsets (texture).
     LightTerm light_term = LightTerm::All;
     int gooch_taps = 0;
+    // glTF materials: MASK (fragments below the cutoff discarded), BLEND (the alpha written for
+    // the blend pass), doubleSided (a back face lit as seen).
+    bool alpha_test = false;
+    bool alpha_blend = false;
+    bool double_sided = false;
+};
+
+// How a pass that draws casters without their material (depth, stencil, flat) treats a caster's
+// alpha: not at all, or the MASK discard with the base colour's alpha (and the base texture's).
+struct AlphaTest {
+    bool on = false;
+    bool textured = false;
 };
 
 // How the depth path is compiled on this context: the emulated precision and what the unorm8
@@ -58,7 +70,7 @@ struct DepthPath {
 
 Variant lit_variant(const LitFeatures& f);
 // The light's pass (also the planar stencil pass with DepthTex: colour off).
-Variant depth_variant(shadow::Encoding e, const DepthPath& path = {});
+Variant depth_variant(shadow::Encoding e, const DepthPath& path = {}, AlphaTest alpha = {});
 Variant light_depth_variant(shadow::Encoding e, bool perspective, const DepthPath& path = {});
 // The unorm8 rounding probe's program (a full-screen triangle of one colour, u_value).
 Variant probe_variant();
@@ -74,7 +86,7 @@ Variant ramp_variant(shadow::Encoding e, const DepthPath& path);
 std::vector<std::string> pcf_kernel_defines(shadow::Filter f, shadow::PcfKernel kernel = shadow::PcfKernel::Full);
 
 // A constant colour (u_value) through u_mvp: Gooch's casters into the shadow texture.
-Variant flat_variant();
+Variant flat_variant(AlphaTest alpha = {});
 
 // Gooch's texture taps as the shader's defines: GOOCH_TAPS (the count) and GOOCH_SUM(F), the sum
 // of F(offset) over shadow::gooch_disc(taps).

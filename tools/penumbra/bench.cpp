@@ -108,7 +108,8 @@ Sweep configure(const BenchOptions& in) {
         o.scenes = o.quick ? std::vector<std::string>{"teapot@0.6", "tests/data/bench_easy.gltf"}
                            : std::vector<std::string>{"teapot@0", "teapot@0.6", "teapot@2.25", "teapot@7",
                                                       "tests/data/bench_easy.gltf", "tests/data/bench_medium.gltf",
-                                                      "tests/data/bench_hard.gltf", "tests/data/bench_curved.gltf"};
+                                                      "tests/data/bench_hard.gltf", "tests/data/bench_curved.gltf",
+                                                      "tests/data/alpha_cutouts.gltf"};
     }
     for (const auto& s : o.scenes) w.scenes.push_back(parse_scene_spec(s));
     // The lists default to every choice of the option table and are checked by it.

@@ -90,7 +90,7 @@ Pass overlay(const PlanContext& c, const char* name) {
 
 // The light's frustum for this frame, fitted as the shadow map's (--light-fit).
 shadow::TightFit fit_to_view(const PlanContext& c) {
-    const ShadowBounds b = shadow_bounds(c.scene);
+    const ShadowBounds b = shadow_bounds(c.scene, c.settings.blend_shadows);
     return c.settings.light_fit == LightFit::Tight
                ? shadow::fit_light_frustum_tight(c.light, b.receivers, b.casters, c.plan.camera.view_proj)
                : shadow::fit_light_frustum_scene(c.light, b.receivers, b.casters, c.plan.camera.view_proj);
@@ -196,7 +196,7 @@ public:
         p.bindings.push_back({"black", {{"u_value", glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)}}, {}});
         for (int i : casters) {
             p.draws.push_back(c.mesh_draw(i));
-            p.draws.back().variant = flat_variant();
+            p.draws.back().variant = flat_variant(c.caster_alpha(p.draws.back()));
             p.draws.back().bindings = 1u;
         }
         p.detail = std::to_string(size) + "x" + std::to_string(size) + " rgba8 linear, " +
@@ -278,7 +278,6 @@ public:
 
         f.light_term = LightTerm::Direct;
         const Variant direct = lit_variant(f);
-        const Variant flat = depth_variant(shadow::Encoding::DepthTex, c.depth_path);
         const std::vector<int> above = casters_above(c);
         for (int i = 0; i < k; ++i) {
             const int before = kGroundVisible + i, after = before + 1;
@@ -291,7 +290,8 @@ public:
                                                                                    offsets[static_cast<size_t>(i)]);
             for (int o : above) {
                 project.draws.push_back(c.mesh_draw(o));
-                project.draws.back().variant = flat;
+                project.draws.back().variant =
+                    depth_variant(shadow::Encoding::DepthTex, c.depth_path, c.caster_alpha(project.draws.back()));
             }
             project.detail = "plane " + std::to_string(i + 1) + " of " + std::to_string(k) + " at offset " +
                              number(static_cast<double>(offsets[static_cast<size_t>(i)])) + ": " +

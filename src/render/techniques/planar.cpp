@@ -72,11 +72,12 @@ public:
         project.state.stencil = gl::stencil_test(gl::Compare::Equal, kGroundVisible, gl::StencilOp::Incr);
         project.object_uniforms = ObjectUniforms::Mvp;
         project.view_proj = c.plan.camera.view_proj * shadow::planar_projection(*c.scene.ground_plane, c.light_vector());
-        const Variant flat = depth_variant(shadow::Encoding::DepthTex, c.depth_path);
         for (int i : c.casters) {
             if (i == ground) continue;
             project.draws.push_back(c.mesh_draw(i));
-            project.draws.back().variant = flat;
+            // A cut-out's uvs survive the flattening: its gaps leave the stencil alone.
+            const AlphaTest alpha = c.caster_alpha(project.draws.back());
+            project.draws.back().variant = depth_variant(shadow::Encoding::DepthTex, c.depth_path, alpha);
         }
         project.detail = std::to_string(project.draws.size()) + " caster(s) flattened onto the ground, stencil " +
                          std::to_string(kGroundVisible) + " -> " + std::to_string(kInShadow) + ", colour and depth off";

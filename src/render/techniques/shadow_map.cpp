@@ -68,7 +68,7 @@ std::string caster_count(size_t drawn, size_t all) {
 // The light's frustum for this frame's camera (--light-fit): receivers and casters by their world
 // bounds; TightFit::casters indexes PlanContext::casters (both in scene order).
 shadow::TightFit fit_to_view(const PlanContext& c) {
-    const ShadowBounds b = shadow_bounds(c.scene);
+    const ShadowBounds b = shadow_bounds(c.scene, c.settings.blend_shadows);
     return c.settings.light_fit == LightFit::Tight
                ? shadow::fit_light_frustum_tight(c.light, b.receivers, b.casters, c.plan.camera.view_proj)
                : shadow::fit_light_frustum_scene(c.light, b.receivers, b.casters, c.plan.camera.view_proj);
@@ -143,10 +143,13 @@ public:
         p.state.color_write = !depthtex;
         p.object_uniforms = ObjectUniforms::Mvp;
         p.view_proj = f.view_proj();
-        const Variant v = depth_variant(s.encoding, c.depth_path);
+        int cut_outs = 0;
         for (int i : casters) {
             p.draws.push_back(c.mesh_draw(i));
-            p.draws.back().variant = v;
+            // A cut-out (MASK) leaves depth only where its alpha is kept: a leaf-shaped shadow.
+            const AlphaTest alpha = c.caster_alpha(p.draws.back());
+            cut_outs += alpha.on;
+            p.draws.back().variant = depth_variant(s.encoding, c.depth_path, alpha);
             p.draws.back().cull = map_cull(s.map_faces, c.scene, p.draws.back());
         }
         // Grouped by culling (stable: scene order within a group), so the pass changes it at most
@@ -159,7 +162,8 @@ public:
         p.detail = std::to_string(size) + "x" + std::to_string(size) + " " + std::string(shadow::to_string(s.encoding)) +
                    ", " + (f.perspective ? "perspective" : "orthographic") + " light, " +
                    caster_count(casters.size(), c.casters.size()) + ", faces " + faces_summary(p) + ", texel use " +
-                   percent(fit.texel_use) + (fit.tight ? "" : ", fitted around the whole scene");
+                   percent(fit.texel_use) + (fit.tight ? "" : ", fitted around the whole scene") +
+                   (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
         c.add_pass(std::move(p));
     }
 

@@ -62,10 +62,11 @@ struct PlanContext {
     FramePlan& plan;
 
     scene::Light light;           // the scene's, or the inputs'
-    std::vector<int> drawable;    // objects with a mesh, in scene order
-    std::vector<int> casters;     // ... that cast shadows
+    std::vector<int> drawable;    // objects with a mesh, in scene order, but glTF BLEND ones
+    std::vector<int> casters;     // objects that cast shadows (render::casts: BLEND under --blend-shadows only)
     DepthPath depth_path;         // how depth is packed on this context
     TargetRef camera_target;      // where the camera pass draws
+    std::vector<int> translucent; // objects with a mesh and a BLEND material: the blend pass's, after all else
 
     // Declares a resource (once per name) and returns its index. With a non-empty `content` key
     // equal to the previous plan's for the same description, it is marked reused.
@@ -74,6 +75,10 @@ struct PlanContext {
     Pass& add_pass(Pass pass);
     // A draw of `object`'s mesh where it stands (no material: for depth-only and stencil passes).
     Draw mesh_draw(int object) const;
+    // The same draw of a caster, alpha-tested where its material is MASK (or BLEND casting under
+    // --blend-shadows): the material and base texture set, Draw::alpha on. What the pass's
+    // variant needs (depth_variant, flat_variant) is returned.
+    AlphaTest caster_alpha(Draw& d) const;
     // A Lit draw of `object`: its mesh and material (after the inputs' overrides), world matrix
     // and base-colour texture (a scene image, or the resource an ImageOverride names).
     Draw object_draw(int object);

@@ -66,6 +66,17 @@ public:
     bool needs_stencil(const PlanContext&) const override { return true; }
 
     void before_camera(PlanContext& c) const override {
+        // Silhouettes come from the triangles, not from the texture: a cut-out casts its whole quad.
+        std::string cut;
+        int n = 0;
+        for (int i : c.casters)
+            if (material_of(c.scene, c.scene.objects[static_cast<size_t>(i)].material).alpha_mode !=
+                scene::AlphaMode::Opaque)
+                cut += (n++ ? ", " : "") + c.scene.objects[static_cast<size_t>(i)].name;
+        if (n)
+            c.plan.notes.push_back("--technique volumes: " + std::to_string(n) + " alpha-tested caster(s) (" + cut +
+                                   ") cast the shadow of their whole geometry: volumes are extruded from triangles, "
+                                   "the alpha cutoff cannot cut them (use shadowmap, planar or gooch for cut-outs)");
         CameraView& cam = c.plan.camera;
         if (shadow::infinite_far(cam.proj)) cam.view_proj = cam.proj * cam.view;
     }
@@ -84,7 +95,7 @@ public:
         const Settings& s = c.settings;
         const glm::vec4 light = c.light_vector();
         const auto near = shadow::near_rectangle(c.plan.camera.view_proj);
-        const ShadowBounds bounds = shadow_bounds(c.scene);
+        const ShadowBounds bounds = shadow_bounds(c.scene, c.settings.blend_shadows);
         VolumeStats stats;
         Pass zpass = volume_pass(c, "volumes-zpass");
         zpass.state.stencil = gl::stencil_count(false);
