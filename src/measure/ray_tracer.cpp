@@ -41,13 +41,36 @@ namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-// Per-geometry data the camera rays' filter reads: one world-space face normal per triangle.
+// Per-geometry data the rays' filters read: one world-space face normal per triangle, and for an
+// alpha-tested material (glTF MASK, or BLEND casting under blend_shadows) what its alpha needs.
 struct GeometryData {
     std::vector<glm::vec3> face_normals;  // cross(v1 - v0, v2 - v0), normalised; zero if degenerate
+    bool double_sided = false;            // both faces seen (glTF doubleSided)
+    bool alpha_test = false;
+    float alpha_cutoff = 0.5f;
+    float base_alpha = 1.0f;              // the base colour's alpha
+    const scene::Image* image = nullptr;  // the base texture (its alpha), or none
+    bool repeat = false;                  // how GL wraps it (scene::repeats)
+    std::vector<glm::vec2> uvs;           // per vertex, with the image
+    std::vector<std::uint32_t> indices;   // three per triangle, with the image
+
+    // Whether the hit at barycentrics (u, v) of triangle `prim` is cut away: alpha below the
+    // cutoff, the texture read bilinearly at its base level (scene::sample_alpha).
+    bool cut_away(unsigned prim, float u, float v) const {
+        if (!alpha_test) return false;
+        float alpha = base_alpha;
+        if (image) {
+            const glm::vec2 uv = (1.0f - u - v) * uvs[indices[3 * prim]] + u * uvs[indices[3 * prim + 1]] +
+                                 v * uvs[indices[3 * prim + 2]];
+            alpha *= scene::sample_alpha(*image, uv, repeat);
+        }
+        return alpha < alpha_cutoff;
+    }
 };
 
-// The renderer's camera pass culls back faces: skip them, so the ray finds what the rasteriser shows.
-void cull_back_faces(const RTCFilterFunctionNArguments* args) {
+// The renderer's camera pass culls back faces (but of double-sided materials): skip them, so the
+// ray finds what the rasteriser shows; and a cut-out's gaps let the ray through.
+void camera_filter(const RTCFilterFunctionNArguments* args) {
     const auto* data = static_cast<const GeometryData*>(args->geometryUserPtr);
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] == 0) continue;
@@ -55,7 +78,20 @@ void cull_back_faces(const RTCFilterFunctionNArguments* args) {
         const glm::vec3 d(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
                           RTCRayN_dir_z(args->ray, args->N, i));
         const glm::vec3& n = data->face_normals[prim];
-        if (!(glm::dot(n, d) < 0.0f)) args->valid[i] = 0;
+        if (!data->double_sided && !(glm::dot(n, d) < 0.0f)) args->valid[i] = 0;
+        else if (data->cut_away(prim, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i)))
+            args->valid[i] = 0;
+    }
+}
+
+// Shadow rays: a cut-out blocks the light only where it is kept.
+void shadow_filter(const RTCFilterFunctionNArguments* args) {
+    const auto* data = static_cast<const GeometryData*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        if (data->cut_away(RTCHitN_primID(args->hit, args->N, i), RTCHitN_u(args->hit, args->N, i),
+                           RTCHitN_v(args->hit, args->N, i)))
+            args->valid[i] = 0;
     }
 }
 
@@ -120,7 +156,7 @@ struct RayTracer::Impl {
         return g;
     }
 
-    void build(const scene::Scene& s) {
+    void build(const scene::Scene& s, bool blend_shadows) {
         device = rtcNewDevice(nullptr);
         if (!device) throw std::runtime_error("embree: rtcNewDevice failed");
         visible = rtcNewScene(device);
@@ -142,6 +178,24 @@ struct RayTracer::Impl {
             std::vector<glm::vec3> world(m.positions.size());
             for (size_t k = 0; k < world.size(); ++k) world[k] = glm::vec3(o.world * glm::vec4(m.positions[k], 1.0f));
             auto d = std::make_unique<GeometryData>();
+            const scene::Material* mat = o.material >= 0 && o.material < static_cast<int>(s.materials.size())
+                                             ? &s.materials[static_cast<size_t>(o.material)]
+                                             : nullptr;
+            const scene::AlphaMode mode = mat ? mat->alpha_mode : scene::AlphaMode::Opaque;
+            if (mat) {
+                d->double_sided = mat->double_sided;
+                // BLEND is tested at its cutoff where it casts (blend_shadows), as the GL passes do.
+                d->alpha_test = mode != scene::AlphaMode::Opaque;
+                d->alpha_cutoff = mat->alpha_cutoff;
+                d->base_alpha = mat->base_color.a;
+                const int img = mat->base_color_texture;
+                if (img >= 0 && img < static_cast<int>(s.images.size()) && m.uvs.size() == m.positions.size()) {
+                    d->image = &s.images[static_cast<size_t>(img)];
+                    d->repeat = scene::repeats(*d->image);
+                    d->uvs = m.uvs;
+                    d->indices = m.indices;
+                }
+            }
             d->face_normals.resize(m.indices.size() / 3);
             for (size_t t = 0; t < d->face_normals.size(); ++t) {
                 const glm::vec3 a = world[m.indices[3 * t]], b = world[m.indices[3 * t + 1]], c = world[m.indices[3 * t + 2]];
@@ -150,14 +204,22 @@ struct RayTracer::Impl {
                 d->face_normals[t] = len > 0.0f && std::isfinite(len) ? n / len : glm::vec3(0.0f);
             }
             const unsigned id = static_cast<unsigned>(i);
-            RTCGeometry g = make_geometry(world, m.indices);
-            rtcSetGeometryUserData(g, d.get());
-            rtcSetGeometryIntersectFilterFunction(g, cull_back_faces);
-            rtcCommitGeometry(g);
-            rtcAttachGeometryByID(visible, g, id);
-            rtcReleaseGeometry(g);
-            if (o.casts_shadow) {
+            // BLEND objects are not seen by camera rays (the visibility AOV leaves them out: it shows
+            // the opaque surfaces) and cast only with blend_shadows.
+            if (mode != scene::AlphaMode::Blend) {
+                RTCGeometry g = make_geometry(world, m.indices);
+                rtcSetGeometryUserData(g, d.get());
+                rtcSetGeometryIntersectFilterFunction(g, camera_filter);
+                rtcCommitGeometry(g);
+                rtcAttachGeometryByID(visible, g, id);
+                rtcReleaseGeometry(g);
+            }
+            if (o.casts_shadow && (mode != scene::AlphaMode::Blend || blend_shadows)) {
                 RTCGeometry c = make_geometry(world, m.indices);
+                if (d->alpha_test) {
+                    rtcSetGeometryUserData(c, d.get());
+                    rtcSetGeometryOccludedFilterFunction(c, shadow_filter);
+                }
                 rtcCommitGeometry(c);
                 rtcAttachGeometryByID(occluders, c, id);
                 rtcReleaseGeometry(c);
@@ -243,7 +305,9 @@ struct RayTracer::Impl {
     }
 };
 
-RayTracer::RayTracer(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) { impl_->build(scene); }
+RayTracer::RayTracer(const scene::Scene& scene, bool blend_shadows) : impl_(std::make_unique<Impl>()) {
+    impl_->build(scene, blend_shadows);
+}
 RayTracer::~RayTracer() = default;
 
 float RayTracer::epsilon() const { return impl_->epsilon; }

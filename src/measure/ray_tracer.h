@@ -86,7 +86,12 @@ class RayTracer {
 public:
     // Builds the acceleration structures from the scene's world-space triangles (objects' meshes
     // under their world matrices) and keeps a copy of its light.
-    explicit RayTracer(const scene::Scene& scene);
+    // Alpha (scene::AlphaMode): a MASK material's texels with alpha below its cutoff (the base
+    // texture's alpha, bilinear at the base level, scene::sample_alpha, times the base colour's)
+    // stop neither camera nor shadow rays; a double-sided one is hit from behind too. BLEND objects
+    // are not seen by camera rays and block shadow rays only with blend_shadows (cut out at their
+    // cutoff), as the renderer's --blend-shadows.
+    explicit RayTracer(const scene::Scene& scene, bool blend_shadows = false);
     ~RayTracer();
     RayTracer(const RayTracer&) = delete;
     RayTracer& operator=(const RayTracer&) = delete;
