@@ -113,6 +113,7 @@ if [ "$have_truth" -eq 1 ]; then
   expect 2 "truth light radius"  "--light-radius: must be a finite number in [0, 1000000], got 'inf'" \
     truth --light-radius inf --out-dir newdir
   expect 2 "truth soft samples"  "--soft-samples: must lie in [0, 16384], got '100000'" truth --soft-samples 100000 --out-dir newdir
+  expect 2 "truth blend-shadows" "--blend-shadows: unknown value 'maybe' (off, on)" truth --blend-shadows maybe --out-dir newdir
   expect 2 "truth negative soft" "--soft-samples: must lie in [0, 16384], got '-1'" truth --soft-samples -1 --out-dir newdir
   expect 2 "truth out-dir /proc" "--out-dir /proc/penumbra-cli-test: cannot create" \
     truth --size 16x16 --out-dir /proc/penumbra-cli-test

@@ -34,6 +34,7 @@ struct TruthCommandOptions {
     double time = 0.0;
     std::string size = "512x512";
     std::string eye = "scene";
+    std::string blend_shadows = "off";  // on: BLEND objects block light (cut at their cutoff), as render's
     std::string out_dir = "out/truth";
     int soft_samples = 0;
     float light_radius = -1.0f;  // < 0: the bench's default for the scene

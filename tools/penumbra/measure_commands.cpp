@@ -68,6 +68,9 @@ std::shared_ptr<MeasureCommands> add_measure_commands(CLI::App& app) {
     m->truth_cmd->add_option("--scene", t.scene, "teapot or FILE.gltf / FILE.glb");
     m->truth_cmd->add_option("--time", t.time, "seconds " + bounds(render::option_info("time")) + " (default 0)");
     m->truth_cmd->add_option("--eye", t.eye, "scene or in-shadow, as the renderer's --eye (default scene)");
+    m->truth_cmd->add_option("--blend-shadows", t.blend_shadows,
+                             "on: glTF BLEND objects block light, cut at their alphaCutoff, as the renderer's "
+                             "--blend-shadows on [off, on] (default off)");
     m->truth_cmd->add_option("--size", t.size, "WxH, as the renderer's --size " + bounds(render::option_info("size")) +
                                                    " (default 512x512)");
     m->truth_cmd->add_option("--out-dir", t.out_dir, "folder for the PNGs (default out/truth)");

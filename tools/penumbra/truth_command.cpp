@@ -144,6 +144,8 @@ void run_truth(const TruthCommandOptions& o) {
                                ", got '" + render::format_number(o.light_radius) + "'", 2};
     if (o.eye != "scene" && o.eye != "in-shadow")
         throw CommandError{"--eye: unknown value '" + scene::printable(o.eye) + "' (scene, in-shadow)", 2};
+    if (o.blend_shadows != "off" && o.blend_shadows != "on")
+        throw CommandError{"--blend-shadows: unknown value '" + scene::printable(o.blend_shadows) + "' (off, on)", 2};
     std::optional<Pixels> scored;
     if (!o.score.empty()) {
         Pixels px;
@@ -165,7 +167,7 @@ void run_truth(const TruthCommandOptions& o) {
     // --light-radius, else the scene's light's own (glTF extras), else the bench's default.
     to.light_radius = o.light_radius >= 0.0f ? o.light_radius : s.light.radius > 0.0f ? s.light.radius : default_light_radius(s);
     const auto t0 = Clock::now();
-    const measure::TruthImage t = measure::RayTracer(s).render(to);
+    const measure::TruthImage t = measure::RayTracer(s, o.blend_shadows == "on").render(to);
     const double secs = seconds_since(t0);
 
     const fs::path dir(o.out_dir);
