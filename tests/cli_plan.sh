@@ -88,6 +88,30 @@ p = json.load(open(sys.argv[1]))
 m = next(r for r in p["resources"] if r["name"] == "shadow-map")
 assert m["reused"] and p["passes"][0]["skipped"], "the still second frame redraws its map"' still.json \
   && echo "ok still: the map is reused" || { echo "FAIL still: the map of a still second frame is not reused"; fail=1; }
+# --effects outline: its passes after the technique's, and the stencil uses with disjoint bits.
+check outline-planar --technique planar --effects outline --size 64x64
+check outline-volumes --technique volumes --effects outline --outline-width 5 --outline-color 00ff00 --size 64x64
+check outline-shadowmap --effects outline --size 64x64 --map-size 256
+python3 -c '
+import json
+for name, counter in (("outline-planar", "planar: shadowed ground"), ("outline-volumes", "volumes: shadow count")):
+    p = json.load(open(name + ".json"))
+    assert [q["name"] for q in p["passes"]][-2:] == ["outline-mark", "outline-draw"], p["passes"]
+    uses = {u["name"]: u for u in p["stencil"]}
+    assert set(uses) == {counter, "outline: the model'"'"'s pixels"}, uses
+    o, c = uses["outline: the model'"'"'s pixels"], uses[counter]
+    assert o["read_mask"] == 128 and o["ref_of_1"] == 128 and c["write_mask"] == 127 and c["shift"] == 0, uses
+    for q in p["passes"]:
+        st = q["state"]["stencil"]
+        if st["enabled"]:
+            own = o if q["module"] == "outline" else c
+            assert st["write_mask"] & ~own["write_mask"] == 0 and st["read_mask"] & ~own["read_mask"] == 0, q["name"]
+s = json.load(open("outline-shadowmap.json"))
+assert [u["name"] for u in s["stencil"]] == ["outline: the model'"'"'s pixels"], s["stencil"]
+assert json.load(open("shadowmap.json"))["stencil"] == [], "a shadow map alone uses no stencil"' \
+  && echo "ok outline: the stencil uses" || { echo "FAIL outline: the stencil uses"; fail=1; }
+"$penumbra" plan --technique planar --effects outline --size 64x64 | grep -q "outline: the model's pixels (outline): bit 7 (mask 80)" \
+  || { echo "FAIL outline: the text plan lists no stencil use"; fail=1; }
 # The text form names every pass too, and bad input is refused as render refuses it.
 "$penumbra" plan --technique planar --size 64x64 | grep -q "planar-stencil (planar)" || { echo "FAIL text"; fail=1; }
 if "$penumbra" plan --technique volume 2>/dev/null; then echo "FAIL: a bad technique was planned"; fail=1; fi

@@ -38,6 +38,11 @@ struct Caps {
     // middle of the byte when it is set (PACK_FLOOR).
     bool unorm_floor = false;
 
+    // The stencil bits a frame's uses share (render::StencilUse): the packed depth-stencil
+    // renderbuffer's 8 (DEPTH24_STENCIL8, WebGL's DEPTH_STENCIL), which the desktop's window asks
+    // for too (GLFW_STENCIL_BITS 8). Tests set fewer to see a plan refused.
+    int stencil_bits = 8;
+
     int max_texture_size = 0;
     int max_renderbuffer_size = 0;
     int max_viewport_width = 0;

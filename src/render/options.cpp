@@ -1,5 +1,7 @@
 #include "render/options.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -41,6 +43,13 @@ std::string_view to_string(VolumeMethod m) {
 
 std::string_view to_string(GoochMethod m) { return m == GoochMethod::Planes ? "planes" : "texture"; }
 
+std::string_view to_string(Effect e) {
+    switch (e) {
+        case Effect::Outline: return "outline";
+    }
+    return "?";
+}
+
 std::string_view to_string(Aov a) {
     switch (a) {
         case Aov::Color: return "color";
@@ -58,7 +67,8 @@ bool Settings::operator==(const Settings& o) const {
            show_volumes == o.show_volumes && aov == o.aov && light_radius == o.light_radius &&
            pcss_search == o.pcss_search && pcss_taps == o.pcss_taps && area_samples == o.area_samples &&
            area_per_frame == o.area_per_frame && gooch_planes == o.gooch_planes && gooch_method == o.gooch_method &&
-           blend_shadows == o.blend_shadows;
+           blend_shadows == o.blend_shadows &&
+           effects == o.effects && outline_color == o.outline_color && outline_width == o.outline_width;
 }
 
 bool Job::operator==(const Job& o) const {
@@ -144,7 +154,11 @@ std::string range_words(const OptionInfo& o) {
 
 std::string accepted_values(const OptionInfo& o) {
     switch (o.type) {
-        case OptionType::Choice: return word_list(o.choices);
+        case OptionType::Choice:
+            if (o.list && !o.choices.empty())
+                return "a comma list of " + word_list({o.choices.begin() + 1, o.choices.end()}) + ", or " +
+                       std::string(o.choices.front().value);
+            return word_list(o.choices);
         case OptionType::Integer: return "a whole number" + range_words(o);
         case OptionType::Number: return "a number" + range_words(o);
         case OptionType::Size: return "WIDTHxHEIGHT" + (std::isfinite(o.max) ? ", each <= " + number_text(o.max) : std::string());
@@ -164,6 +178,26 @@ std::string check_value(const OptionInfo& o, std::string_view value) {
     };
     switch (o.type) {
         case OptionType::Choice:
+            if (o.list && !o.choices.empty() && value != o.choices.front().value) {
+                // A comma list: each item one of the choices after the first, and each once.
+                std::vector<std::string_view> seen;
+                size_t start = 0;
+                while (start <= value.size()) {
+                    size_t end = value.find(',', start);
+                    if (end == std::string_view::npos) end = value.size();
+                    const std::string_view item = value.substr(start, end - start);
+                    bool known = false;
+                    for (size_t i = 1; i < o.choices.size(); ++i) known = known || o.choices[i].value == item;
+                    if (!known)
+                        return opt + "unknown value '" + scene::printable(item) + "' in " + quoted + " (" +
+                               accepted_values(o) + ")";
+                    for (std::string_view s : seen)
+                        if (s == item) return opt + "'" + scene::printable(item) + "' twice in " + quoted;
+                    seen.push_back(item);
+                    start = end + 1;
+                }
+                return {};
+            }
             if (!among()) return opt + "unknown value " + quoted + " (" + word_list(o.choices) + ")";
             return {};
         case OptionType::Integer: {
@@ -198,6 +232,8 @@ std::string check_value(const OptionInfo& o, std::string_view value) {
         }
         case OptionType::Text:
             if (value.empty() && !o.may_be_empty) return opt + "needs a value: " + std::string(o.help);
+            if (o.form)
+                if (std::string why = o.form(value); !why.empty()) return opt + why + ", got " + quoted;
             return {};
     }
     return {};
@@ -441,6 +477,60 @@ std::vector<Option<Options>> make_table() {
                          {{"off", "off: translucent objects cast no shadow"}, {"on", "on: cut out at their alpha cutoff"}});
     add(blend_shadows, [](Options& o, std::string_view v) { o.settings.blend_shadows = v == "on"; },
         [](const Options& o) { return std::string(o.settings.blend_shadows ? "on" : "off"); });
+
+    OptionInfo effects = make_option_info("effects", P::Technique, T::Choice,
+                         "effects drawn after the camera pass with any technique, a comma list: outline = the shadow "
+                         "casters but the ground outlined in --outline-color, --outline-width pixels wide (through the "
+                         "stencil); none = no effects", "Effects",
+                         {{"none", "none"}, {"outline", "outline the teapot"}});
+    effects.list = true;
+    add(effects,
+        [](Options& o, std::string_view v) {
+            o.settings.effects.clear();
+            for (Effect e : kAllEffects)  // kAllEffects' order, whatever the list's
+                for (size_t start = 0; start <= v.size();) {
+                    size_t end = v.find(',', start);
+                    if (end == std::string_view::npos) end = v.size();
+                    if (v.substr(start, end - start) == to_string(e)) o.settings.effects.push_back(e);
+                    start = end + 1;
+                }
+        },
+        [](const Options& o) {
+            std::string s;
+            for (Effect e : o.settings.effects) s += (s.empty() ? "" : ",") + std::string(to_string(e));
+            return s.empty() ? std::string("none") : s;
+        });
+
+    OptionInfo outline_color = make_option_info("outline-color", P::Technique, T::Text,
+                         "--effects outline: the outline's colour as six hex digits RRGGBB (sRGB bytes, no '#': "
+                         "ff8c00 is orange)", "Outline colour");
+    outline_color.form = [](std::string_view v) -> std::string {
+        if (v.size() != 6) return "expected six hex digits RRGGBB (e.g. ff8c00)";
+        for (char ch : v)
+            if (!std::isxdigit(static_cast<unsigned char>(ch))) return "expected six hex digits RRGGBB (e.g. ff8c00)";
+        return {};
+    };
+    add(outline_color,
+        [](Options& o, std::string_view v) {
+            for (int i = 0; i < 3; ++i)
+                o.settings.outline_color[i] =
+                    static_cast<float>(std::stoi(std::string(v.substr(static_cast<size_t>(2 * i), 2)), nullptr, 16)) / 255.0f;
+        },
+        [](const Options& o) {
+            char buf[8];
+            const glm::vec3& c = o.settings.outline_color;
+            const auto byte = [](float x) { return static_cast<int>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f)); };
+            std::snprintf(buf, sizeof buf, "%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+            return std::string(buf);
+        });
+
+    OptionInfo outline_width = make_option_info("outline-width", P::Technique, T::Number,
+                         "--effects outline: the outline's width in pixels, the same at any depth", "Outline width (px)");
+    outline_width.min = kMinOutlineWidth;
+    outline_width.max = kMaxOutlineWidth;
+    outline_width.step = 0.5;
+    add(outline_width, [](Options& o, std::string_view v) { o.settings.outline_width = static_cast<float>(number_of(v)); },
+        [](const Options& o) { return shortest_float(o.settings.outline_width); });
 
     OptionInfo aov = make_option_info("aov", P::Technique, T::Choice, "what the image shows", "Show",
                    {{"color", "colour"}, {"visibility", "visibility (white lit, black shadowed)"},

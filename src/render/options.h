@@ -47,7 +47,7 @@ struct Options {
 
 enum class OptionPart { Technique, Job };
 enum class OptionType {
-    Choice,        // one of `choices`
+    Choice,        // one of `choices` (with `list`: a comma list of them, each once, or the first alone)
     Integer,       // a whole number in [min, max]
     Number,        // a finite number in [min, max]
     Size,          // WIDTHxHEIGHT, each a whole number in [1, max]
@@ -73,6 +73,11 @@ struct OptionInfo {
     std::vector<Choice> presets;            // Integer: the values a page's select offers
     double step = 0.0;                      // Number(OrWord): a page's number box step (0: any)
     bool may_be_empty = false;              // Text: "" is a value (--out: write nothing)
+    // Choice: a comma list of distinct choices in any order ("outline,mirror"); the first choice
+    // ("none") stands alone. --effects.
+    bool list = false;
+    // Text: the form the value must have, "" or what is wrong with it (nullptr: any text).
+    std::string (*form)(std::string_view value) = nullptr;
 };
 
 // An OptionInfo with the fields every option has; range, presets and step are set after.

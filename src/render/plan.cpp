@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -212,6 +213,74 @@ bool FramePlan::drawn(std::string_view name) const {
                                  [&](const Pass& p) { return p.target.resource == r && !p.skipped; });
 }
 
+// ---- the stencil -------------------------------------------------------------------------------
+
+std::uint32_t StencilUse::mask() const {
+    if (width <= 0) return 0u;
+    return ((width >= 32 ? ~0u : (1u << width) - 1u) << shift) & 0xFFu;
+}
+
+int StencilUse::ref(int value) const { return value << shift; }
+
+std::uint32_t StencilUse::top_bit() const { return width > 0 ? 1u << (shift + width - 1) : 0u; }
+
+gl::StencilState StencilUse::test(gl::Compare func, int value, gl::StencilOp pass) const {
+    gl::StencilState s = gl::stencil_test(func, ref(value), pass);
+    s.read_mask = s.write_mask = mask();
+    return s;
+}
+
+gl::StencilState StencilUse::count(bool on_depth_fail) const {
+    gl::StencilState s = gl::stencil_count(on_depth_fail);
+    s.read_mask = s.write_mask = mask();
+    return s;
+}
+
+std::string StencilUse::describe() const {
+    char buf[64];
+    if (width <= 1) std::snprintf(buf, sizeof buf, "bit %d (mask %02x)", shift, mask());
+    else std::snprintf(buf, sizeof buf, "bits %d-%d (mask %02x)", shift, shift + width - 1, mask());
+    return buf;
+}
+
+const StencilUse* FramePlan::stencil_use(std::string_view name) const {
+    for (const StencilUse& u : stencil)
+        if (u.name == name) return &u;
+    return nullptr;
+}
+
+std::string allocate_stencil(std::vector<StencilUse>& uses, int available) {
+    StencilUse* counter = nullptr;
+    int needed = 0;
+    std::string names;
+    for (StencilUse& u : uses) {
+        if (u.counts) {
+            if (counter)
+                return "stencil: '" + counter->name + "' and '" + u.name +
+                       "' both count (incr/decr act on the stencil's lowest bits): one frame holds one";
+            counter = &u;
+        }
+        needed += u.bits;
+        names += (names.empty() ? "'" : " and '") + u.name + "' (" + std::to_string(u.bits) +
+                 (u.bits == 1 ? " bit)" : " bits)");
+    }
+    if (needed > available)
+        return "stencil: " + names + " need " + std::to_string(needed) + " bits, the target has " +
+               std::to_string(available);
+    int top = available;
+    for (StencilUse& u : uses)
+        if (!u.counts) {
+            top -= u.bits;
+            u.shift = top;
+            u.width = u.bits;
+        }
+    if (counter) {
+        counter->shift = 0;
+        counter->width = top;
+    }
+    return {};
+}
+
 // ---- the context the modules plan in -----------------------------------------------------------
 
 int PlanContext::add_resource(ResourceDesc desc, std::string content, std::string purpose) {
@@ -313,6 +382,11 @@ std::vector<Binding> PlanContext::lit_bindings() const {
     return out;
 }
 
+const StencilUse& PlanContext::stencil(std::string_view name) const {
+    if (const StencilUse* u = plan.stencil_use(name)) return *u;
+    throw std::logic_error("no stencil use '" + std::string(name) + "' declared in this frame");
+}
+
 // ---- checking and planning ---------------------------------------------------------------------
 
 scene::Bounds shadowed_bounds(const scene::Scene& scene) {
@@ -344,6 +418,7 @@ struct Planning {
     FramePlan plan;
     PlanContext ctx;
     const Module& module;
+    std::vector<const Module*> effects;  // drawn on the colour image only
 
     Planning(const scene::Scene& scene, const Settings& s, const gl::Caps& caps, const FrameInputs& in,
              const FramePlan* previous)
@@ -361,6 +436,33 @@ struct Planning {
         ctx.depth_path = {s.precision == shadow::Precision::Mediump, caps.unorm_floor};
         if (s.light_radius) ctx.light.radius = *s.light_radius;
         plan.camera = camera_view(scene, in);
+        for (Effect e : s.effects) {
+            if (s.aov != Aov::Color) {
+                plan.notes.push_back("--effects " + std::string(to_string(e)) + ": drawn on --aov color only, not on " +
+                                     std::string(to_string(s.aov)));
+                continue;
+            }
+            effects.push_back(&effect_module(e));
+        }
+    }
+
+    // The stencil uses of the technique and the effects, each with its module's name.
+    static std::vector<StencilUse> uses_of(const Module& m, const PlanContext& c) {
+        std::vector<StencilUse> uses = m.stencil_uses(c);
+        for (StencilUse& u : uses)
+            if (u.module.empty()) u.module = std::string(m.name());
+        return uses;
+    }
+
+    // Declares every use of the frame in the plan and gives each its bits: "" or why they do not fit.
+    std::string allocate() {
+        plan.stencil = uses_of(module, ctx);
+        for (const Module* e : effects) {
+            std::vector<StencilUse> more = uses_of(*e, ctx);
+            plan.stencil.insert(plan.stencil.end(), more.begin(), more.end());
+        }
+        plan.stencil_bits = ctx.caps.stencil_bits;
+        return allocate_stencil(plan.stencil, plan.stencil_bits);
     }
 };
 
@@ -512,8 +614,9 @@ void area_lookup(PlanContext& c, Pass& cam, std::vector<CameraItem>& items) {
 // technique's visibility AOV from that point of the light into "area-sample" (its own passes:
 // shadow map, stencil, volumes) and one count added where it is lit into "area-light"; then the
 // camera pass shading with the average. A still frame's accumulation is kept; with area_per_frame
-// K a frame adds at most K samples.
-void plan_area(Planning& p, bool stencil) {
+// K a frame adds at most K samples. `stencil`: the technique's passes use it (in "area-sample");
+// `effect_stencil`: the effects do (in the camera's target, cleared by the last camera pass).
+void plan_area(Planning& p, bool stencil, bool effect_stencil) {
     PlanContext& c = p.ctx;
     const Settings& s = c.settings;
     const Output& out = c.inputs.output;
@@ -581,9 +684,10 @@ void plan_area(Planning& p, bool stencil) {
             c.add_pass(std::move(add));
         }
     }
-    Pass cam = camera_pass(c, technique_module(Technique::None), false, area_lookup);
+    Pass cam = camera_pass(c, technique_module(Technique::None), effect_stencil, area_lookup);
     c.add_pass(std::move(cam));
     blend_pass(c, technique_module(Technique::None));
+    for (const Module* e : p.effects) e->after_camera(c);
     // The samples' resources (the shadow map) hold the last sample's content, not the first's
     // whose key they were declared with: nothing may reuse them.
     for (PlannedResource& r : p.plan.resources)
@@ -606,7 +710,10 @@ std::string check(const scene::Scene& scene, const Settings& s, const gl::Caps& 
     if (s.aov == Aov::StencilCount && s.technique != Technique::Volumes)
         return "--aov stencil-count: needs --technique volumes";
     Planning p(scene, s, caps, in, nullptr);
-    return p.module.check(p.ctx);
+    if (std::string why = p.module.check(p.ctx); !why.empty()) return why;
+    for (const Module* e : p.effects)
+        if (std::string why = e->check(p.ctx); !why.empty()) return why;
+    return p.allocate();
 }
 
 FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& caps, const FrameInputs& in,
@@ -614,7 +721,12 @@ FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& cap
     Planning p(scene, s, caps, in, previous);
     PlanContext& c = p.ctx;
     const Output& out = in.output;
-    const bool stencil = p.module.needs_stencil(c);
+    if (const std::string problem = p.allocate(); !problem.empty())
+        p.plan.notes.push_back(problem + " (check() refuses this frame)");
+    const size_t technique_uses = p.module.stencil_uses(c).size();
+    const bool technique_stencil = technique_uses > 0;
+    const bool effect_stencil = p.plan.stencil.size() > technique_uses;
+    const bool stencil = !p.plan.stencil.empty();
     c.camera_target = {-1, out.width, out.height, out.x, out.y, out.clip};
     if (!out.window)
         c.camera_target = {c.add_resource(texture_desc(out, caps, stencil), "", "the camera's image"), out.width,
@@ -622,7 +734,7 @@ FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& cap
 
     std::string why;
     if (area_applies(c, &why)) {
-        plan_area(p, stencil);
+        plan_area(p, technique_stencil, effect_stencil);
         return std::move(p.plan);
     }
     if (!why.empty()) p.plan.notes.push_back(why);
@@ -631,6 +743,7 @@ FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& cap
     if (!own) c.add_pass(camera_pass(c, p.module, stencil));
     p.module.after_camera(c);
     if (!own) blend_pass(c, p.module);
+    for (const Module* e : p.effects) e->after_camera(c);
     return std::move(p.plan);
 }
 

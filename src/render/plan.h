@@ -179,6 +179,40 @@ struct Pass {
     std::vector<int> reads() const;  // the resources its draws sample
 };
 
+// ---- the stencil -------------------------------------------------------------------------------
+
+// One named use of the stencil buffer in a frame: a module declares it (name, the bits it needs,
+// whether it counts) and plan() gives it bits of the target's stencil (allocate_stencil), so that
+// two uses in one frame never touch each other's bits. A pass's stencil state is made through its
+// use: values are shifted into the use's bits and the read and write masks are those bits.
+struct StencilUse {
+    std::string name;    // "planar: shadowed ground", "outline: the model's pixels"
+    std::string module;  // who declared it
+    int bits = 1;        // the bits it needs at least
+    // Its values change by incr/decr (planar, gooch: 1 -> 2; volumes: a wrapping count). Those act
+    // on the whole stencil value, so a counting use must hold the lowest bits (a carry out of them
+    // is masked away); at most one per frame, and it takes every bit the others leave.
+    bool counts = false;
+    // Given by allocate_stencil: bits [shift, shift + width).
+    int shift = 0;
+    int width = 0;
+
+    std::uint32_t mask() const;            // the use's bits: 0x03, 0x80
+    int ref(int value) const;              // `value` shifted into them
+    std::uint32_t top_bit() const;         // the highest of its bits (a count's sign)
+    // The stencil test comparing the use's bits with `value`, `pass` written into its bits only.
+    gl::StencilState test(gl::Compare func, int value, gl::StencilOp pass = gl::StencilOp::Keep) const;
+    // Two-sided wrapping counting in its bits (gl::stencil_count).
+    gl::StencilState count(bool on_depth_fail) const;
+    // "bits 0-6 (mask 7f)"
+    std::string describe() const;
+};
+
+// Gives each use its bits: the counting use (if any) the lowest, and every bit no other use needs;
+// the others, in order, from the top bit down, each exactly its `bits`. "" or one line naming the
+// uses that do not fit in `available` bits (or the two that both count).
+std::string allocate_stencil(std::vector<StencilUse>& uses, int available);
+
 // ---- the plan ----------------------------------------------------------------------------------
 
 struct CameraView {
@@ -232,6 +266,11 @@ struct FramePlan {
     std::optional<float> texel_use;
     std::optional<VolumeStats> volumes;  // with technique volumes
     std::optional<AreaStats> area;       // with --area-samples > 1 and a light with a radius
+    // The frame's stencil uses with their bits (empty: the frame uses no stencil) out of
+    // stencil_bits, the target's.
+    std::vector<StencilUse> stencil;
+    int stencil_bits = 0;
+    const StencilUse* stencil_use(std::string_view name) const;  // null when absent
 
     int resource_index(std::string_view name) const;  // -1 when absent
     const PlannedResource* resource(std::string_view name) const;

@@ -193,6 +193,15 @@ std::string FramePlan::to_text() const {
                       area->total, area->added, area->added == 0 ? " (still: the sum is reused)" : "");
         o << buf;
     }
+    if (!stencil.empty()) {
+        o << "stencil uses (" << stencil_bits << " bits):\n";
+        for (const StencilUse& u : stencil) {
+            std::snprintf(buf, sizeof buf, "  %s (%s): %s, needs %d%s; ref 1 = %d, read %02x, write %02x\n", u.name.c_str(),
+                          u.module.c_str(), u.describe().c_str(), u.bits, u.counts ? ", counts" : "", u.ref(1),
+                          u.mask(), u.mask());
+            o << buf;
+        }
+    }
     std::size_t total = 0;
     o << "resources:\n";
     for (const PlannedResource& r : resources) {
@@ -266,6 +275,16 @@ std::string FramePlan::to_json() const {
              ",\"added\":" + std::to_string(area->added) + ",\"key\":" + json_quote(area->key) + "}";
     else
         j += ",\"area\":null";
+    j += ",\"stencil_bits\":" + std::to_string(stencil_bits) + ",\"stencil\":[";
+    for (size_t i = 0; i < stencil.size(); ++i) {
+        const StencilUse& u = stencil[i];
+        j += std::string(i ? "," : "") + "{\"name\":" + json_quote(u.name) + ",\"module\":" + json_quote(u.module) +
+             ",\"bits\":" + std::to_string(u.bits) + ",\"counts\":" + json_bool(u.counts) +
+             ",\"shift\":" + std::to_string(u.shift) + ",\"width\":" + std::to_string(u.width) +
+             ",\"ref_of_1\":" + std::to_string(u.ref(1)) + ",\"read_mask\":" + std::to_string(u.mask()) +
+             ",\"write_mask\":" + std::to_string(u.mask()) + "}";
+    }
+    j += "]";
     j += ",\"resources\":[";
     std::size_t total = 0;
     for (size_t i = 0; i < resources.size(); ++i) {

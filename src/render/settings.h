@@ -6,6 +6,9 @@
 
 #include <optional>
 #include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
 
 #include "shadow/encoding.h"
 
@@ -47,6 +50,12 @@ inline constexpr LightFit kAllLightFits[] = {LightFit::Tight, LightFit::Scene};
 inline constexpr MapFaces kAllMapFaces[] = {MapFaces::Auto, MapFaces::Front, MapFaces::Back, MapFaces::Both};
 inline constexpr Technique kAllTechniques[] = {Technique::ShadowMap, Technique::Planar, Technique::Volumes,
                                               Technique::Gooch, Technique::None};
+// Effects drawn after the camera pass, beside the shadow technique (render/techniques/outline.cpp;
+// mirror and portal will join): each is a module of the plan that declares its stencil use.
+enum class Effect { Outline };
+inline constexpr Effect kAllEffects[] = {Effect::Outline};
+// --outline-width: pixels on the screen, whatever the object's depth.
+inline constexpr float kMinOutlineWidth = 0.5f, kMaxOutlineWidth = 32.0f;
 inline constexpr Aov kAllAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth, Aov::StencilCount};
 
 std::string_view to_string(Technique t);
@@ -55,6 +64,7 @@ std::string_view to_string(MapFaces f);
 std::string_view to_string(LightFit f);
 std::string_view to_string(VolumeMethod m);
 std::string_view to_string(GoochMethod m);
+std::string_view to_string(Effect e);
 
 // Heckbert-Herf accumulates one count per light sample in a channel of an RGBA8 target: 4 x 255.
 inline constexpr int kMaxAreaSamples = 1020;
@@ -92,6 +102,16 @@ struct Settings {
     GoochMethod gooch_method = GoochMethod::Planes;
     // glTF alphaMode BLEND objects cast shadows (alpha-tested at their cutoff) instead of none.
     bool blend_shadows = false;
+    // --effects: in kAllEffects' order, each once (empty: none).
+    std::vector<Effect> effects;
+    glm::vec3 outline_color{1.0f, 140.0f / 255.0f, 0.0f};  // --outline-color RRGGBB: ff8c00
+    float outline_width = 3.0f;                   // --outline-width: pixels
+
+    bool has(Effect e) const {
+        for (Effect x : effects)
+            if (x == e) return true;
+        return false;
+    }
 
     // The constant bias: with bias_auto the quantum part, else the chosen one or the sheet's.
     float effective_bias() const {

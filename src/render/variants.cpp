@@ -155,6 +155,8 @@ std::vector<std::string> gooch_tap_defines(int taps) {
     return {"GOOCH_TAPS " + std::to_string(taps), sum + ")"};
 }
 
+Variant outline_variant() { return {"outline.vert", "probe.frag", {}}; }
+
 Variant area_add_variant() { return {"light_depth.vert", "area_add.frag", {}}; }
 
 Variant ramp_variant(shadow::Encoding e, const DepthPath& path) {
@@ -243,6 +245,7 @@ std::vector<Variant> all_variants() {
     out.push_back(flat_variant());
     out.push_back(flat_variant({true, false}));
     out.push_back(flat_variant({true, true}));
+    out.push_back(outline_variant());
     // PCSS's tap counts, each once (the loops' bounds).
     for (int n : {1, 8, 32, 64}) {
         LitFeatures p;

@@ -92,6 +92,10 @@ Variant flat_variant(AlphaTest alpha = {});
 // of F(offset) over shadow::gooch_disc(taps).
 std::vector<std::string> gooch_tap_defines(int taps);
 
+// --effects outline: the object pushed out along its screen-space normals by u_outline_width
+// pixels (0: the object itself), in one colour (u_value).
+Variant outline_variant();
+
 // Heckbert-Herf: one light sample's visibility (a texture) added as a count into one channel.
 Variant area_add_variant();
 

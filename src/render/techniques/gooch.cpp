@@ -35,6 +35,7 @@ const Module& planar_module();  // planar.cpp
 namespace {
 
 constexpr int kGroundVisible = 1;  // the stencil of a visible ground pixel before plane 0
+constexpr const char* kUse = "gooch: planes lighting the ground";
 constexpr int kGoochUnit = 0;
 constexpr const char* kTexture = "gooch-texture";
 constexpr int kMinTexture = 32;
@@ -131,7 +132,18 @@ public:
         return {};
     }
 
-    bool needs_stencil(const PlanContext& c) const override { return !texture_method(c) && has_ground(c); }
+    // Planes: the values 1..K+1, counting (incr); with every plane the ground, the planar shadow's use.
+    std::vector<StencilUse> stencil_uses(const PlanContext& c) const override {
+        if (texture_method(c) || !has_ground(c)) return {};
+        if (planes_are_planar(c)) return planar_module().stencil_uses(c);
+        StencilUse u;
+        u.name = kUse;
+        u.module = "gooch";
+        const int top = kGroundVisible + std::clamp(c.settings.gooch_planes, 1, kMaxGoochPlanes);
+        while ((1 << u.bits) <= top) ++u.bits;
+        u.counts = true;
+        return {u};
+    }
 
     bool keeps_out_of_camera(const PlanContext& c, int object) const override {
         return !texture_method(c) && has_ground(c) && object == c.scene.ground_object;
@@ -257,12 +269,13 @@ public:
         const std::vector<float> offsets = shadow::gooch_offsets(k, spread);
         const std::vector<int> weights = shadow::gooch_weight_bytes(k);
         const glm::vec4 light = c.light_vector();
+        const StencilUse& use = c.stencil(kUse);
 
         Pass mark;
         mark.name = "gooch-ground";
         mark.module = "gooch";
         mark.target = c.camera_target;
-        mark.state.stencil = gl::stencil_test(gl::Compare::Always, kGroundVisible, gl::StencilOp::Replace);
+        mark.state.stencil = use.test(gl::Compare::Always, kGroundVisible, gl::StencilOp::Replace);
         mark.bindings = c.lit_bindings();
         const std::uint32_t all = (1u << mark.bindings.size()) - 1u;
         Draw g = c.object_draw(ground);
@@ -284,7 +297,7 @@ public:
             Pass project = overlay(c, "gooch-stencil");
             project.state.color_write = false;
             project.state.cull = gl::Cull::None;
-            project.state.stencil = gl::stencil_test(gl::Compare::Equal, before, gl::StencilOp::Incr);
+            project.state.stencil = use.test(gl::Compare::Equal, before, gl::StencilOp::Incr);
             project.object_uniforms = ObjectUniforms::Mvp;
             project.view_proj = c.plan.camera.view_proj * shadow::gooch_projection(*c.scene.ground_plane, light,
                                                                                    offsets[static_cast<size_t>(i)]);
@@ -300,7 +313,7 @@ public:
             c.add_pass(std::move(project));
 
             Pass light_pass = overlay(c, "gooch-light");
-            light_pass.state.stencil = gl::stencil_test(gl::Compare::Equal, before, gl::StencilOp::Incr);
+            light_pass.state.stencil = use.test(gl::Compare::Equal, before, gl::StencilOp::Incr);
             light_pass.state.blend = gl::Blend::Add;
             light_pass.bindings = c.lit_bindings();
             const int w = weights[static_cast<size_t>(i)];

@@ -12,9 +12,11 @@ namespace penumbra::render {
 
 namespace {
 
-// The stencil values this technique writes into the camera target (cleared to 0 each frame).
+// The stencil values this technique writes into its use's bits of the camera target (cleared to
+// 0 each frame): 2 bits, counting (1 -> 2 by incr).
 constexpr int kGroundVisible = 1;
 constexpr int kInShadow = 2;
+constexpr const char* kUse = "planar: shadowed ground";
 
 bool has_ground(const PlanContext& c) {
     const int g = c.scene.ground_object;
@@ -45,7 +47,15 @@ public:
         return {};
     }
 
-    bool needs_stencil(const PlanContext& c) const override { return has_ground(c); }
+    std::vector<StencilUse> stencil_uses(const PlanContext& c) const override {
+        if (!has_ground(c)) return {};
+        StencilUse u;
+        u.name = kUse;
+        u.module = "planar";
+        u.bits = 2;  // 0 outside the ground, 1 the ground, 2 in the shadow
+        u.counts = true;
+        return {u};
+    }
 
     bool keeps_out_of_camera(const PlanContext& c, int object) const override {
         return has_ground(c) && object == c.scene.ground_object;
@@ -54,9 +64,10 @@ public:
     void after_camera(PlanContext& c) const override {
         if (!has_ground(c)) return;
         const int ground = c.scene.ground_object;
+        const StencilUse& use = c.stencil(kUse);
 
         Pass mark = camera_pass(c, "planar-ground", false);
-        mark.state.stencil = gl::stencil_test(gl::Compare::Always, kGroundVisible, gl::StencilOp::Replace);
+        mark.state.stencil = use.test(gl::Compare::Always, kGroundVisible, gl::StencilOp::Replace);
         mark.bindings = c.lit_bindings();
         const std::uint32_t all = (1u << mark.bindings.size()) - 1u;
         Draw g = c.object_draw(ground);
@@ -69,7 +80,7 @@ public:
         Pass project = camera_pass(c, "planar-stencil", true);
         project.state.color_write = false;
         project.state.cull = gl::Cull::None;
-        project.state.stencil = gl::stencil_test(gl::Compare::Equal, kGroundVisible, gl::StencilOp::Incr);
+        project.state.stencil = use.test(gl::Compare::Equal, kGroundVisible, gl::StencilOp::Incr);
         project.object_uniforms = ObjectUniforms::Mvp;
         project.view_proj = c.plan.camera.view_proj * shadow::planar_projection(*c.scene.ground_plane, c.light_vector());
         for (int i : c.casters) {
@@ -84,7 +95,7 @@ public:
         c.add_pass(std::move(project));
 
         Pass shade = camera_pass(c, "planar-shadow", true);
-        shade.state.stencil = gl::stencil_test(gl::Compare::Equal, kInShadow);
+        shade.state.stencil = use.test(gl::Compare::Equal, kInShadow);
         shade.bindings = c.lit_bindings();
         LitFeatures f = c.base_features(g);
         f.in_shadow = true;

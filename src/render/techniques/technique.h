@@ -10,8 +10,18 @@
 //                 adds its bindings and each draw's shader features (shade)
 //   after_camera  passes after it: planar shadows and shadow volumes through the stencil buffer
 //
+// A module that uses the stencil declares each use (stencil_uses: a name, the bits it needs,
+// whether it counts); plan() allocates bits to all the frame's uses before any pass is added, and
+// the module makes its passes' stencil state through its use (PlanContext::stencil(name).test(...)),
+// never with raw values and masks.
+//
+// Effects (--effects: outline; mirror and portal later) are modules too, beside the technique:
+// plan() asks each for check and stencil_uses, and calls its after_camera after the technique's,
+// so an effect draws over whatever the technique made of the image.
+//
 // Adding a technique: a file here with a Module subclass, its entry in techniques.cpp, its value in
-// render::Technique and the option table's choices (render/options.cpp).
+// render::Technique and the option table's choices (render/options.cpp). An effect: the same with
+// render::Effect and effect_module.
 #pragma once
 
 #include <cstddef>
@@ -88,6 +98,9 @@ struct PlanContext {
     glm::vec4 light_vector() const;
     // The camera's uniforms (view, light, ambient) and the spot light's, for a Lit pass.
     std::vector<Binding> lit_bindings() const;
+    // The frame's stencil use of that name, with its allocated bits (a module asks only for the
+    // uses it declared; std::logic_error otherwise).
+    const StencilUse& stencil(std::string_view name) const;
 };
 
 class Module {
@@ -95,7 +108,8 @@ public:
     virtual ~Module() = default;
     virtual std::string_view name() const = 0;
     virtual std::string check(const PlanContext&) const { return {}; }
-    virtual bool needs_stencil(const PlanContext&) const { return false; }
+    // The stencil uses of this frame (none: the module leaves the stencil alone).
+    virtual std::vector<StencilUse> stencil_uses(const PlanContext&) const { return {}; }
     virtual void before_camera(PlanContext&) const {}
     virtual bool own_view(PlanContext&) const { return false; }
     virtual bool keeps_out_of_camera(const PlanContext&, int /*object*/) const { return false; }
@@ -103,7 +117,8 @@ public:
     virtual void after_camera(PlanContext&) const {}
 };
 
-// The module of each technique (techniques.cpp).
+// The module of each technique (techniques.cpp) and of each effect.
 const Module& technique_module(Technique t);
+const Module& effect_module(Effect e);
 
 }  // namespace penumbra::render

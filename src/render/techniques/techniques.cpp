@@ -9,6 +9,7 @@ const Module& shadow_map_module();  // shadow_map.cpp
 const Module& planar_module();      // planar.cpp
 const Module& volumes_module();     // volumes.cpp
 const Module& gooch_module();       // gooch.cpp
+const Module& outline_module();     // outline.cpp
 
 namespace {
 
@@ -30,6 +31,13 @@ const Module& technique_module(Technique t) {
         case Technique::None: return none;
     }
     return none;
+}
+
+const Module& effect_module(Effect e) {
+    switch (e) {
+        case Effect::Outline: return outline_module();
+    }
+    return outline_module();
 }
 
 void ContentKey::add(const void* data, std::size_t bytes) {

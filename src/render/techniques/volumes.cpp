@@ -19,8 +19,12 @@ namespace penumbra::render {
 
 namespace {
 
-// Stencil values this technique reads: 0 lit, anything else in a shadow (a count, wrapping).
+// Stencil values this technique reads: 0 lit, anything else in a shadow (a count, wrapping in its
+// use's bits: at least 4, so the count view tells 1..6 from a negative count; every bit the other
+// uses of the frame leave).
 constexpr int kLit = 0;
+constexpr const char* kUse = "volumes: shadow count";
+constexpr int kMinBits = 4;
 // Near caps of depth-fail are pushed this far from the eye so that a lit open surface, its own
 // cap, counts as behind itself (they lie in one plane); slope-scaled for grazing views.
 constexpr float kCapOffsetFactor = 1.0f, kCapOffsetUnits = 4.0f;
@@ -63,7 +67,14 @@ public:
         return {};
     }
 
-    bool needs_stencil(const PlanContext&) const override { return true; }
+    std::vector<StencilUse> stencil_uses(const PlanContext&) const override {
+        StencilUse u;
+        u.name = kUse;
+        u.module = "volumes";
+        u.bits = kMinBits;
+        u.counts = true;
+        return {u};
+    }
 
     void before_camera(PlanContext& c) const override {
         // Silhouettes come from the triangles, not from the texture: a cut-out casts its whole quad.
@@ -97,17 +108,18 @@ public:
         const auto near = shadow::near_rectangle(c.plan.camera.view_proj);
         const ShadowBounds bounds = shadow_bounds(c.scene, c.settings.blend_shadows);
         VolumeStats stats;
+        const StencilUse& use = c.stencil(kUse);
         Pass zpass = volume_pass(c, "volumes-zpass");
-        zpass.state.stencil = gl::stencil_count(false);
+        zpass.state.stencil = use.count(false);
         Pass zfail = volume_pass(c, "volumes-zfail");
-        zfail.state.stencil = gl::stencil_count(true);
+        zfail.state.stencil = use.count(true);
         // Near caps, pushed back by a depth offset (below). Depth-pass needs them for open meshes
         // only: the camera pass culls back faces, so the eye sees past the inside of a bowl or a
         // tube, through triangles whose caps then lie in front of what it sees.
         Pass zpass_caps = volume_pass(c, "volumes-zpass-caps");
-        zpass_caps.state.stencil = gl::stencil_count(false);
+        zpass_caps.state.stencil = use.count(false);
         Pass caps = volume_pass(c, "volumes-zfail-caps");
-        caps.state.stencil = gl::stencil_count(true);
+        caps.state.stencil = use.count(true);
         for (Pass* p : {&zpass_caps, &caps}) {
             p->state.offset_factor = kCapOffsetFactor;
             p->state.offset_units = kCapOffsetUnits;
@@ -183,7 +195,7 @@ private:
         lit.target = c.camera_target;
         lit.state.depth_func = gl::Compare::LEqual;
         lit.state.depth_write = false;
-        lit.state.stencil = gl::stencil_test(gl::Compare::Equal, kLit);
+        lit.state.stencil = c.stencil(kUse).test(gl::Compare::Equal, kLit);
         lit.bindings = c.lit_bindings();
         const std::uint32_t all = (1u << lit.bindings.size()) - 1u;
         for (int i : c.drawable) {
@@ -222,12 +234,14 @@ private:
             p.detail = std::move(detail);
             c.add_pass(std::move(p));
         };
+        const StencilUse& use = c.stencil(kUse);
         for (int k = 1; k <= kCountColours; ++k)
-            overlay("volumes-count-" + std::to_string(k), gl::stencil_test(gl::Compare::Equal, k), colours[k - 1],
+            overlay("volumes-count-" + std::to_string(k), use.test(gl::Compare::Equal, k), colours[k - 1],
                     "count " + std::to_string(k) + ": a false colour where the stencil holds it");
-        // Wrapped below zero (128..255): what depth-pass leaves where the eye is inside a volume.
-        gl::StencilState negative = gl::stencil_test(gl::Compare::Equal, 0x80);
-        negative.read_mask = 0x80;
+        // Wrapped below zero (the use's top bit set; 128..255 with all 8 bits): what depth-pass
+        // leaves where the eye is inside a volume.
+        gl::StencilState negative = use.test(gl::Compare::Equal, 1 << (use.width - 1));
+        negative.read_mask = use.top_bit();
         overlay("volumes-count-negative", negative, {1.0f, 0.05f, 0.05f, 0.75f},
                 "a negative count (wrapped past 0, top bit set): red; depth-pass's failure with the eye in a shadow");
     }

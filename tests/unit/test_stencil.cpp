@@ -1,0 +1,272 @@
+// The stencil as data of the plan: each module declares its uses, the plan gives them bits that
+// never overlap (or refuses, naming the uses), and every pass's stencil state stays inside its
+// use's bits. The outline effect's passes. No GL context.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "render/options.h"
+#include "render/plan.h"
+#include "scene/course_scene.h"
+
+using namespace penumbra;
+using render::FramePlan;
+using render::StencilUse;
+
+namespace {
+
+gl::Caps full_caps() {
+    gl::Caps c;
+    c.depth_texture = c.packed_depth_stencil = c.depth24 = c.element_index_uint = true;
+    c.max_texture_size = c.max_renderbuffer_size = c.max_viewport_width = c.max_viewport_height = 4096;
+    return c;
+}
+
+const render::FrameInputs kIn = render::offscreen(64, 64);
+
+StencilUse use(const char* name, int bits, bool counts) {
+    StencilUse u;
+    u.name = name;
+    u.bits = bits;
+    u.counts = counts;
+    return u;
+}
+
+// Every stencil state of the plan's passes: the bits it may read, write, and compare with.
+struct Touch {
+    std::string pass;
+    std::uint32_t read = 0, write = 0;
+    int ref = 0;
+};
+std::vector<Touch> stencil_touches(const FramePlan& p) {
+    std::vector<Touch> out;
+    for (const auto& pass : p.passes)
+        if (pass.state.stencil.enabled)
+            out.push_back({pass.name, pass.state.stencil.read_mask, pass.state.stencil.write_mask, pass.state.stencil.ref});
+    return out;
+}
+
+struct StencilPlan : ::testing::Test {
+    scene::CourseScene course = scene::make_course_scene(4);
+    gl::Caps caps = full_caps();
+    render::Settings s;
+    FramePlan make() { return render::plan(course.scene, s, caps, kIn); }
+    std::string check() { return render::check(course.scene, s, caps, kIn); }
+};
+
+TEST(StencilAllocation, TheCounterTakesTheLowBitsAndTheRestGoesFromTheTop) {
+    std::vector<StencilUse> uses = {use("a: counts", 2, true), use("b: marks", 1, false), use("c: marks", 2, false)};
+    ASSERT_EQ(render::allocate_stencil(uses, 8), "");
+    EXPECT_EQ(uses[0].shift, 0);
+    EXPECT_EQ(uses[0].width, 5);  // every bit the others leave
+    EXPECT_EQ(uses[0].mask(), 0x1Fu);
+    EXPECT_EQ(uses[1].mask(), 0x80u);
+    EXPECT_EQ(uses[2].mask(), 0x60u);
+    EXPECT_EQ(uses[2].ref(1), 0x20);
+    EXPECT_EQ(uses[2].ref(3), 0x60);
+    EXPECT_EQ(uses[0].top_bit(), 0x10u);
+    EXPECT_EQ(uses[0].mask() & uses[1].mask(), 0u);
+    EXPECT_EQ((uses[0].mask() | uses[1].mask()) & uses[2].mask(), 0u);
+    // A use alone that counts has the whole stencil: the states of a frame without effects.
+    std::vector<StencilUse> alone = {use("a: counts", 2, true)};
+    ASSERT_EQ(render::allocate_stencil(alone, 8), "");
+    EXPECT_EQ(alone[0].mask(), 0xFFu);
+    const gl::StencilState t = alone[0].test(gl::Compare::Equal, 1, gl::StencilOp::Incr);
+    EXPECT_EQ(t, gl::stencil_test(gl::Compare::Equal, 1, gl::StencilOp::Incr));
+    EXPECT_EQ(alone[0].count(true), gl::stencil_count(true));
+}
+
+TEST(StencilAllocation, RefusesTooManyBitsNamingBothUses) {
+    std::vector<StencilUse> uses = {use("volumes: shadow count", 4, true), use("outline: the model's pixels", 1, false)};
+    const std::string why = render::allocate_stencil(uses, 4);
+    EXPECT_NE(why.find("volumes: shadow count"), std::string::npos) << why;
+    EXPECT_NE(why.find("outline: the model's pixels"), std::string::npos) << why;
+    EXPECT_NE(why.find("5 bits"), std::string::npos) << why;
+    EXPECT_EQ(why.find('\n'), std::string::npos);
+    std::vector<StencilUse> two = {use("x: counts", 1, true), use("y: counts", 1, true)};
+    const std::string both = render::allocate_stencil(two, 8);
+    EXPECT_NE(both.find("'x: counts' and 'y: counts'"), std::string::npos) << both;
+}
+
+TEST_F(StencilPlan, PlanarAndOutlineGetDisjointBitsAndEveryPassKeepsToItsOwn) {
+    s.technique = render::Technique::Planar;
+    s.effects = {render::Effect::Outline};
+    ASSERT_EQ(check(), "");
+    const FramePlan p = make();
+    ASSERT_EQ(p.stencil.size(), 2u);
+    const StencilUse* planar = p.stencil_use("planar: shadowed ground");
+    const StencilUse* outline = p.stencil_use("outline: the model's pixels");
+    ASSERT_NE(planar, nullptr);
+    ASSERT_NE(outline, nullptr);
+    EXPECT_EQ(planar->mask() & outline->mask(), 0u);
+    EXPECT_EQ(planar->shift, 0);  // it counts (1 -> 2 by incr)
+    EXPECT_EQ(outline->mask(), 0x80u);
+    for (const Touch& t : stencil_touches(p)) {
+        const StencilUse* own = t.pass.rfind("outline", 0) == 0 ? outline : planar;
+        EXPECT_EQ(t.read & ~own->mask(), 0u) << t.pass;
+        EXPECT_EQ(t.write & ~own->mask(), 0u) << t.pass;
+        EXPECT_EQ(static_cast<std::uint32_t>(t.ref) & ~own->mask(), 0u) << t.pass;
+    }
+    // The outline's passes come after the technique's, on the camera's target, which has a stencil.
+    ASSERT_GE(p.passes.size(), 2u);
+    EXPECT_EQ(p.passes[p.passes.size() - 2].name, "outline-mark");
+    EXPECT_EQ(p.passes.back().name, "outline-draw");
+    EXPECT_EQ(p.passes.back().state.stencil.func, gl::Compare::NotEqual);
+    EXPECT_EQ(p.passes.back().state.stencil.write_mask & outline->mask(), outline->mask());
+    EXPECT_EQ(p.passes.back().state.stencil.pass, gl::StencilOp::Keep);
+}
+
+TEST_F(StencilPlan, VolumesAndOutlineGetDisjointBitsAndTheCountKeepsTheRest) {
+    s.technique = render::Technique::Volumes;
+    s.effects = {render::Effect::Outline};
+    s.aov = render::Aov::Color;
+    ASSERT_EQ(check(), "");
+    const FramePlan p = make();
+    const StencilUse* volumes = p.stencil_use("volumes: shadow count");
+    const StencilUse* outline = p.stencil_use("outline: the model's pixels");
+    ASSERT_NE(volumes, nullptr);
+    ASSERT_NE(outline, nullptr);
+    EXPECT_EQ(volumes->mask(), 0x7Fu);
+    EXPECT_EQ(outline->mask(), 0x80u);
+    for (const Touch& t : stencil_touches(p)) {
+        const StencilUse* own = t.pass.rfind("outline", 0) == 0 ? outline : volumes;
+        EXPECT_EQ(t.write & ~own->mask(), 0u) << t.pass;
+        EXPECT_EQ(t.read & ~own->mask(), 0u) << t.pass;
+    }
+}
+
+TEST_F(StencilPlan, WithoutEffectsTheStatesAreTheWholeStencilAsBefore) {
+    s.technique = render::Technique::Volumes;
+    const FramePlan p = make();
+    ASSERT_EQ(p.stencil.size(), 1u);
+    EXPECT_EQ(p.stencil[0].mask(), 0xFFu);
+    for (const Touch& t : stencil_touches(p)) {
+        EXPECT_EQ(t.write, 0xFFu) << t.pass;
+        EXPECT_EQ(t.read, 0xFFu) << t.pass;
+    }
+    s.technique = render::Technique::ShadowMap;
+    EXPECT_TRUE(make().stencil.empty());
+    EXPECT_FALSE(make().passes.back().clear->stencil);
+}
+
+TEST_F(StencilPlan, TheCountViewsNegativeBitIsTheCountsTopBit) {
+    s.technique = render::Technique::Volumes;
+    s.aov = render::Aov::StencilCount;
+    const FramePlan alone = make();
+    bool seen = false;
+    for (const auto& pass : alone.passes) {
+        if (pass.name == "volumes-count-negative") {
+            seen = true;
+            EXPECT_EQ(pass.state.stencil.read_mask, 0x80u);
+            EXPECT_EQ(pass.state.stencil.ref, 0x80);
+        }
+    }
+    EXPECT_TRUE(seen);
+}
+
+TEST_F(StencilPlan, APlanNeedingMoreBitsThanTheTargetHasIsRefusedNamingBoth) {
+    s.technique = render::Technique::Volumes;
+    s.effects = {render::Effect::Outline};
+    caps.stencil_bits = 4;
+    const std::string why = check();
+    EXPECT_NE(why.find("volumes: shadow count"), std::string::npos) << why;
+    EXPECT_NE(why.find("outline: the model's pixels"), std::string::npos) << why;
+    caps.stencil_bits = 5;
+    EXPECT_EQ(check(), "");
+    // Gooch's 16 planes count to 17: 5 bits, and the outline's one.
+    s.technique = render::Technique::Gooch;
+    s.gooch_planes = 16;
+    s.light_radius = 0.3f;
+    const std::string gooch = check();
+    EXPECT_NE(gooch.find("gooch: planes lighting the ground"), std::string::npos) << gooch;
+    EXPECT_NE(gooch.find("outline: the model's pixels"), std::string::npos) << gooch;
+    caps.stencil_bits = 8;
+    EXPECT_EQ(check(), "");
+}
+
+TEST_F(StencilPlan, OutlineWorksBesideEveryTechnique) {
+    s.effects = {render::Effect::Outline};
+    for (render::Technique t : render::kAllTechniques) {
+        s.technique = t;
+        ASSERT_EQ(check(), "") << render::to_string(t);
+        const FramePlan p = make();
+        ASSERT_TRUE(p.has_pass("outline-draw")) << render::to_string(t);
+        EXPECT_EQ(p.passes.back().name, "outline-draw");
+        // The camera pass clears the stencil the outline marks.
+        for (const auto& pass : p.passes) {
+            if (pass.name == "camera") {
+                EXPECT_TRUE(pass.clear && pass.clear->stencil) << render::to_string(t);
+            }
+        }
+        const auto& camera = p.resource("camera")->desc;
+        EXPECT_EQ(camera.depth_buffer, caps.depth_stencil_format()) << render::to_string(t);
+        // Only the teapot is outlined, not the table.
+        const auto& draw = p.passes.back().draws;
+        ASSERT_EQ(draw.size(), 1u);
+        EXPECT_NE(draw[0].object, course.scene.ground_object);
+    }
+    // Soft shadows (light samples) too: the outline after the last camera pass.
+    s.technique = render::Technique::ShadowMap;
+    s.area_samples = 4;
+    s.light_radius = 0.3f;
+    const FramePlan area = make();
+    ASSERT_TRUE(area.area.has_value());
+    EXPECT_EQ(area.passes.back().name, "outline-draw");
+    // Not on an AOV: a note instead.
+    s.area_samples = 1;
+    s.aov = render::Aov::Visibility;
+    const FramePlan vis = make();
+    EXPECT_FALSE(vis.has_pass("outline-draw"));
+    EXPECT_TRUE(vis.stencil.empty());
+    ASSERT_FALSE(vis.notes.empty());
+}
+
+TEST_F(StencilPlan, ThePrintedPlanListsTheUses) {
+    s.technique = render::Technique::Planar;
+    s.effects = {render::Effect::Outline};
+    const FramePlan p = make();
+    const std::string text = p.to_text();
+    EXPECT_NE(text.find("stencil uses (8 bits):"), std::string::npos) << text;
+    EXPECT_NE(text.find("planar: shadowed ground (planar): bits 0-6 (mask 7f)"), std::string::npos) << text;
+    EXPECT_NE(text.find("outline: the model's pixels (outline): bit 7 (mask 80)"), std::string::npos) << text;
+    const auto j = nlohmann::json::parse(p.to_json());
+    ASSERT_EQ(j["stencil"].size(), 2u);
+    EXPECT_EQ(j["stencil_bits"], 8);
+    EXPECT_EQ(j["stencil"][1]["name"], "outline: the model's pixels");
+    EXPECT_EQ(j["stencil"][1]["read_mask"], 128);
+    EXPECT_EQ(j["stencil"][1]["ref_of_1"], 128);
+    EXPECT_EQ(j["stencil"][0]["write_mask"], 127);
+}
+
+TEST(EffectOptions, ParseCheckAndPrint) {
+    render::Options o;
+    EXPECT_EQ(render::parse_option(o, "effects", "outline"), "");
+    EXPECT_TRUE(o.settings.has(render::Effect::Outline));
+    EXPECT_EQ(render::parse_option(o, "effects", "none"), "");
+    EXPECT_TRUE(o.settings.effects.empty());
+    EXPECT_NE(render::parse_option(o, "effects", "mirror"), "");
+    EXPECT_NE(render::parse_option(o, "effects", "outline,outline").find("twice"), std::string::npos);
+    EXPECT_NE(render::parse_option(o, "effects", "outline,none"), "");
+    EXPECT_NE(render::parse_option(o, "effects", ""), "");
+    EXPECT_EQ(render::parse_option(o, "outline-color", "ff0080"), "");
+    EXPECT_FLOAT_EQ(o.settings.outline_color.r, 1.0f);
+    EXPECT_FLOAT_EQ(o.settings.outline_color.g, 0.0f);
+    EXPECT_FLOAT_EQ(o.settings.outline_color.b, 128.0f / 255.0f);
+    for (const char* bad : {"#ff0080", "ff008", "ff00800", "gg0000", "1,0,0", ""})
+        EXPECT_NE(render::parse_option(o, "outline-color", bad), "") << bad;
+    EXPECT_EQ(render::parse_option(o, "outline-width", "0.5"), "");
+    EXPECT_EQ(render::parse_option(o, "outline-width", "32"), "");
+    for (const char* bad : {"0.4", "33", "0", "-1", "wide", "nan"})
+        EXPECT_NE(render::parse_option(o, "outline-width", bad), "") << bad;
+    EXPECT_EQ(render::parse_option(o, "outline-width", "2.5"), "");
+    EXPECT_EQ(render::parse_option(o, "effects", "outline"), "");
+    // What to_pairs prints reads back as the same settings.
+    render::Options back;
+    for (const auto& [k, v] : render::to_pairs(o)) ASSERT_EQ(render::parse_option(back, k, v), "") << k << " " << v;
+    EXPECT_EQ(back, o);
+    const auto pairs = render::to_pairs(o);
+    EXPECT_NE(std::find(pairs.begin(), pairs.end(), std::pair<std::string, std::string>{"outline-color", "ff0080"}), pairs.end());
+    EXPECT_NE(std::find(pairs.begin(), pairs.end(), std::pair<std::string, std::string>{"outline-width", "2.5"}), pairs.end());
+}
+
+}  // namespace
