@@ -288,4 +288,30 @@ TEST(Alpha, VolumesSayTheyCastTheWholeQuad) {
     EXPECT_TRUE(said);
 }
 
+TEST(Alpha, TheOutlineLeavesCutOutsOutWithANote) {
+    scene::Scene s = load();
+    // An opaque copy of the fence: the only object the outline may take.
+    scene::Object solid = s.objects[1];
+    ASSERT_EQ(solid.name, "fence");
+    solid.name = "solid";
+    scene::Material opaque = s.materials[static_cast<size_t>(solid.material)];
+    opaque.alpha_mode = scene::AlphaMode::Opaque;
+    s.materials.push_back(opaque);
+    solid.material = static_cast<int>(s.materials.size()) - 1;
+    s.objects.push_back(solid);
+    render::Settings st;
+    ASSERT_EQ(render::parse_option(st, "effects", "outline"), "");
+    ASSERT_EQ(render::parse_option(st, "blend-shadows", "on"), "");  // the pane casts: a cut-out too
+    const render::FramePlan p = render::plan(s, st, full_caps(), render::offscreen(64, 64));
+    for (const char* name : {"outline-mark", "outline-draw"}) {
+        const render::Pass* o = pass(p, name);
+        ASSERT_NE(o, nullptr) << name;
+        ASSERT_EQ(o->draws.size(), 1u) << name;
+        EXPECT_EQ(o->draws[0].label, "solid") << name;
+    }
+    bool said = false;
+    for (const auto& n : p.notes) said = said || n.find("fence, leaves, pane are not outlined") != std::string::npos;
+    EXPECT_TRUE(said);
+}
+
 }  // namespace

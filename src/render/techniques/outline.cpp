@@ -1,6 +1,6 @@
 // --effects outline: the objects outlined in a colour (--outline-color) and a width in pixels
 // (--outline-width), the same width at any depth. The outlined objects are every shadow caster but
-// the ground (in the course scene: the teapot). After the technique's passes:
+// the ground and alpha-tested cut-outs (in the course scene: the teapot). After the technique's passes:
 //
 //   outline-mark  the objects' pixels marked 1 in the outline's stencil bit (colour and depth
 //                 writes off, no depth test, both faces: every pixel the object covers, seen or not)
@@ -28,11 +28,20 @@ namespace {
 constexpr const char* kUse = "outline: the model's pixels";
 constexpr int kMarked = 1;
 
-// Every shadow caster but the ground object, in scene order.
+// A caster whose material is not opaque (a glTF MASK cut-out, or BLEND casting under
+// --blend-shadows): its edge is where the texture's alpha crosses the cutoff, which geometry pushed
+// out along its normals cannot follow (a fence would get the outline of its whole quad).
+bool cut_out(const PlanContext& c, int object) {
+    const int m = c.scene.objects[static_cast<size_t>(object)].material;
+    return m >= 0 && static_cast<size_t>(m) < c.scene.materials.size() &&
+           c.scene.materials[static_cast<size_t>(m)].alpha_mode != scene::AlphaMode::Opaque;
+}
+
+// Every shadow caster but the ground object and the cut-outs, in scene order.
 std::vector<int> outlined(const PlanContext& c) {
     std::vector<int> out;
     for (int i : c.casters)
-        if (i != c.scene.ground_object) out.push_back(i);
+        if (i != c.scene.ground_object && !cut_out(c, i)) out.push_back(i);
     return out;
 }
 
@@ -57,8 +66,14 @@ public:
 
     void after_camera(PlanContext& c) const override {
         const std::vector<int> objects = outlined(c);
+        std::string left_out;
+        for (int i : c.casters)
+            if (cut_out(c, i)) left_out += (left_out.empty() ? "" : ", ") + c.scene.objects[static_cast<size_t>(i)].name;
+        if (!left_out.empty())
+            c.plan.notes.push_back("--effects outline: the alpha-tested caster(s) " + left_out +
+                                   " are not outlined (an outline pushed out from the geometry cannot follow a cut-out's edge)");
         if (objects.empty()) {
-            c.plan.notes.push_back("--effects outline: nothing to outline (no shadow caster but the ground)");
+            c.plan.notes.push_back("--effects outline: nothing to outline (no shadow caster but the ground and cut-outs)");
             return;
         }
         const StencilUse& use = c.stencil(kUse);
