@@ -504,6 +504,8 @@ std::vector<Option<Options>> make_table() {
     OptionInfo outline_color = make_option_info("outline-color", P::Technique, T::Text,
                          "--effects outline: the outline's colour as six hex digits RRGGBB (sRGB bytes, no '#': "
                          "ff8c00 is orange)", "Outline colour");
+    // What a page's select offers (any six hex digits are taken).
+    outline_color.presets = {{"ff8c00", "orange"}, {"ffff00", "yellow"}, {"00ffff", "cyan"}, {"ff00ff", "magenta"}};
     outline_color.form = [](std::string_view v) -> std::string {
         if (v.size() != 6) return "expected six hex digits RRGGBB (e.g. ff8c00)";
         for (char ch : v)

@@ -70,7 +70,7 @@ struct OptionInfo {
     std::vector<Choice> choices;
     double min = -std::numeric_limits<double>::infinity();
     double max = std::numeric_limits<double>::infinity();
-    std::vector<Choice> presets;            // Integer: the values a page's select offers
+    std::vector<Choice> presets;            // Integer, Text: the values a page's select offers
     double step = 0.0;                      // Number(OrWord): a page's number box step (0: any)
     bool may_be_empty = false;              // Text: "" is a value (--out: write nothing)
     // Choice: a comma list of distinct choices in any order ("outline,mirror"); the first choice
