@@ -154,6 +154,31 @@ std::vector<ExerciseInfo> make_list() {
           {"technique", "Shadows", K::Select, {}, {}, "Heckbert-Herf averages any of them; PCSS filters a shadow map"},
           {"aov", "View", K::Select, {"color", "visibility"}}},
          {{"light", "off"}, {"jump", "off"}, {"light-radius", "0.3"}, {"filter", "pcss"}, {"area-per-frame", "4"}}},
+        {Exercise::Stencil, "stencil", "Stencil effects: outlines",
+         "The stencil buffer is a mask with a value per pixel: a draw first writes a pattern into it, and later draws "
+         "pass only where it holds a given value. The outline uses it twice: the teapot is drawn with colour and depth "
+         "writes off, setting its pixels' stencil bit; then it is drawn again, enlarged, in one colour, only where the "
+         "bit is not set, so only a band around the teapot shows, never the teapot itself. The course notes enlarge the "
+         "model by scaling it; here each vertex is pushed out along its normal's direction on the screen by a constant "
+         "number of pixels, because a scale about the centre moves each point by its distance from the centre, so the "
+         "band would be wide round the body, thin at the spout and the handle, and narrower the farther the teapot is. "
+         "The outline's bit sits beside the shadows' own stencil values (planar shadows' mark, shadow volumes' "
+         "count), so it works with each technique.",
+         "The stencil buffer as a mask: the teapot's pixels marked, then a copy pushed out by a constant number of "
+         "pixels drawn only where they are not, outlining the teapot with any shadow technique.",
+         "The teapot on the table, outlined in colour through the stencil buffer",
+         "Untick the outline and tick it again, then widen it: the band stays as wide round the spout and the handle "
+         "as round the body. Switch to shadow volumes or planar: the outline shares the stencil with their shadows.",
+         render::Technique::ShadowMap,
+         {light, jump,
+          {"effects", "Outline", K::Checkbox, {"outline", "none"}, "Outline the teapot",
+           "its pixels marked in the stencil, a copy pushed out drawn where they are not"},
+          {"outline-width", "Outline", K::Slider, {"1", "2", "3", "5", "8", "12", "16"}, {},
+           "pixels, the same at any depth", 0.5, 16.0},
+          {"outline-color", "Outline", K::Select},
+          {"technique", "Shadows", K::Select, {"shadowmap", "planar", "volumes", "none"}, {},
+           "planar and volumes keep their shadows in the stencil too"}},
+         {{"effects", "outline"}}},
     };
 }
 
@@ -212,8 +237,11 @@ const std::vector<KeyBinding>& key_bindings() {
         {'N', "area-samples", "soft: light samples (Heckbert-Herf) 1 / 4 / 16 / 64 / 256, Shift+N backwards"},
         {'C', "area-per-frame", "soft: converge while still (4 light samples a frame) / all samples every frame"},
         {'X', "reference", "soft: the reference (256 light samples) / the method chosen"},
-        {'T', "technique", "soft: next technique (shadow map, planar, volumes, ...)"},
+        {'T', "technique", "soft, stencil: next technique (shadow map, planar, volumes, ...)"},
         {'K', "pcss-taps", "soft: PCSS filter taps 8 / 16 / 32 / 64"},
+        {'Y', "effects", "stencil: the outline on/off"},
+        {'W', "outline-width", "stencil: outline width 1 / 2 / 3 / 5 / 8 / 12 / 16 px, Shift+W backwards"},
+        {'D', "outline-color", "stencil: next outline colour (orange, yellow, cyan, magenta)"},
     };
     return keys;
 }

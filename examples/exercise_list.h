@@ -16,7 +16,7 @@
 
 namespace penumbra::examples {
 
-enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c, Volumes, Soft };
+enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c, Volumes, Soft, Stencil };
 
 // What the controls set besides render::Settings.
 struct Toggles {
@@ -37,7 +37,7 @@ const std::vector<render::Option<Toggles>>& toggle_table();
 enum class ControlKind {
     Toggle,    // a button that switches on/off
     Radio,     // one radio button per choice
-    Select,    // a drop-down list of the choices (or an integer's presets)
+    Select,    // a drop-down list of the choices (or the presets of an integer or a text option)
     Checkbox,  // ticked: values[0], unticked: values[1]
     Number,    // a number-or-word option: a radio per word, one for a number, and the number box
     Slider,    // a number: a slider over [min, max] of the control (within the option's range) and a number box
@@ -47,7 +47,9 @@ struct Control {
     std::string_view option;  // a render option (a technique option, or the job's eye) or a toggle
     std::string_view group;   // the fieldset it sits in
     ControlKind kind = ControlKind::Select;
-    std::vector<std::string_view> values = {};  // Select: the choices offered (empty: all); Checkbox: on, off
+    // Select: the choices offered (empty: all); Checkbox: on, off; Slider: the steps a desktop key
+    // goes through (the slider and its box take any value in range).
+    std::vector<std::string_view> values = {};
     std::string_view label = {};                // instead of the option's own label
     std::string_view hint = {};                 // a short note beside it
     double min = 0.0, max = 0.0;                // Slider: its range (the number box takes the option's)
@@ -73,7 +75,7 @@ bool offers(const ExerciseInfo& x, std::string_view option);
 const std::vector<ExerciseInfo>& exercise_list();
 const ExerciseInfo& exercise_info(Exercise e);
 bool parse_exercise(std::string_view name, Exercise& out);
-std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c, volumes, soft"
+std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c, volumes, soft, stencil"
 
 // A desktop key bound to an option: pressing it steps the option to its next value (Shift: the
 // previous one) among the values `exercise`'s control offers, or all of them.

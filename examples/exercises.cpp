@@ -363,6 +363,10 @@ void CourseApp::draw(int width, int height) {
             if (s.aov != render::Aov::Visibility) s.aov = render::Aov::Color;
             render(s, in);
             break;
+        case Exercise::Stencil:  // the colour image: the effects are drawn on it only
+            s.aov = render::Aov::Color;
+            render(s, in);
+            break;
     }
     // Wait for the frame before the clock stops. glFinish would do on the desktop, but WebGL's
     // finish() returns at once in Chromium (it only flushes); reading one pixel back waits for the

@@ -22,6 +22,9 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
     EXPECT_EQ(CourseApp(Exercise::Soft).query(),
               "light=off&jump=off&light-radius=0.3&filter=pcss&area-samples=1&area-per-frame=4&reference=off&"
               "pcss-search=16&pcss-taps=16&technique=shadowmap&aov=color");
+    // The stencil exercise starts with the outline on.
+    EXPECT_EQ(CourseApp(Exercise::Stencil).query(),
+              "light=on&jump=on&effects=outline&outline-width=3&outline-color=ff8c00&technique=shadowmap");
 }
 
 TEST(ExerciseOptions, EveryChangeReadsBack) {
@@ -213,6 +216,42 @@ TEST(ExerciseOptions, SoftShadows) {
         EXPECT_NE(help.find(key), std::string::npos) << key << help;
 }
 
+TEST(ExerciseOptions, StencilOutline) {
+    using penumbra::render::Effect;
+    using penumbra::render::Technique;
+    CourseApp a(Exercise::Stencil);
+    ASSERT_EQ(a.settings().effects, std::vector<Effect>{Effect::Outline});
+    // The checkbox's two values, any width the slider's box takes, the colours listed, four techniques.
+    ASSERT_EQ(a.set_option("effects", "none"), "");
+    EXPECT_TRUE(a.settings().effects.empty());
+    ASSERT_EQ(a.set_option("effects", "outline"), "");
+    ASSERT_EQ(a.set_option("outline-width", "7.5"), "");
+    EXPECT_EQ(a.settings().outline_width, 7.5f);
+    ASSERT_EQ(a.set_option("outline-color", "00FFFF"), "");
+    EXPECT_NE(a.query().find("outline-color=00ffff"), std::string::npos) << a.query();
+    EXPECT_NE(a.set_option("outline-color", "123456"), "") << "not one of the colours offered";
+    EXPECT_NE(a.query().find("outline-color=00ffff"), std::string::npos) << "a refused value changes nothing";
+    ASSERT_EQ(a.set_option("technique", "volumes"), "");
+    EXPECT_EQ(a.frame_settings().technique, Technique::Volumes);
+    EXPECT_NE(a.set_option("technique", "gooch"), "") << "not offered here";
+    EXPECT_NE(a.on_key('P', false).find("--effects outline"), std::string::npos) << a.on_key('P', false);
+    // Keys: the outline on/off, the width's steps, the colours; chosen by its number key, and the
+    // outline goes back off when another exercise is chosen.
+    CourseApp k(Exercise::W09P1);
+    EXPECT_EQ(k.on_key('7', false).rfind("Stencil effects", 0), 0u);
+    EXPECT_EQ(k.query(), CourseApp(Exercise::Stencil).query());
+    EXPECT_EQ(k.on_key('Y', false), "effects = none");
+    EXPECT_EQ(k.on_key('Y', false), "effects = outline");
+    EXPECT_EQ(k.on_key('W', false), "outline-width = 5");
+    EXPECT_EQ(k.on_key('W', true), "outline-width = 3");
+    EXPECT_EQ(k.on_key('D', false), "outline-color = ffff00");
+    EXPECT_EQ(k.on_key('T', false), "technique = planar");
+    k.on_key('1', false);
+    EXPECT_TRUE(k.settings().effects.empty());
+    const std::string help = CourseApp::key_help();
+    for (const char* key : {"  7  ", "  Y  ", "  W  ", "  D  "}) EXPECT_NE(help.find(key), std::string::npos) << key << help;
+}
+
 TEST(ExerciseOptions, TimeFreezesAndIsKept) {
     CourseApp a(Exercise::W09P1);
     ASSERT_EQ(a.set_option("time", "0.6"), "");
@@ -283,7 +322,7 @@ TEST(ExerciseOptions, Keys) {
 // names an option of a table, and every value a control offers is one that option accepts.
 TEST(ExerciseList, EveryControlNamesAnOptionAndOffersValidValues) {
     using namespace penumbra;
-    ASSERT_EQ(exercise_list().size(), 6u);
+    ASSERT_EQ(exercise_list().size(), 7u);
     for (const auto& x : exercise_list()) {
         Exercise parsed{};
         ASSERT_TRUE(examples::parse_exercise(x.name, parsed));

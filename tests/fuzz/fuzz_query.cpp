@@ -5,7 +5,6 @@
 // reads back without a note into the same query.
 // The apps are made once per exercise (the course scene's marble texture takes milliseconds) and put
 // back to their first state after each input, checked; one that does not come back is made again.
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -86,9 +85,10 @@ void check_notes(const std::vector<std::string>& notes) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    static std::array<Slot, 6> slots;
+    // One app per exercise, as many as the list has.
+    static std::vector<Slot> slots(examples::exercise_list().size());
     if (size == 0) return 0;
-    const std::size_t count = examples::exercise_list().size();
+    const std::size_t count = slots.size();
     const auto& info = examples::exercise_list()[data[0] % count];
     Slot& s = slots[data[0] % count];
     if (!s.app) make(s, info.id);
