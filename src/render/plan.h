@@ -139,6 +139,7 @@ enum class ObjectUniforms {
     None,  // a full-screen draw
     Mvp,   // u_mvp = pass view_proj * draw.world
     Lit,   // u_model, u_normal_matrix and the material (colour, specular, shininess, base texture)
+    Model, // u_model and u_normal_matrix only (the outline: no material)
 };
 
 // The texture unit of a Lit draw's base-colour texture (the techniques' maps take the others).

@@ -35,6 +35,7 @@ std::string object_uniforms_str(ObjectUniforms u) {
         case ObjectUniforms::None: return "none";
         case ObjectUniforms::Mvp: return "mvp";
         case ObjectUniforms::Lit: return "lit";
+        case ObjectUniforms::Model: return "model";
     }
     return "?";
 }

@@ -169,6 +169,9 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
                     p.set("u_base_texture", kBaseTextureUnit);
                 }
             }
+        } else if (pass.object_uniforms == ObjectUniforms::Model) {
+            p.set("u_model", d.world);
+            p.set("u_normal_matrix", glm::inverseTranspose(glm::mat3(d.world)));
         } else if (pass.object_uniforms == ObjectUniforms::Lit) {
             const scene::Material& m = material_of(scene, d.material);
             p.set("u_model", d.world);
@@ -176,7 +179,8 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
             p.set("u_base_color", m.base_color);
             p.set("u_specular", m.specular);
             p.set("u_shininess", m.shininess);
-            if (d.alpha) p.set("u_alpha_cutoff", m.alpha_cutoff);
+            // BLEND (d.alpha too) is blended, not cut: only MASK's variant has ALPHA_TEST's cutoff.
+            if (m.alpha_mode == scene::AlphaMode::Mask) p.set("u_alpha_cutoff", m.alpha_cutoff);
             if (d.image >= 0) {
                 device_.bind_texture(kBaseTextureUnit,
                                      d.image_resource >= 0

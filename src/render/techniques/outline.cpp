@@ -88,7 +88,7 @@ public:
             p.state.depth_test = false;
             p.state.depth_write = false;
             p.state.cull = gl::Cull::None;
-            p.object_uniforms = ObjectUniforms::Lit;  // u_model, u_normal_matrix
+            p.object_uniforms = ObjectUniforms::Model;  // u_model, u_normal_matrix
             p.bindings.push_back({"outline",
                                   {{"u_view_proj", c.plan.camera.view_proj},
                                    {"u_viewport", viewport},
