@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "full_caps.h"
 #include "gl/caps.h"
 #include "render/options.h"
 #include "render/plan.h"
@@ -161,12 +162,7 @@ TEST(Alpha, SampleAlphaIsBilinearAtTexelCentresAsGlSamples) {
     EXPECT_FALSE(scene::repeats(img));
 }
 
-gl::Caps full_caps() {
-    gl::Caps c;
-    c.depth_texture = c.packed_depth_stencil = c.depth24 = c.element_index_uint = true;
-    c.max_texture_size = c.max_renderbuffer_size = c.max_viewport_width = c.max_viewport_height = 4096;
-    return c;
-}
+using penumbra::testing::full_caps;
 
 const render::Pass* pass(const render::FramePlan& p, const std::string& name) {
     for (const auto& x : p.passes)

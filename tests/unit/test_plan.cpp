@@ -11,6 +11,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "full_caps.h"
 #include "render/plan.h"
 #include "scene/course_scene.h"
 #include "shadow/pcf.h"
@@ -20,13 +21,7 @@ using render::FramePlan;
 
 namespace {
 
-// A context as headless Mesa reports it: everything the techniques use is there.
-gl::Caps full_caps() {
-    gl::Caps c;
-    c.depth_texture = c.packed_depth_stencil = c.depth24 = c.element_index_uint = true;
-    c.max_texture_size = c.max_renderbuffer_size = c.max_viewport_width = c.max_viewport_height = 4096;
-    return c;
-}
+using penumbra::testing::full_caps;
 
 const render::FrameInputs kIn = render::offscreen(64, 64);
 

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "full_caps.h"
 #include "render/options.h"
 #include "render/plan.h"
 #include "scene/course_scene.h"
@@ -15,12 +16,7 @@ using render::StencilUse;
 
 namespace {
 
-gl::Caps full_caps() {
-    gl::Caps c;
-    c.depth_texture = c.packed_depth_stencil = c.depth24 = c.element_index_uint = true;
-    c.max_texture_size = c.max_renderbuffer_size = c.max_viewport_width = c.max_viewport_height = 4096;
-    return c;
-}
+using penumbra::testing::full_caps;
 
 const render::FrameInputs kIn = render::offscreen(64, 64);
 

@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "full_caps.h"
 #include "render/plan.h"
 #include "scene/course_scene.h"
 #include "scene/primitives.h"
@@ -182,12 +183,7 @@ TEST(ShadowVolumes, CoveredPixelsCountsEveryLayerInsideTheView) {
 
 // ---- the plan ----------------------------------------------------------------------------------
 
-gl::Caps full_caps() {
-    gl::Caps c;
-    c.depth_texture = c.packed_depth_stencil = c.depth24 = c.element_index_uint = true;
-    c.max_texture_size = c.max_renderbuffer_size = c.max_viewport_width = c.max_viewport_height = 4096;
-    return c;
-}
+using penumbra::testing::full_caps;
 
 std::vector<std::string> pass_names(const render::FramePlan& p) {
     std::vector<std::string> n;
