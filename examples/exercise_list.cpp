@@ -172,14 +172,12 @@ std::vector<ExerciseInfo> make_list() {
          "pixels drawn only where they are not, outlining the teapot with any shadow technique; and the table top "
          "made a mirror, the reflected scene drawn only in its pixels.",
          "The teapot on the table, outlined in colour through the stencil buffer, the table a mirror",
-         "Untick the outline and tick it again, then widen it: the band stays as wide round the spout and the handle "
-         "as round the body. Choose the mirror: the teapot's reflection carries its own shadow. Switch to shadow "
-         "volumes or planar: the effects share the stencil with their shadows.",
+         "Widen the outline: the band stays as wide round the spout and the handle as round the body. Choose the "
+         "mirror and raise its reflectivity; switch to planar or volumes: they share the stencil with the effects.",
          render::Technique::ShadowMap,
          {light, jump,
           {"effects", "Effects", K::Select, {"outline", "none", "mirror", "outline,mirror"}, {},
-           "outline: the teapot's pixels marked in the stencil, a copy pushed out drawn where they are not; mirror: "
-           "the table's pixels marked, the reflected scene drawn only there"},
+           "each marks its pixels in a stencil bit of its own"},
           {"outline-width", "Outline", K::Slider, {"1", "2", "3", "5", "8", "12", "16"}, {},
            "pixels, the same at any depth", 0.5, 16.0},
           {"outline-color", "Outline", K::Select},
