@@ -154,7 +154,7 @@ std::vector<ExerciseInfo> make_list() {
           {"technique", "Shadows", K::Select, {}, {}, "Heckbert-Herf averages any of them; PCSS filters a shadow map"},
           {"aov", "View", K::Select, {"color", "visibility"}}},
          {{"light", "off"}, {"jump", "off"}, {"light-radius", "0.3"}, {"filter", "pcss"}, {"area-per-frame", "4"}}},
-        {Exercise::Stencil, "stencil", "Stencil effects: outlines",
+        {Exercise::Stencil, "stencil", "Stencil effects: outlines and a mirror",
          "The stencil buffer is a mask with a value per pixel: a draw first writes a pattern into it, and later draws "
          "pass only where it holds a given value. The outline uses it twice: the teapot is drawn with colour and depth "
          "writes off, setting its pixels' stencil bit; then it is drawn again, enlarged, in one colour, only where the "
@@ -163,19 +163,26 @@ std::vector<ExerciseInfo> make_list() {
          "number of pixels, because a scale about the centre moves each point by its distance from the centre, so the "
          "band would be wide round the body, thin at the spout and the handle, and narrower the farther the teapot is. "
          "The outline's bit sits beside the shadows' own stencil values (planar shadows' mark, shadow volumes' "
-         "count), so it works with each technique.",
+         "count), so it works with each technique. The mirror marks the table top's visible pixels in its own bit, "
+         "clears their depth, and draws the scene a second time through the camera reflected in the table's plane, "
+         "only there: the reflected teapot is lit by the same light and shadowed by the same shadow map, and what "
+         "would lie below the table is cut away in the shader (WebGL 1 has no clip planes). The reflectivity mixes "
+         "the reflection with the table's own colour and shadows.",
          "The stencil buffer as a mask: the teapot's pixels marked, then a copy pushed out by a constant number of "
-         "pixels drawn only where they are not, outlining the teapot with any shadow technique.",
-         "The teapot on the table, outlined in colour through the stencil buffer",
-         "Untick the outline and tick it again, then widen it: the band stays as wide round the spout and the handle "
-         "as round the body. Switch to shadow volumes or planar: the outline shares the stencil with their shadows.",
+         "pixels drawn only where they are not, outlining the teapot with any shadow technique; and the table top "
+         "made a mirror, the reflected scene drawn only in its pixels.",
+         "The teapot on the table, outlined in colour through the stencil buffer, the table a mirror",
+         "Widen the outline: the band stays as wide round the spout and the handle as round the body. Choose the "
+         "mirror and raise its reflectivity; switch to planar or volumes: they share the stencil with the effects.",
          render::Technique::ShadowMap,
          {light, jump,
-          {"effects", "Outline", K::Checkbox, {"outline", "none"}, "Outline the teapot",
-           "its pixels marked in the stencil, a copy pushed out drawn where they are not"},
+          {"effects", "Effects", K::Select, {"outline", "none", "mirror", "outline,mirror"}, {},
+           "each marks its pixels in a stencil bit of its own"},
           {"outline-width", "Outline", K::Slider, {"1", "2", "3", "5", "8", "12", "16"}, {},
            "pixels, the same at any depth", 0.5, 16.0},
           {"outline-color", "Outline", K::Select},
+          {"reflectivity", "Mirror", K::Slider, {"0.25", "0.5", "0.75", "1"}, {},
+           "of the table's colour is the reflection", 0.0, 1.0},
           {"technique", "Shadows", K::Select, {"shadowmap", "planar", "volumes", "none"}, {},
            "planar and volumes keep their shadows in the stencil too"}},
          {{"effects", "outline"}}},
@@ -239,9 +246,10 @@ const std::vector<KeyBinding>& key_bindings() {
         {'X', "reference", "soft: the reference (256 light samples) / the method chosen"},
         {'T', "technique", "soft, stencil: next technique (shadow map, planar, volumes, ...)"},
         {'K', "pcss-taps", "soft: PCSS filter taps 8 / 16 / 32 / 64"},
-        {'Y', "effects", "stencil: the outline on/off"},
+        {'Y', "effects", "stencil: effects outline / none / mirror / outline and mirror"},
         {'W', "outline-width", "stencil: outline width 1 / 2 / 3 / 5 / 8 / 12 / 16 px, Shift+W backwards"},
         {'D', "outline-color", "stencil: next outline colour (orange, yellow, cyan, magenta)"},
+        {'Q', "reflectivity", "stencil: mirror reflectivity 0.25 / 0.5 / 0.75 / 1, Shift+Q backwards"},
     };
     return keys;
 }

@@ -8,7 +8,10 @@
 // pixel, scaled by u_light_weight), TEXTURED (base colour texture), LIGHT_SPOT (cone falloff), AOV_VISIBILITY (write visibility
 // as grey instead of colour), ALPHA_TEST (glTF MASK: alpha below u_alpha_cutoff discarded, before
 // any output, so the visibility AOV sees through the gaps too), ALPHA_BLEND (glTF BLEND: the alpha
-// written for the blend), DOUBLE_SIDED (a back face is lit with its normal turned to the viewer).
+// written for the blend), DOUBLE_SIDED (a back face is lit with its normal turned to the viewer),
+// REFLECTED (--effects mirror: the scene seen in the mirror through the reflected camera; what lies
+// behind the mirror's plane, u_clip_plane < 0, discarded: GLES2 has no user clip planes; the colour
+// premultiplied by u_reflectivity, its alpha, for the blend over the mirror's own colour).
 #include "precision.glsl"
 
 uniform vec4 u_base_color;
@@ -58,8 +61,15 @@ float goochTap(vec2 offset) { return texture2D(u_gooch, g_gooch_uv + offset * g_
 #if defined(LIGHT_DIRECT)
 uniform float u_light_weight;
 #endif
+#ifdef REFLECTED
+uniform vec4 u_clip_plane;  // world (n, d): kept where n.p + d >= 0, the camera's side of the mirror
+uniform float u_reflectivity;
+#endif
 
 void main() {
+#ifdef REFLECTED
+    if (dot(u_clip_plane, vec4(v_world, 1.0)) < 0.0) discard;
+#endif
 #if defined(ALPHA_TEST) || defined(ALPHA_BLEND)
     float alpha = u_base_color.a;
 #ifdef TEXTURED
@@ -123,6 +133,9 @@ void main() {
 #endif
 #ifdef ALPHA_BLEND
     gl_FragColor.a = alpha;
+#endif
+#ifdef REFLECTED
+    gl_FragColor = vec4(gl_FragColor.rgb * u_reflectivity, u_reflectivity);
 #endif
 #endif
 }

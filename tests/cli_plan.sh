@@ -112,6 +112,22 @@ assert json.load(open("shadowmap.json"))["stencil"] == [], "a shadow map alone u
   && echo "ok outline: the stencil uses" || { echo "FAIL outline: the stencil uses"; fail=1; }
 "$penumbra" plan --technique planar --effects outline --size 64x64 | grep -q "outline: the model's pixels (outline): bit 7 (mask 80)" \
   || { echo "FAIL outline: the text plan lists no stencil use"; fail=1; }
+# --effects mirror: its six passes after the technique's (and before the outline's), in its own bit.
+check mirror-outline --technique volumes --effects mirror,outline --reflectivity 0.3 --size 64x64
+python3 -c '
+import json
+p = json.load(open("mirror-outline.json"))
+names = [q["name"] for q in p["passes"]]
+assert names[-8:] == ["mirror-mark", "mirror-far", "mirror-depth", "mirror-sky", "mirror-reflect", "mirror-restore",
+                      "outline-mark", "outline-draw"], names
+uses = {u["name"]: u for u in p["stencil"]}
+m = uses["mirror: the mirror'"'"'s pixels"]
+for q in p["passes"]:
+    if q["module"] == "mirror":
+        st = q["state"]["stencil"]
+        assert st["enabled"] and st["write_mask"] == m["write_mask"] and st["read_mask"] == m["read_mask"], q["name"]
+assert any("without shadows" in n for n in p["notes"]), p["notes"]' \
+  && echo "ok mirror: its passes and bit" || { echo "FAIL mirror: its passes and bit"; fail=1; }
 # The text form names every pass too, and bad input is refused as render refuses it.
 "$penumbra" plan --technique planar --size 64x64 | grep -q "planar-stencil (planar)" || { echo "FAIL text"; fail=1; }
 if "$penumbra" plan --technique volume 2>/dev/null; then echo "FAIL: a bad technique was planned"; fail=1; fi

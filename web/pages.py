@@ -23,7 +23,8 @@ def choices_of(option: dict, control: dict) -> list:
     pool = option["choices"] or option["presets"]
     labels = {c["value"]: c["label"] for c in pool}
     values = control["values"] or [c["value"] for c in pool]
-    return [(v, labels.get(v, v)) for v in values]
+    # A list option's value ("outline,mirror"): its choices' labels joined.
+    return [(v, " + ".join(labels.get(part, part) for part in v.split(","))) for v in values]
 
 
 def control_html(option: dict, control: dict) -> str:

@@ -183,6 +183,7 @@ void Device::apply(const PipelineState& s) {
         if ((s.blend == Blend::Off) != (state_.blend == Blend::Off)) set_enabled(GL_BLEND, s.blend != Blend::Off);
         if (s.blend == Blend::Add) glBlendFunc(GL_ONE, GL_ONE);
         else if (s.blend == Blend::Alpha) glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        else if (s.blend == Blend::Over) glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     }
     const bool offset = s.offset_factor != 0.0f || s.offset_units != 0.0f;
     const bool offset_was = state_.offset_factor != 0.0f || state_.offset_units != 0.0f;

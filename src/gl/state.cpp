@@ -83,6 +83,7 @@ std::string to_string(const PipelineState& s) {
     out += "; cull " + to_string(s.cull);
     if (s.blend == Blend::Alpha) out += "; blend alpha";
     if (s.blend == Blend::Add) out += "; blend add";
+    if (s.blend == Blend::Over) out += "; blend over (premultiplied)";
     if (s.offset_factor != 0.0f || s.offset_units != 0.0f) {
         char offset[64];
         std::snprintf(offset, sizeof offset, "; depth offset %g, %g", static_cast<double>(s.offset_factor),

@@ -54,9 +54,10 @@ inline StencilState stencil_count(bool on_depth_fail) {
     return s;
 }
 
-// Blending of a colour over what the target holds: by the source's alpha, or added (ONE, ONE:
-// Heckbert-Herf's accumulation of light samples).
-enum class Blend { Off, Alpha, Add };
+// Blending of a colour over what the target holds: by the source's alpha, added (ONE, ONE:
+// Heckbert-Herf's accumulation of light samples), or a premultiplied colour over it (ONE,
+// ONE_MINUS_SRC_ALPHA: the mirror's reflection, rgb already scaled by the reflectivity in alpha).
+enum class Blend { Off, Alpha, Add, Over };
 
 struct PipelineState {
     bool depth_test = true;

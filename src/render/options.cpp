@@ -46,6 +46,7 @@ std::string_view to_string(GoochMethod m) { return m == GoochMethod::Planes ? "p
 std::string_view to_string(Effect e) {
     switch (e) {
         case Effect::Outline: return "outline";
+        case Effect::Mirror: return "mirror";
     }
     return "?";
 }
@@ -68,7 +69,8 @@ bool Settings::operator==(const Settings& o) const {
            pcss_search == o.pcss_search && pcss_taps == o.pcss_taps && area_samples == o.area_samples &&
            area_per_frame == o.area_per_frame && gooch_planes == o.gooch_planes && gooch_method == o.gooch_method &&
            blend_shadows == o.blend_shadows &&
-           effects == o.effects && outline_color == o.outline_color && outline_width == o.outline_width;
+           effects == o.effects && outline_color == o.outline_color && outline_width == o.outline_width &&
+           reflectivity == o.reflectivity;
 }
 
 bool Job::operator==(const Job& o) const {
@@ -481,8 +483,9 @@ std::vector<Option<Options>> make_table() {
     OptionInfo effects = make_option_info("effects", P::Technique, T::Choice,
                          "effects drawn after the camera pass with any technique, a comma list: outline = the shadow "
                          "casters but the ground outlined in --outline-color, --outline-width pixels wide (through the "
-                         "stencil); none = no effects", "Effects",
-                         {{"none", "none"}, {"outline", "outline the teapot"}});
+                         "stencil); mirror = the ground (the table top) a planar mirror, --reflectivity of its colour the "
+                         "scene reflected in it (drawn where the stencil marks the mirror); none = no effects", "Effects",
+                         {{"none", "none"}, {"outline", "outline the teapot"}, {"mirror", "the table top a mirror"}});
     effects.list = true;
     add(effects,
         [](Options& o, std::string_view v) {
@@ -533,6 +536,15 @@ std::vector<Option<Options>> make_table() {
     outline_width.step = 0.5;
     add(outline_width, [](Options& o, std::string_view v) { o.settings.outline_width = static_cast<float>(number_of(v)); },
         [](const Options& o) { return shortest_float(o.settings.outline_width); });
+
+    OptionInfo reflectivity = make_option_info("reflectivity", P::Technique, T::Number,
+                         "--effects mirror: the share of the mirror's colour that is the reflection (0 = the table as "
+                         "it is, 1 = a perfect mirror)", "Reflectivity");
+    reflectivity.min = 0.0;
+    reflectivity.max = 1.0;
+    reflectivity.step = 0.05;
+    add(reflectivity, [](Options& o, std::string_view v) { o.settings.reflectivity = static_cast<float>(number_of(v)); },
+        [](const Options& o) { return shortest_float(o.settings.reflectivity); });
 
     OptionInfo aov = make_option_info("aov", P::Technique, T::Choice, "what the image shows", "Show",
                    {{"color", "colour"}, {"visibility", "visibility (white lit, black shadowed)"},

@@ -17,7 +17,6 @@ namespace penumbra::render {
 
 namespace {
 
-constexpr glm::vec4 kBackground{0.12f, 0.13f, 0.16f, 1.0f};
 constexpr glm::vec4 kWhite{1.0f};
 constexpr float kAmbient = 0.25f;
 
@@ -686,6 +685,7 @@ void plan_area(Planning& p, bool stencil, bool effect_stencil) {
     }
     Pass cam = camera_pass(c, technique_module(Technique::None), effect_stencil, area_lookup);
     c.add_pass(std::move(cam));
+    for (const Module* e : p.effects) e->after_opaque(c);
     blend_pass(c, technique_module(Technique::None));
     for (const Module* e : p.effects) e->after_camera(c);
     // The samples' resources (the shadow map) hold the last sample's content, not the first's
@@ -742,7 +742,10 @@ FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& cap
     const bool own = p.module.own_view(c);
     if (!own) c.add_pass(camera_pass(c, p.module, stencil));
     p.module.after_camera(c);
-    if (!own) blend_pass(c, p.module);
+    if (!own) {
+        for (const Module* e : p.effects) e->after_opaque(c);
+        blend_pass(c, p.module);
+    }
     for (const Module* e : p.effects) e->after_camera(c);
     return std::move(p.plan);
 }

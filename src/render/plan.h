@@ -216,6 +216,9 @@ std::string allocate_stencil(std::vector<StencilUse>& uses, int available);
 
 // ---- the plan ----------------------------------------------------------------------------------
 
+// The camera's clear colour (--aov color): what is seen where nothing is, in a mirror too.
+inline constexpr glm::vec4 kBackground{0.12f, 0.13f, 0.16f, 1.0f};
+
 struct CameraView {
     glm::mat4 view{1.0f};
     glm::mat4 proj{1.0f};

@@ -64,14 +64,17 @@ std::string Renderer::check(const scene::Scene& scene, const Settings& s, const 
 }
 
 std::vector<float> Renderer::fingerprint(const scene::Scene& scene) {
-    // Counts and a few sample positions per mesh and image: cheap enough for every frame, and a
-    // different scene (even one allocated where the last one was) is all but sure to differ.
+    // Counts and a few sample positions and indices per mesh and image: cheap enough for every
+    // frame, and a different scene (even one allocated where the last one was, or the same points
+    // with the triangles' winding turned) is all but sure to differ.
     std::vector<float> f;
     for (const auto& m : scene.meshes) {
         f.push_back(static_cast<float>(m.positions.size()));
         f.push_back(static_cast<float>(m.indices.size()));
         for (size_t i : {size_t{0}, m.positions.size() / 2, m.positions.size() - 1})
             if (i < m.positions.size()) f.insert(f.end(), {m.positions[i].x, m.positions[i].y, m.positions[i].z});
+        for (size_t i : {size_t{1}, m.indices.size() / 2, m.indices.size() - 2})
+            if (i < m.indices.size()) f.push_back(static_cast<float>(m.indices[i]));
     }
     for (const auto& img : scene.images) f.insert(f.end(), {static_cast<float>(img.width), static_cast<float>(img.height)});
     return f;

@@ -50,10 +50,10 @@ inline constexpr LightFit kAllLightFits[] = {LightFit::Tight, LightFit::Scene};
 inline constexpr MapFaces kAllMapFaces[] = {MapFaces::Auto, MapFaces::Front, MapFaces::Back, MapFaces::Both};
 inline constexpr Technique kAllTechniques[] = {Technique::ShadowMap, Technique::Planar, Technique::Volumes,
                                               Technique::Gooch, Technique::None};
-// Effects drawn after the camera pass, beside the shadow technique (render/techniques/outline.cpp;
-// mirror and portal will join): each is a module of the plan that declares its stencil use.
-enum class Effect { Outline };
-inline constexpr Effect kAllEffects[] = {Effect::Outline};
+// Effects drawn after the camera pass, beside the shadow technique (render/techniques/outline.cpp,
+// mirror.cpp; a portal will join): each is a module of the plan that declares its stencil use.
+enum class Effect { Outline, Mirror };
+inline constexpr Effect kAllEffects[] = {Effect::Outline, Effect::Mirror};
 // --outline-width: pixels on the screen, whatever the object's depth.
 inline constexpr float kMinOutlineWidth = 0.5f, kMaxOutlineWidth = 32.0f;
 inline constexpr Aov kAllAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth, Aov::StencilCount};
@@ -106,6 +106,9 @@ struct Settings {
     std::vector<Effect> effects;
     glm::vec3 outline_color{1.0f, 140.0f / 255.0f, 0.0f};  // --outline-color RRGGBB: ff8c00
     float outline_width = 3.0f;                   // --outline-width: pixels
+    // --effects mirror: the share of the mirror's colour that is the reflection (1: a perfect
+    // mirror, 0: the table as it was).
+    float reflectivity = 0.5f;
 
     bool has(Effect e) const {
         for (Effect x : effects)

@@ -106,6 +106,7 @@ Variant lit_variant(const LitFeatures& f) {
     if (f.alpha_test) v.defines.emplace_back("ALPHA_TEST");
     if (f.alpha_blend) v.defines.emplace_back("ALPHA_BLEND");
     if (f.double_sided) v.defines.emplace_back("DOUBLE_SIDED");
+    if (f.reflected) v.defines.emplace_back("REFLECTED");
     return v;
 }
 
@@ -133,6 +134,8 @@ Variant light_depth_variant(shadow::Encoding e, bool perspective, const DepthPat
 }
 
 Variant probe_variant() { return {"light_depth.vert", "probe.frag", {}}; }
+
+Variant far_plane_variant() { return {"light_depth.vert", "probe.frag", {"AT_FAR_PLANE"}}; }
 
 Variant volume_variant() { return {"volume.vert", "probe.frag", {}}; }
 
@@ -246,6 +249,21 @@ std::vector<Variant> all_variants() {
     out.push_back(flat_variant({true, false}));
     out.push_back(flat_variant({true, true}));
     out.push_back(outline_variant());
+    out.push_back(far_plane_variant());
+    // The mirror's reflection (colour only): no shadows, or any shadow map of the highp path with
+    // either bias, plain or textured, point or spot light; MASK cut-outs with the texture.
+    for (LitFeatures base : shadowing) {
+        if (base.mediump || base.in_shadow || base.area_lookup || base.light_term != LightTerm::All) continue;
+        base.reflected = true;
+        for (int bits = 0; bits < 4; ++bits) {
+            base.textured = bits & 1;
+            base.spot = bits & 2;
+            base.alpha_test = false;
+            out.push_back(lit_variant(base));
+            base.alpha_test = true;
+            if (base.textured) out.push_back(lit_variant(base));
+        }
+    }
     // PCSS's tap counts, each once (the loops' bounds).
     for (int n : {1, 8, 32, 64}) {
         LitFeatures p;

@@ -52,6 +52,9 @@ struct LitFeatures {
     bool alpha_test = false;
     bool alpha_blend = false;
     bool double_sided = false;
+    // --effects mirror: drawn as seen in the mirror (the world position on the mirror's far side
+    // discarded, u_clip_plane; the colour premultiplied by u_reflectivity, which is its alpha).
+    bool reflected = false;
 };
 
 // How a pass that draws casters without their material (depth, stencil, flat) treats a caster's
@@ -95,6 +98,10 @@ std::vector<std::string> gooch_tap_defines(int taps);
 // --effects outline: the object pushed out along its screen-space normals by u_outline_width
 // pixels (0: the object itself), in one colour (u_value).
 Variant outline_variant();
+
+// --effects mirror: a full-screen triangle on the far plane (depth 1) in one colour (u_value): the
+// mirror's depth cleared through the stencil, and its background where nothing is reflected.
+Variant far_plane_variant();
 
 // Heckbert-Herf: one light sample's visibility (a texture) added as a count into one channel.
 Variant area_add_variant();

@@ -24,7 +24,7 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
               "pcss-search=16&pcss-taps=16&technique=shadowmap&aov=color");
     // The stencil exercise starts with the outline on.
     EXPECT_EQ(CourseApp(Exercise::Stencil).query(),
-              "light=on&jump=on&effects=outline&outline-width=3&outline-color=ff8c00&technique=shadowmap");
+              "light=on&jump=on&effects=outline&outline-width=3&outline-color=ff8c00&reflectivity=0.5&technique=shadowmap");
 }
 
 TEST(ExerciseOptions, EveryChangeReadsBack) {
@@ -221,9 +221,13 @@ TEST(ExerciseOptions, StencilOutline) {
     using penumbra::render::Technique;
     CourseApp a(Exercise::Stencil);
     ASSERT_EQ(a.settings().effects, std::vector<Effect>{Effect::Outline});
-    // The checkbox's two values, any width the slider's box takes, the colours listed, four techniques.
+    // The select's four values, any width the slider's box takes, the colours listed, four techniques.
     ASSERT_EQ(a.set_option("effects", "none"), "");
     EXPECT_TRUE(a.settings().effects.empty());
+    ASSERT_EQ(a.set_option("effects", "outline,mirror"), "");
+    EXPECT_EQ(a.settings().effects, (std::vector<Effect>{Effect::Outline, Effect::Mirror}));
+    ASSERT_EQ(a.set_option("reflectivity", "0.8"), "");
+    EXPECT_EQ(a.settings().reflectivity, 0.8f);
     ASSERT_EQ(a.set_option("effects", "outline"), "");
     ASSERT_EQ(a.set_option("outline-width", "7.5"), "");
     EXPECT_EQ(a.settings().outline_width, 7.5f);
@@ -241,7 +245,11 @@ TEST(ExerciseOptions, StencilOutline) {
     EXPECT_EQ(k.on_key('7', false).rfind("Stencil effects", 0), 0u);
     EXPECT_EQ(k.query(), CourseApp(Exercise::Stencil).query());
     EXPECT_EQ(k.on_key('Y', false), "effects = none");
+    EXPECT_EQ(k.on_key('Y', false), "effects = mirror");
+    EXPECT_EQ(k.on_key('Y', false), "effects = outline,mirror");
     EXPECT_EQ(k.on_key('Y', false), "effects = outline");
+    EXPECT_EQ(k.on_key('Q', false), "reflectivity = 0.75");
+    EXPECT_EQ(k.on_key('Q', true), "reflectivity = 0.5");
     EXPECT_EQ(k.on_key('W', false), "outline-width = 5");
     EXPECT_EQ(k.on_key('W', true), "outline-width = 3");
     EXPECT_EQ(k.on_key('D', false), "outline-color = ffff00");

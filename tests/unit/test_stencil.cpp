@@ -1,6 +1,9 @@
 // The stencil as data of the plan: each module declares its uses, the plan gives them bits that
 // never overlap (or refuses, naming the uses), and every pass's stencil state stays inside its
 // use's bits. The outline effect's passes. No GL context.
+#include <algorithm>
+
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -234,13 +237,84 @@ TEST_F(StencilPlan, ThePrintedPlanListsTheUses) {
     EXPECT_EQ(j["stencil"][0]["write_mask"], 127);
 }
 
+// The mirror's passes after the technique's and before the translucent pass and the outline, all
+// inside the mirror's bit; the reflected draws are every object but the table, through the
+// reflected camera, culling front faces, clipped by the table's plane turned towards the camera.
+TEST_F(StencilPlan, TheMirrorsPassesKeepToItsBitAndReflectEveryObjectButTheTable) {
+    s.technique = render::Technique::Planar;
+    s.effects = {render::Effect::Outline, render::Effect::Mirror};
+    ASSERT_EQ(check(), "");
+    const FramePlan p = make();
+    const StencilUse* mirror = p.stencil_use("mirror: the mirror's pixels");
+    const StencilUse* outline = p.stencil_use("outline: the model's pixels");
+    const StencilUse* planar = p.stencil_use("planar: shadowed ground");
+    ASSERT_TRUE(mirror && outline && planar);
+    EXPECT_EQ(mirror->mask() & (outline->mask() | planar->mask()), 0u);
+    std::vector<std::string> names;
+    for (const auto& pass : p.passes) names.push_back(pass.name);
+    const std::vector<std::string> want = {"mirror-mark", "mirror-far", "mirror-depth", "mirror-sky", "mirror-reflect",
+                                           "mirror-restore", "outline-mark", "outline-draw"};
+    ASSERT_GE(names.size(), want.size());
+    EXPECT_EQ(std::vector<std::string>(names.end() - static_cast<long>(want.size()), names.end()), want);
+    for (const auto& pass : p.passes) {
+        if (pass.module != "mirror") continue;
+        EXPECT_EQ(pass.state.stencil.read_mask, mirror->mask()) << pass.name;
+        EXPECT_EQ(pass.state.stencil.write_mask, mirror->mask()) << pass.name;
+        if (pass.name != "mirror-mark") {
+            EXPECT_EQ(pass.state.stencil.func, gl::Compare::Equal) << pass.name;
+        }
+    }
+    const auto find = [&](const char* name) -> const render::Pass& {
+        return *std::find_if(p.passes.begin(), p.passes.end(), [&](const render::Pass& x) { return x.name == name; });
+    };
+    const render::Pass& reflect = find("mirror-reflect");
+    EXPECT_EQ(reflect.state.blend, gl::Blend::Over);
+    EXPECT_EQ(reflect.state.depth_func, gl::Compare::Equal);
+    ASSERT_EQ(reflect.draws.size(), 1u);
+    EXPECT_EQ(reflect.draws[0].object, course.teapot);
+    EXPECT_EQ(reflect.draws[0].cull, gl::Cull::Front);
+    EXPECT_NE(reflect.draws[0].variant.key().find("REFLECTED"), std::string::npos);
+    // The camera above the table (y = 0, normal +y): the clip plane is the table's, the view-
+    // projection the camera's times the reflection y -> -y.
+    for (const auto& b : reflect.bindings)
+        for (const auto& u : b.uniforms) {
+            if (u.name == "u_clip_plane") {
+                EXPECT_EQ(std::get<glm::vec4>(u.value), glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
+            }
+            if (u.name == "u_view_proj") {
+                const glm::mat4 flip = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, -1.0f, 1.0f));
+                const glm::mat4 want_vp = p.camera.view_proj * flip;
+                const glm::mat4 got = std::get<glm::mat4>(u.value);
+                for (int i = 0; i < 4; ++i)
+                    for (int j = 0; j < 4; ++j) EXPECT_NEAR(got[i][j], want_vp[i][j], 1e-5f);
+            }
+        }
+    EXPECT_FALSE(find("mirror-depth").state.color_write);
+    EXPECT_EQ(find("mirror-far").state.depth_func, gl::Compare::Always);
+    EXPECT_TRUE(find("mirror-restore").state.depth_write);
+    // Volumes: the reflection unshadowed, with a note; a scene with no ground is refused.
+    s.technique = render::Technique::Volumes;
+    const FramePlan v = make();
+    EXPECT_TRUE(std::any_of(v.notes.begin(), v.notes.end(),
+                            [](const std::string& n) { return n.find("without shadows") != std::string::npos; }));
+    course.scene.ground_plane.reset();
+    EXPECT_NE(check().find("no ground plane"), std::string::npos);
+}
+
 TEST(EffectOptions, ParseCheckAndPrint) {
     render::Options o;
     EXPECT_EQ(render::parse_option(o, "effects", "outline"), "");
     EXPECT_TRUE(o.settings.has(render::Effect::Outline));
     EXPECT_EQ(render::parse_option(o, "effects", "none"), "");
     EXPECT_TRUE(o.settings.effects.empty());
-    EXPECT_NE(render::parse_option(o, "effects", "mirror"), "");
+    EXPECT_NE(render::parse_option(o, "effects", "portal"), "");
+    EXPECT_EQ(render::parse_option(o, "effects", "mirror,outline"), "");
+    ASSERT_EQ(o.settings.effects.size(), 2u);
+    EXPECT_EQ(o.settings.effects[0], render::Effect::Outline);  // kAllEffects' order
+    for (const char* bad : {"-0.1", "1.01", "shiny", "nan"})
+        EXPECT_NE(render::parse_option(o, "reflectivity", bad), "") << bad;
+    EXPECT_EQ(render::parse_option(o, "reflectivity", "0.75"), "");
+    EXPECT_FLOAT_EQ(o.settings.reflectivity, 0.75f);
     EXPECT_NE(render::parse_option(o, "effects", "outline,outline").find("twice"), std::string::npos);
     EXPECT_NE(render::parse_option(o, "effects", "outline,none"), "");
     EXPECT_NE(render::parse_option(o, "effects", ""), "");
@@ -261,6 +335,7 @@ TEST(EffectOptions, ParseCheckAndPrint) {
     for (const auto& [k, v] : render::to_pairs(o)) ASSERT_EQ(render::parse_option(back, k, v), "") << k << " " << v;
     EXPECT_EQ(back, o);
     const auto pairs = render::to_pairs(o);
+    EXPECT_NE(std::find(pairs.begin(), pairs.end(), std::pair<std::string, std::string>{"reflectivity", "0.75"}), pairs.end());
     EXPECT_NE(std::find(pairs.begin(), pairs.end(), std::pair<std::string, std::string>{"outline-color", "ff0080"}), pairs.end());
     EXPECT_NE(std::find(pairs.begin(), pairs.end(), std::pair<std::string, std::string>{"outline-width", "2.5"}), pairs.end());
 }

@@ -1,10 +1,12 @@
 // web.stencil: the stencil effects page (stencil.html). It opens with the outline on: pixels of the
-// outline's colour (ff8c00) around the teapot; unticking the box takes every one of them away and
-// ticking it brings them back; a wider slider value gives more of them; another colour from the
-// select paints the same pixels in it; planar shadows and shadow volumes (which keep their own
-// values in the stencil) give the same outline; the controls reach the URL and survive a reload;
-// the browser's frame matches `penumbra render --effects outline` (headless EGL) within
-// web.egl_match's tolerance, for the shadow map and for shadow volumes; no console or GL error.
+// outline's colour (ff8c00) around the teapot; choosing no effects takes every one of them away and
+// choosing the outline again brings them back; a wider slider value gives more of them; another
+// colour from the select paints the same pixels in it; planar shadows and shadow volumes (which
+// keep their own values in the stencil) give the same outline; the mirror changes the table's
+// pixels only (more of them with a higher reflectivity), and with the outline keeps its orange
+// pixels; the controls reach the URL and survive a reload; the browser's frame matches `penumbra
+// render --effects ...` (headless EGL) within web.egl_match's tolerance, for the shadow map and
+// shadow volumes with the outline and for the mirror; no console or GL error.
 // usage: stencil.mjs PENUMBRA_CLI OUT_DIR
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
@@ -49,9 +51,9 @@ await runTest('web.stencil', async ({ server, browser }) => {
   const { page, problems } = await openPage(browser, `${server.url}/stencil.html`);
   let s = await page.evaluate(() => window.penumbra.state());
   check(s.exercise === 'stencil' && s.status === 'running', `state: ${s.exercise}, '${s.status}'`);
-  check(s.query === 'light=on&jump=on&effects=outline&outline-width=3&outline-color=ff8c00&technique=shadowmap',
-        `defaults: ${s.query}`);
-  check(await page.isChecked('#effects'), 'the outline box is not ticked on opening');
+  check(s.query === 'light=on&jump=on&effects=outline&outline-width=3&outline-color=ff8c00&reflectivity=0.5&' +
+        'technique=shadowmap', `defaults: ${s.query}`);
+  check((await page.inputValue('#effects')) === 'outline', 'the effects select does not show the outline on opening');
   check((await page.inputValue('#outline-color')) === 'ff8c00', 'the colour select does not show ff8c00');
   check((await page.inputValue('#technique')) === 'shadowmap', 'the technique select does not show shadowmap');
 
@@ -66,17 +68,53 @@ await runTest('web.stencil', async ({ server, browser }) => {
 
   const on = countColour(await shoot('outline'), 'ff8c00');
   check(on > 0.002 * n && on < 0.05 * n, `outline on: ${on} orange pixels (${pct(on)}), want 0.2..5% of the frame`);
-  await page.uncheck('#effects');
+  await page.selectOption('#effects', 'none');
   const off = countColour(await shoot('none'), 'ff8c00');
-  check(off === 0, `outline unticked: still ${off} orange pixels`);
+  check(off === 0, `no effects: still ${off} orange pixels`);
   check(new URL(page.url()).searchParams.get('effects') === 'none', `URL ${page.url()}: effects is not none`);
   // Only the outline's pixels changed.
   const onOff = compare(shots.outline, shots.none, 16);
   check(onOff.differing >= on && onOff.differing <= on * 1.05 + 50,
         `the outline changed ${onOff.differing} pixels, ${on} of them orange`);
-  await page.check('#effects');
+  await page.selectOption('#effects', 'outline');
   const again = countColour(await shoot('again'), 'ff8c00');
-  check(again === on, `ticked again: ${again} orange pixels, first ${on}`);
+  check(again === on, `outline again: ${again} orange pixels, first ${on}`);
+
+  // The mirror: only the table's pixels change (the table's are those that differ from the
+  // background's colour in the frame without effects; the darkest of its shadow can come within 2
+  // levels of it, and the mirror moves those by a level: a change counts off the table when it is
+  // more than 4 levels), more with a higher reflectivity.
+  await page.selectOption('#effects', 'mirror');
+  const mirrorShot = await shoot('mirror');
+  const bg = [0, 1, 2].map((i) => shots.none.data[i]);  // the top left corner: the background
+  let onTable = 0, offTable = 0;
+  for (let i = 0; i < n; ++i) {
+    const d = [0, 1, 2].some((c) => Math.abs(mirrorShot.data[4 * i + c] - shots.none.data[4 * i + c]) > 4);
+    if (!d) continue;
+    const table = [0, 1, 2].some((c) => Math.abs(shots.none.data[4 * i + c] - bg[c]) > 2);
+    if (table) ++onTable; else ++offTable;
+  }
+  check(onTable > 0.05 * n && offTable === 0, `mirror: ${onTable} table pixels changed by more than 4 levels, ${offTable} elsewhere`);
+  await page.$eval('#reflectivity', (el) => {
+    el.value = '1';
+    el.dispatchEvent(new Event('input', { bubbles: true }));
+  });
+  s = await page.evaluate(() => window.penumbra.state());
+  check(s.options.reflectivity === '1', `the slider set reflectivity=${s.options.reflectivity}, not 1`);
+  const perfect = compare(await shoot('mirror-1'), shots.none, 16);
+  const half = compare(mirrorShot, shots.none, 16);
+  check(perfect.differing > half.differing, `reflectivity 1 changed ${perfect.differing} pixels by > 16 levels, ` +
+        `0.5 ${half.differing}`);
+  await page.selectOption('#effects', 'outline,mirror');
+  const both = countColour(await shoot('outline-mirror'), 'ff8c00');
+  check(Math.abs(both - on) <= 0.02 * on, `outline and mirror: ${both} orange pixels, the outline alone ${on}`);
+  console.log(`mirror: ${onTable} table pixels changed by > 4 levels (${pct(onTable)}), none elsewhere; > 16 levels: ` +
+              `${half.differing} at 0.5, ${perfect.differing} at 1; with the outline ${both} orange pixels`);
+  await page.selectOption('#effects', 'outline');
+  await page.$eval('#reflectivity', (el) => {
+    el.value = '0.5';
+    el.dispatchEvent(new Event('input', { bubbles: true }));
+  });
 
   await slide(page, 8);
   s = await page.evaluate(() => window.penumbra.state());
@@ -133,12 +171,16 @@ await runTest('web.stencil', async ({ server, browser }) => {
     ['shadowmap', { technique: 'shadowmap', 'outline-color': 'ff8c00', 'outline-width': '3' }, ['--technique', 'shadowmap']],
     ['volumes', { technique: 'volumes', 'outline-color': 'ff00ff', 'outline-width': '8' },
      ['--technique', 'volumes', '--outline-color', 'ff00ff', '--outline-width', '8']],
+    ['mirror', { technique: 'shadowmap', effects: 'outline,mirror', reflectivity: '0.75' },
+     ['--technique', 'shadowmap', '--effects', 'outline,mirror', '--reflectivity', '0.75', '--outline-color', 'ff00ff',
+      '--outline-width', '8']],
   ]) {
     await setOptions(page, query);
     const px = await frameAt(page, T);
     savePng(px, path.join(outDir, `${name}-match.browser.png`));
     const file = path.join(outDir, `${name}-match.egl.png`);
-    execFileSync(cli, ['render', '--effects', 'outline', '--time', String(T), '--size', `${px.width}x${px.height}`, ...args,
+    const effects = args.includes('--effects') ? [] : ['--effects', 'outline'];
+    execFileSync(cli, ['render', ...effects, '--time', String(T), '--size', `${px.width}x${px.height}`, ...args,
                        '--out', file]);
     const ref = PNG.sync.read(readFileSync(file));
     const d = compare(px, { width: ref.width, height: ref.height, data: ref.data }, LEVELS);

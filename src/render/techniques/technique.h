@@ -15,9 +15,11 @@
 // the module makes its passes' stencil state through its use (PlanContext::stencil(name).test(...)),
 // never with raw values and masks.
 //
-// Effects (--effects: outline; mirror and portal later) are modules too, beside the technique:
-// plan() asks each for check and stencil_uses, and calls its after_camera after the technique's,
-// so an effect draws over whatever the technique made of the image.
+// Effects (--effects: outline, mirror; a portal later) are modules too, beside the technique:
+// plan() asks each for check and stencil_uses, and calls its after_opaque after the technique's
+// after_camera (the opaque image is whole: the mirror draws its reflection there, before the
+// translucent objects' pass) and its after_camera after that pass, so an effect draws over whatever
+// the technique made of the image.
 //
 // Adding a technique: a file here with a Module subclass, its entry in techniques.cpp, its value in
 // render::Technique and the option table's choices (render/options.cpp). An effect: the same with
@@ -115,6 +117,8 @@ public:
     virtual bool keeps_out_of_camera(const PlanContext&, int /*object*/) const { return false; }
     virtual void shade(PlanContext&, Pass& /*camera*/, std::vector<CameraItem>& /*items*/) const {}
     virtual void after_camera(PlanContext&) const {}
+    // Effects: after the technique's passes, before the translucent (glTF BLEND) objects' pass.
+    virtual void after_opaque(PlanContext&) const {}
 };
 
 // The module of each technique (techniques.cpp) and of each effect.

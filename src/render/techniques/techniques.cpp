@@ -10,6 +10,7 @@ const Module& planar_module();      // planar.cpp
 const Module& volumes_module();     // volumes.cpp
 const Module& gooch_module();       // gooch.cpp
 const Module& outline_module();     // outline.cpp
+const Module& mirror_module();      // mirror.cpp
 
 namespace {
 
@@ -36,6 +37,7 @@ const Module& technique_module(Technique t) {
 const Module& effect_module(Effect e) {
     switch (e) {
         case Effect::Outline: return outline_module();
+        case Effect::Mirror: return mirror_module();
     }
     return outline_module();
 }
