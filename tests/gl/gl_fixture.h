@@ -4,6 +4,8 @@
 
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -47,6 +49,11 @@ inline scene::Object object(const char* name, int mesh, const glm::mat4& world) 
 }
 
 ImageDiff compare(const measure::Pixels& a, const measure::Pixels& b);
+
+// Every technique, and the settings that plan their passes differently (PCSS, r8 light samples
+// over the shadow map, volumes and planar, Gooch's planes and texture, z-fail volumes shown), each
+// with a name: what the effects' tests walk.
+std::vector<std::pair<std::string, render::Settings>> every_technique_case();
 
 // Compares `actual` with tests/golden/NAME.png. On a mismatch (or a missing golden) writes
 // NAME.actual.png and NAME.diff.png under build/test-output/golden and fails with their paths.

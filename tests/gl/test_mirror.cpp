@@ -39,6 +39,14 @@ void save(const std::string& name, const Image& img) {
     measure::write_png("test-output/mirror/" + name + ".png", measure::from_rgba(img, kW, kH, 4));
 }
 
+// Within 1.5 levels of the background (render::kBackground) in each channel.
+bool background_at(const Image& img, size_t px) {
+    const glm::vec4 bg = render::kBackground * 255.0f;
+    for (size_t c = 0; c < 3; ++c)
+        if (std::abs(img[px * 4 + c] - bg[static_cast<glm::length_t>(c)]) > 1.5f) return false;
+    return true;
+}
+
 int channel_diff(const Image& a, const Image& b, size_t px) {
     int d = 0;
     for (size_t c = 0; c < 3; ++c) d = std::max(d, std::abs(int(a[px * 4 + c]) - int(b[px * 4 + c])));
@@ -88,12 +96,7 @@ struct Course {
 // image, and the full image (no shadows) is the same as the table-only one (nothing in front).
 std::vector<bool> mirror_pixels(const Image& table_only, const Image& plain) {
     std::vector<bool> m(static_cast<size_t>(kW * kH));
-    const glm::vec4 bg = render::kBackground * 255.0f;
-    for (size_t p = 0; p < m.size(); ++p) {
-        const bool background = std::abs(table_only[p * 4] - bg.r) < 1.5f && std::abs(table_only[p * 4 + 1] - bg.g) < 1.5f &&
-                                std::abs(table_only[p * 4 + 2] - bg.b) < 1.5f;
-        m[p] = !background && channel_diff(table_only, plain, p) == 0;
-    }
+    for (size_t p = 0; p < m.size(); ++p) m[p] = !background_at(table_only, p) && channel_diff(table_only, plain, p) == 0;
     return m;
 }
 
@@ -247,15 +250,11 @@ TEST_F(MirrorGl, WhatLiesBelowTheMirrorIsCutAway) {
     s.reflectivity = 1.0f;
     const Image floor = render(*renderer, floor_only, none);
     const Image with = render(*renderer, sc, s);
-    const glm::vec4 bg = render::kBackground * 255.0f;
     int in_mirror = 0, not_background = 0;
     for (size_t p = 0; p < static_cast<size_t>(kW * kH); ++p) {
-        const bool floor_there = std::abs(floor[p * 4] - bg.r) > 1.5f || std::abs(floor[p * 4 + 1] - bg.g) > 1.5f ||
-                                 std::abs(floor[p * 4 + 2] - bg.b) > 1.5f;
-        if (!floor_there) continue;
+        if (background_at(floor, p)) continue;
         ++in_mirror;
-        not_background += std::abs(with[p * 4] - bg.r) > 1.5f || std::abs(with[p * 4 + 1] - bg.g) > 1.5f ||
-                          std::abs(with[p * 4 + 2] - bg.b) > 1.5f;
+        not_background += !background_at(with, p);
     }
     EXPECT_GT(in_mirror, kW * kH / 4);
     EXPECT_EQ(not_background, 0) << "the ball below the floor is seen in the mirror";
@@ -264,33 +263,7 @@ TEST_F(MirrorGl, WhatLiesBelowTheMirrorIsCutAway) {
 
 TEST_F(MirrorGl, WithEveryTechniqueOnlyTheTableChanges) {
     Course c(0.6);
-    std::vector<std::pair<std::string, render::Settings>> cases;
-    for (render::Technique t : render::kAllTechniques) {
-        render::Settings s;
-        s.technique = t;
-        cases.emplace_back(std::string(render::to_string(t)), s);
-    }
-    {
-        render::Settings s;
-        s.filter = shadow::Filter::PCSS;
-        s.light_radius = 0.2f;
-        cases.emplace_back("shadowmap pcss", s);
-        s.filter = shadow::Filter::PCF4x4;
-        s.encoding = shadow::Encoding::R8;
-        s.area_samples = 4;
-        cases.emplace_back("shadowmap r8 area-samples 4", s);
-        s.technique = render::Technique::Volumes;
-        cases.emplace_back("volumes area-samples 4", s);
-        s.area_samples = 1;
-        s.technique = render::Technique::Gooch;
-        s.gooch_method = render::GoochMethod::Texture;
-        cases.emplace_back("gooch texture", s);
-        s = render::Settings{};
-        s.technique = render::Technique::Volumes;
-        s.volume_method = render::VolumeMethod::ZFail;
-        s.show_volumes = true;
-        cases.emplace_back("volumes zfail shown", s);
-    }
+    const auto cases = test::every_technique_case();
     render::Settings none;
     none.technique = render::Technique::None;
     const Image table = render(*renderer, c.table_only, none);
@@ -311,10 +284,7 @@ TEST_F(MirrorGl, WithEveryTechniqueOnlyTheTableChanges) {
             for (size_t p = 0; p < static_cast<size_t>(kW * kH); ++p) {
                 if (channel_diff(with, without, p) == 0) continue;
                 ++changed;
-                const glm::vec4 bg = render::kBackground * 255.0f;
-                const bool table_there = std::abs(table[p * 4] - bg.r) > 1.5f || std::abs(table[p * 4 + 1] - bg.g) > 1.5f ||
-                                         std::abs(table[p * 4 + 2] - bg.b) > 1.5f;
-                elsewhere += !table_there;
+                elsewhere += background_at(table, p);
             }
             EXPECT_GT(changed, 500);
             EXPECT_EQ(elsewhere, 0) << "pixels changed where the table is not";

@@ -133,36 +133,7 @@ TEST_F(OutlineGl, NeverCoversTheObjectsOwnPixels) {
 TEST_F(OutlineGl, WithEveryTechniqueTheImageChangesOnlyByTheOutline) {
     auto course = scene::make_course_scene(8);
     scene::animate_course(course, 0.6, 0.6);
-    std::vector<std::pair<std::string, render::Settings>> cases;
-    for (render::Technique t : render::kAllTechniques) {
-        render::Settings s;
-        s.technique = t;
-        cases.emplace_back(std::string(render::to_string(t)), s);
-    }
-    {
-        render::Settings s;
-        s.filter = shadow::Filter::PCSS;
-        s.light_radius = 0.2f;
-        cases.emplace_back("shadowmap pcss", s);
-        s.filter = shadow::Filter::PCF4x4;
-        s.area_samples = 4;
-        cases.emplace_back("shadowmap area-samples 4", s);
-        s.technique = render::Technique::Volumes;
-        cases.emplace_back("volumes area-samples 4", s);
-        s.technique = render::Technique::Planar;
-        cases.emplace_back("planar area-samples 4", s);
-        s.area_samples = 1;
-        s.technique = render::Technique::Gooch;
-        s.gooch_planes = 16;
-        cases.emplace_back("gooch planes 16", s);
-        s.gooch_method = render::GoochMethod::Texture;
-        cases.emplace_back("gooch texture", s);
-        s = render::Settings{};
-        s.technique = render::Technique::Volumes;
-        s.volume_method = render::VolumeMethod::ZFail;
-        s.show_volumes = true;
-        cases.emplace_back("volumes zfail shown", s);
-    }
+    const auto cases = test::every_technique_case();
     const int w = 128, h = 96;
     for (auto& [name, plain] : cases) {
         SCOPED_TRACE(name);
