@@ -46,6 +46,8 @@ struct Output {
     static Output to_window(int width, int height);
     static Output window_region(int x, int y, int width, int height);  // clipped
     static Output texture(std::string name, int width, int height, gl::Sampling sampling, gl::Wrap wrap);
+    // "offscreen 512x512", "window 800x600 at (0, 0)", "texture w09p2b 1024x1024"
+    std::string describe() const;
 };
 
 // An object drawn with another mesh or material of the scene (-1: its own).
