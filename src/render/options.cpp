@@ -129,6 +129,18 @@ std::string number_text(double v) {
     return buf;
 }
 
+// The items of a comma list ("outline,mirror"), empty ones included ("a,,b" has three).
+std::vector<std::string_view> list_items(std::string_view value) {
+    std::vector<std::string_view> items;
+    for (size_t start = 0; start <= value.size();) {
+        size_t end = value.find(',', start);
+        if (end == std::string_view::npos) end = value.size();
+        items.push_back(value.substr(start, end - start));
+        start = end + 1;
+    }
+    return items;
+}
+
 std::string word_list(const std::vector<Choice>& choices, const char* quote = "") {
     std::string s;
     for (const Choice& c : choices) s += (s.empty() ? "" : ", ") + std::string(quote) + std::string(c.value) + quote;
@@ -183,20 +195,15 @@ std::string check_value(const OptionInfo& o, std::string_view value) {
             if (o.list && !o.choices.empty() && value != o.choices.front().value) {
                 // A comma list: each item one of the choices after the first, and each once.
                 std::vector<std::string_view> seen;
-                size_t start = 0;
-                while (start <= value.size()) {
-                    size_t end = value.find(',', start);
-                    if (end == std::string_view::npos) end = value.size();
-                    const std::string_view item = value.substr(start, end - start);
+                for (std::string_view item : list_items(value)) {
                     bool known = false;
                     for (size_t i = 1; i < o.choices.size(); ++i) known = known || o.choices[i].value == item;
                     if (!known)
                         return opt + "unknown value '" + scene::printable(item) + "' in " + quoted + " (" +
                                accepted_values(o) + ")";
-                    for (std::string_view s : seen)
-                        if (s == item) return opt + "'" + scene::printable(item) + "' twice in " + quoted;
+                    if (std::find(seen.begin(), seen.end(), item) != seen.end())
+                        return opt + "'" + scene::printable(item) + "' twice in " + quoted;
                     seen.push_back(item);
-                    start = end + 1;
                 }
                 return {};
             }
@@ -490,13 +497,9 @@ std::vector<Option<Options>> make_table() {
     add(effects,
         [](Options& o, std::string_view v) {
             o.settings.effects.clear();
+            const std::vector<std::string_view> items = list_items(v);
             for (Effect e : kAllEffects)  // kAllEffects' order, whatever the list's
-                for (size_t start = 0; start <= v.size();) {
-                    size_t end = v.find(',', start);
-                    if (end == std::string_view::npos) end = v.size();
-                    if (v.substr(start, end - start) == to_string(e)) o.settings.effects.push_back(e);
-                    start = end + 1;
-                }
+                if (std::find(items.begin(), items.end(), to_string(e)) != items.end()) o.settings.effects.push_back(e);
         },
         [](const Options& o) {
             std::string s;
