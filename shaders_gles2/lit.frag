@@ -11,7 +11,9 @@
 // written for the blend), DOUBLE_SIDED (a back face is lit with its normal turned to the viewer),
 // REFLECTED (--effects mirror: the scene seen in the mirror through the reflected camera; what lies
 // behind the mirror's plane, u_clip_plane < 0, discarded: GLES2 has no user clip planes; the colour
-// premultiplied by u_reflectivity, its alpha, for the blend over the mirror's own colour).
+// premultiplied by u_reflectivity, its alpha, for the blend over the mirror's own colour),
+// CLIPPED (--effects portal: the other scene seen through the opening; what lies on the camera's
+// side of the opening's plane, u_clip_plane < 0, discarded).
 #include "precision.glsl"
 
 uniform vec4 u_base_color;
@@ -61,13 +63,15 @@ float goochTap(vec2 offset) { return texture2D(u_gooch, g_gooch_uv + offset * g_
 #if defined(LIGHT_DIRECT)
 uniform float u_light_weight;
 #endif
+#if defined(REFLECTED) || defined(CLIPPED)
+uniform vec4 u_clip_plane;  // world (n, d): kept where n.p + d >= 0 (the mirror's camera side, the portal's far side)
+#endif
 #ifdef REFLECTED
-uniform vec4 u_clip_plane;  // world (n, d): kept where n.p + d >= 0, the camera's side of the mirror
 uniform float u_reflectivity;
 #endif
 
 void main() {
-#ifdef REFLECTED
+#if defined(REFLECTED) || defined(CLIPPED)
     if (dot(u_clip_plane, vec4(v_world, 1.0)) < 0.0) discard;
 #endif
 #if defined(ALPHA_TEST) || defined(ALPHA_BLEND)

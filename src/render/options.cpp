@@ -47,6 +47,7 @@ std::string_view to_string(Effect e) {
     switch (e) {
         case Effect::Outline: return "outline";
         case Effect::Mirror: return "mirror";
+        case Effect::Portal: return "portal";
     }
     return "?";
 }
@@ -491,8 +492,11 @@ std::vector<Option<Options>> make_table() {
                          "effects drawn after the camera pass with any technique, a comma list: outline = the shadow "
                          "casters but the ground outlined in --outline-color, --outline-width pixels wide (through the "
                          "stencil); mirror = the ground (the table top) a planar mirror, --reflectivity of its colour the "
-                         "scene reflected in it (drawn where the stencil marks the mirror); none = no effects", "Effects",
-                         {{"none", "none"}, {"outline", "outline the teapot"}, {"mirror", "the table top a mirror"}});
+                         "scene reflected in it (drawn where the stencil marks the mirror); portal = a frame standing on "
+                         "the table through which another scene is seen, with its own light and shadows (drawn where "
+                         "the stencil marks the opening; the course scene's); none = no effects", "Effects",
+                         {{"none", "none"}, {"outline", "outline the teapot"}, {"mirror", "the table top a mirror"},
+                          {"portal", "a portal into another scene"}});
     effects.list = true;
     add(effects,
         [](Options& o, std::string_view v) {

@@ -87,6 +87,7 @@ Draw PlanContext::mesh_draw(int object) const {
     d.label = o.name;
     d.mesh = o.mesh;
     d.world = o.world;
+    d.beyond = beyond;
     return d;
 }
 
@@ -200,7 +201,7 @@ struct Planning {
 
     Planning(const scene::Scene& scene, const Settings& s, const gl::Caps& caps, const FrameInputs& in,
              const FramePlan* previous)
-        : ctx{scene, s, caps, in, previous, plan, in.light ? *in.light : scene.light, {}, {}, {}, {}, {}},
+        : ctx{scene, s, caps, in, previous, plan, in.light ? *in.light : scene.light, {}, {}, {}, {}, {}, {}, false},
           module(technique_module(s.technique)) {
         plan.settings = s;
         plan.output = in.output.describe();
@@ -381,7 +382,7 @@ void area_lookup(PlanContext& c, Pass& cam, std::vector<CameraItem>& items) {
                              {"u_area_scale", 255.0f / static_cast<float>(std::max(a.done, 1))}},
                             {{kAreaUnit, r}}});
     for (CameraItem& it : items) {
-        if (!c.scene.objects[static_cast<size_t>(it.object)].receives_shadow) continue;
+        if (!c.receives(it.object)) continue;
         it.features.area_lookup = true;
         it.bindings |= bit;
     }
@@ -432,7 +433,7 @@ void plan_area(Planning& p, bool stencil, bool effect_stencil) {
             // No previous plan: a sample's shadow map is never taken for another's.
             PlanContext sc{c.scene, hard, c.caps, c.inputs, nullptr, p.plan,
                            shadow::area_light_sample(c.light, k, axis), c.drawable, c.casters, c.depth_path,
-                           {one_r, out.width, out.height, 0, 0, false}, {}};
+                           {one_r, out.width, out.height, 0, 0, false}, {}, {}, false};
             p.module.before_camera(sc);
             Pass cam = camera_pass(sc, p.module, stencil);
             cam.name = "area-camera";

@@ -165,6 +165,8 @@ struct Draw {
     // Instead of a mesh: triangles of homogeneous world points made for this frame (a shadow
     // volume), drawn with the pass's view_proj (ObjectUniforms::Mvp, world = identity).
     std::shared_ptr<const std::vector<glm::vec4>> triangles;
+    // mesh, material and image index the scene's portal's other scene (scene::Portal::beyond).
+    bool beyond = false;
 };
 
 struct Pass {

@@ -77,17 +77,26 @@ std::vector<float> Renderer::fingerprint(const scene::Scene& scene) {
             if (i < m.indices.size()) f.push_back(static_cast<float>(m.indices[i]));
     }
     for (const auto& img : scene.images) f.insert(f.end(), {static_cast<float>(img.width), static_cast<float>(img.height)});
+    if (scene.portal && scene.portal->beyond) {
+        const std::vector<float> beyond = fingerprint(*scene.portal->beyond);
+        f.push_back(-1.0f);  // where the portal's scene begins
+        f.insert(f.end(), beyond.begin(), beyond.end());
+    }
     return f;
 }
 
 void Renderer::load(const scene::Scene& scene) {
     loaded_ = fingerprint(scene);
-    meshes_.clear();
-    images_.clear();
     previous_.reset();
+    scene_ = upload(scene);
+    beyond_ = scene.portal && scene.portal->beyond ? upload(*scene.portal->beyond) : Uploaded{};
+}
+
+Renderer::Uploaded Renderer::upload(const scene::Scene& scene) {
+    Uploaded u;
     for (const auto& m : scene.meshes)
-        meshes_.push_back(device_.upload_mesh(m.positions, m.normals, m.uvs, m.indices, caps_.element_index_uint,
-                                              m.name.c_str()));
+        u.meshes.push_back(device_.upload_mesh(m.positions, m.normals, m.uvs, m.indices, caps_.element_index_uint,
+                                               m.name.c_str()));
     for (const auto& img : scene.images) {
         gl::TextureDesc d;
         d.width = img.width;
@@ -98,8 +107,9 @@ void Renderer::load(const scene::Scene& scene) {
         d.sampling = pot ? gl::Sampling::LinearMipmap : gl::Sampling::Linear;
         d.wrap = pot ? gl::Wrap::Repeat : gl::Wrap::Clamp;
         d.label = "scene image";
-        images_.emplace_back(d);
+        u.images.emplace_back(d);
     }
+    return u;
 }
 
 FramePlan Renderer::plan(const scene::Scene& scene, const Settings& s, const FrameInputs& in) const {
@@ -152,6 +162,11 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
             st.cull = cull = d.cull.value_or(pass.state.cull);
             device_.apply(st);
         }
+        // The draw's mesh, material and image: the scene's, or its portal's other scene's.
+        if (d.beyond && !(scene.portal && scene.portal->beyond))
+            throw gl::Error("the " + pass.name + " pass: a draw from the portal's scene, but this scene has no portal");
+        const scene::Scene& from = d.beyond ? *scene.portal->beyond : scene;
+        const Uploaded& up = d.beyond ? beyond_ : scene_;
         const gl::Program& p = shaders_.get(d.variant);
         if (&p != program || d.bindings != bound) {
             device_.use(p);
@@ -164,11 +179,11 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
         if (pass.object_uniforms == ObjectUniforms::Mvp) {
             p.set("u_mvp", pass.view_proj * d.world);
             if (d.alpha) {  // a cut-out caster: its alpha, as the camera pass reads it
-                const scene::Material& m = material_of(scene, d.material);
+                const scene::Material& m = material_of(from, d.material);
                 p.set("u_base_color", m.base_color);
                 p.set("u_alpha_cutoff", m.alpha_cutoff);
                 if (d.image >= 0) {
-                    device_.bind_texture(kBaseTextureUnit, images_[static_cast<size_t>(d.image)]);
+                    device_.bind_texture(kBaseTextureUnit, up.images[static_cast<size_t>(d.image)]);
                     p.set("u_base_texture", kBaseTextureUnit);
                 }
             }
@@ -176,7 +191,7 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
             p.set("u_model", d.world);
             p.set("u_normal_matrix", glm::inverseTranspose(glm::mat3(d.world)));
         } else if (pass.object_uniforms == ObjectUniforms::Lit) {
-            const scene::Material& m = material_of(scene, d.material);
+            const scene::Material& m = material_of(from, d.material);
             p.set("u_model", d.world);
             p.set("u_normal_matrix", glm::inverseTranspose(glm::mat3(d.world)));
             p.set("u_base_color", m.base_color);
@@ -188,13 +203,13 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
                 device_.bind_texture(kBaseTextureUnit,
                                      d.image_resource >= 0
                                          ? pool_.texture(plan.resources[static_cast<size_t>(d.image_resource)].desc.name)
-                                         : images_[static_cast<size_t>(d.image)]);
+                                         : up.images[static_cast<size_t>(d.image)]);
                 p.set("u_base_texture", kBaseTextureUnit);
             }
         }
         if (d.fullscreen) device_.draw_fullscreen();
         else if (d.triangles) device_.draw_points(*d.triangles);
-        else device_.draw(meshes_[static_cast<size_t>(d.mesh)]);
+        else device_.draw(up.meshes[static_cast<size_t>(d.mesh)]);
     }
     gl::check_errors(("the " + pass.name + " pass").c_str());
 }

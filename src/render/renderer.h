@@ -35,7 +35,7 @@ public:
     // naming the problem (render::check).
     std::string check(const scene::Scene& scene, const Settings& s, const FrameInputs& in = {}) const;
 
-    // Uploads the scene's meshes and images. render() does it when the scene's meshes are not the
+    // Uploads the scene's meshes and images (and its portal's other scene's). render() does it when the scene's meshes are not the
     // ones uploaded; the animated parts (object matrices, the light) are read at every frame.
     void load(const scene::Scene& scene);
 
@@ -73,8 +73,13 @@ private:
     gl::Caps caps_;
     gl::Device device_;
     ShaderLibrary shaders_;
-    std::vector<gl::MeshBuffers> meshes_;
-    std::vector<gl::Texture> images_;
+    // The scene's meshes and images, and its portal's other scene's (Draw::beyond).
+    struct Uploaded {
+        std::vector<gl::MeshBuffers> meshes;
+        std::vector<gl::Texture> images;
+    };
+    Uploaded upload(const scene::Scene& scene);
+    Uploaded scene_, beyond_;
     ResourcePool pool_;
     std::optional<FramePlan> previous_;
     std::vector<float> loaded_;  // fingerprint of the scene whose meshes and images are uploaded

@@ -51,9 +51,9 @@ inline constexpr MapFaces kAllMapFaces[] = {MapFaces::Auto, MapFaces::Front, Map
 inline constexpr Technique kAllTechniques[] = {Technique::ShadowMap, Technique::Planar, Technique::Volumes,
                                               Technique::Gooch, Technique::None};
 // Effects drawn after the camera pass, beside the shadow technique (render/techniques/outline.cpp,
-// mirror.cpp; a portal will join): each is a module of the plan that declares its stencil use.
-enum class Effect { Outline, Mirror };
-inline constexpr Effect kAllEffects[] = {Effect::Outline, Effect::Mirror};
+// mirror.cpp, portal.cpp): each is a module of the plan that declares its stencil use.
+enum class Effect { Outline, Mirror, Portal };
+inline constexpr Effect kAllEffects[] = {Effect::Outline, Effect::Mirror, Effect::Portal};
 // --outline-width: pixels on the screen, whatever the object's depth.
 inline constexpr float kMinOutlineWidth = 0.5f, kMaxOutlineWidth = 32.0f;
 inline constexpr Aov kAllAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth, Aov::StencilCount};

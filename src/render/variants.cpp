@@ -107,6 +107,7 @@ Variant lit_variant(const LitFeatures& f) {
     if (f.alpha_blend) v.defines.emplace_back("ALPHA_BLEND");
     if (f.double_sided) v.defines.emplace_back("DOUBLE_SIDED");
     if (f.reflected) v.defines.emplace_back("REFLECTED");
+    if (f.clipped) v.defines.emplace_back("CLIPPED");
     return v;
 }
 
@@ -262,6 +263,16 @@ std::vector<Variant> all_variants() {
             out.push_back(lit_variant(base));
             base.alpha_test = true;
             if (base.textured) out.push_back(lit_variant(base));
+        }
+    }
+    // The portal's other scene (colour only), shadow-mapped with any encoding, filter and bias of
+    // either precision path, plain or textured (its frame is a camera pass's draw).
+    for (LitFeatures base : shadowing) {
+        if (base.in_shadow || base.area_lookup || base.light_term != LightTerm::All) continue;
+        base.clipped = true;
+        for (bool textured : {false, true}) {
+            base.textured = textured;
+            out.push_back(lit_variant(base));
         }
     }
     // PCSS's tap counts, each once (the loops' bounds).

@@ -55,6 +55,9 @@ struct LitFeatures {
     // --effects mirror: drawn as seen in the mirror (the world position on the mirror's far side
     // discarded, u_clip_plane; the colour premultiplied by u_reflectivity, which is its alpha).
     bool reflected = false;
+    // --effects portal: the other scene seen through the opening (the world position on the
+    // camera's side of the opening's plane discarded, u_clip_plane).
+    bool clipped = false;
 };
 
 // How a pass that draws casters without their material (depth, stencil, flat) treats a caster's

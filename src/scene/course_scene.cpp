@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/marble.h"
+#include "scene/portal_scene.h"
 #include "scene/primitives.h"
 #include "scene/teapot.h"
 
@@ -78,6 +79,7 @@ CourseScene make_course_scene(int teapot_level) {
     s.camera.yfov = glm::radians(45.0f);
     s.camera.znear = 0.1f;
     s.camera.zfar = 30.0f;
+    s.portal = make_course_portal();  // drawn only under --effects portal
 
     animate_course(c, 0.0, 0.0);
     return c;

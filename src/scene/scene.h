@@ -120,6 +120,23 @@ struct Bounds {
     }
 };
 
+struct Scene;
+
+// A portal (--effects portal, render/techniques/portal.cpp): a rectangular opening standing in
+// the scene through which another scene is seen, with its own objects, light and shadows, in the
+// camera's view (the other scene lies where the opening looks, clipped at the opening's plane).
+// The opening and its frame are the effect's, not the scene's objects: the truth, the shadow
+// techniques and the bench do not see them. Their meshes and material are kept with the other
+// scene's (`beyond`), so this scene's own lists are what they are without the portal.
+struct Portal {
+    int opening_mesh = -1;    // in beyond's meshes: the opening, facing +z in its local z = 0 plane
+    int frame_mesh = -1;      // in beyond's meshes: the frame around it, drawn in this scene's light
+    int frame_material = -1;  // in beyond's materials
+    glm::mat4 world{1.0f};    // places the opening and its frame in this scene
+    glm::vec3 sky{0.0f};      // the other scene's background
+    std::shared_ptr<const Scene> beyond;  // the scene seen through the opening
+};
+
 struct Scene {
     std::vector<Mesh> meshes;
     std::vector<Material> materials;
@@ -131,6 +148,8 @@ struct Scene {
     // and the object that lies in it; absent when the scene has no such ground.
     std::optional<glm::vec4> ground_plane;
     int ground_object = -1;
+    // An opening into another scene, drawn only under --effects portal (the course scene has one).
+    std::optional<Portal> portal;
 };
 
 // Bilinear filtering of an image's alpha at texture coordinate uv, as GL samples a texture at its

@@ -114,6 +114,7 @@ glm::vec3 tap_spread(const PlanContext& c, const shadow::LightFrustum& f, float 
 }
 
 bool texture_receiver(const PlanContext& c, int object) {
+    if (object < 0) return false;  // an effect's draw (the portal's frame): lit, never a plane's receiver
     const scene::Object& o = c.scene.objects[static_cast<size_t>(object)];
     return o.receives_shadow && (!o.casts_shadow || object == c.scene.ground_object);
 }

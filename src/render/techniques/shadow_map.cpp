@@ -114,7 +114,7 @@ public:
         for (int k : fit.casters) casters.push_back(c.casters[static_cast<size_t>(k)]);
 
         ResourceDesc d;
-        d.name = kMap;
+        d.name = c.named(kMap);
         d.width = d.height = size;
         // Packed depths must never be interpolated: blending two packed values is meaningless.
         d.sampling = gl::Sampling::Nearest;
@@ -135,7 +135,7 @@ public:
         const int r = c.add_resource(d, key.str(), "the depth seen from the light");
 
         Pass p;
-        p.name = kMap;
+        p.name = c.named(kMap);
         p.module = "shadowmap";
         p.target = {r, size, size, 0, 0, false};
         // White is the farthest depth in every encoding: nothing drawn there, nothing shadows.
@@ -168,7 +168,7 @@ public:
     }
 
     bool own_view(PlanContext& c) const override {
-        const int r = c.plan.resource_index(kMap);
+        const int r = c.plan.resource_index(c.named(kMap));
         if (c.settings.aov != Aov::LightDepth || r < 0) return false;
         const shadow::LightFrustum& f = *c.plan.light_frustum;
         Pass p;
@@ -194,7 +194,7 @@ public:
     }
 
     void shade(PlanContext& c, Pass& cam, std::vector<CameraItem>& items) const override {
-        const int r = c.plan.resource_index(kMap);
+        const int r = c.plan.resource_index(c.named(kMap));
         if (r < 0) {
             cam.detail += ", no shadows";
             return;
@@ -230,7 +230,7 @@ public:
         const std::uint32_t bit = 1u << cam.bindings.size();
         cam.bindings.push_back(std::move(b));
         for (CameraItem& it : items) {
-            if (!c.scene.objects[static_cast<size_t>(it.object)].receives_shadow) continue;
+            if (!c.receives(it.object)) continue;
             LitFeatures& lf = it.features;
             lf.shadow_map = true;
             lf.encoding = s.encoding;

@@ -15,7 +15,7 @@
 // the module makes its passes' stencil state through its use (PlanContext::stencil(name).test(...)),
 // never with raw values and masks.
 //
-// Effects (--effects: outline, mirror; a portal later) are modules too, beside the technique:
+// Effects (--effects: outline, mirror, portal) are modules too, beside the technique:
 // plan() asks each for check and stencil_uses, and calls its after_opaque after the technique's
 // after_camera (the opaque image is whole: the mirror draws its reflection there, before the
 // translucent objects' pass) and its after_camera after that pass, so an effect draws over whatever
@@ -79,12 +79,22 @@ struct PlanContext {
     DepthPath depth_path;         // how depth is packed on this context
     TargetRef camera_target;      // where the camera pass draws
     std::vector<int> translucent; // objects with a mesh and a BLEND material: the blend pass's, after all else
+    // A nested scene's context (the portal's other scene): its resources' and passes' names start
+    // with `prefix`, and its draws' meshes are the portal's (Draw::beyond).
+    std::string prefix;
+    bool beyond = false;
 
     // Declares a resource (once per name) and returns its index. With a non-empty `content` key
     // equal to the previous plan's for the same description, it is marked reused.
     int add_resource(ResourceDesc desc, std::string content, std::string purpose);
     // Appends a pass; a pass into a reused resource is marked skipped.
     Pass& add_pass(Pass pass);
+    // A resource's or pass's name in this context: prefix + name.
+    std::string named(std::string_view name) const { return prefix + std::string(name); }
+    // Whether `object` receives shadows; -1 (a draw an effect adds, not a scene object) does.
+    bool receives(int object) const {
+        return object < 0 || scene.objects[static_cast<size_t>(object)].receives_shadow;
+    }
     // A draw of `object`'s mesh where it stands (no material: for depth-only and stencil passes).
     Draw mesh_draw(int object) const;
     // The same draw of a caster, alpha-tested where its material is MASK (or BLEND casting under

@@ -11,6 +11,7 @@ const Module& volumes_module();     // volumes.cpp
 const Module& gooch_module();       // gooch.cpp
 const Module& outline_module();     // outline.cpp
 const Module& mirror_module();      // mirror.cpp
+const Module& portal_module();      // portal.cpp
 
 namespace {
 
@@ -38,6 +39,7 @@ const Module& effect_module(Effect e) {
     switch (e) {
         case Effect::Outline: return outline_module();
         case Effect::Mirror: return mirror_module();
+        case Effect::Portal: return portal_module();
     }
     return outline_module();
 }
