@@ -63,8 +63,9 @@ expect_error "time inf"          "--time: must be a finite number" --time inf
 expect_error "time too far"      "--time: must lie in [-1000000, 1000000], got '1e300'" --time 1e300
 expect_error "light radius inf"  "--light-radius: must be a finite number in [0, 1000000], got 'inf'" --light-radius inf
 expect_error "frames too many"   "--frames: must lie in [1, 10000], got '100000'" --frames 100000
-expect 2 "effects unknown"        "--effects: unknown value 'portal'" render --effects outline,portal --size 16x16
+expect 2 "effects unknown"        "--effects: unknown value 'window'" render --effects outline,window --size 16x16
 expect 2 "reflectivity range"     "--reflectivity: must lie in [0, 1]" render --effects mirror --reflectivity 1.5 --size 16x16
+expect 2 "portal without one"     "the scene has no portal" render --effects portal --scene "$data/sphere_over_plane.gltf" --size 16x16 --out p.png
 expect 2 "effects twice"          "'outline' twice"   plan --effects outline,outline
 expect 2 "outline width small"    "--outline-width: must lie in [0.5, 32]" render --effects outline --outline-width 0.1
 expect 2 "outline width word"     "--outline-width: not a number" plan --outline-width wide

@@ -128,6 +128,26 @@ for q in p["passes"]:
         assert st["enabled"] and st["write_mask"] == m["write_mask"] and st["read_mask"] == m["read_mask"], q["name"]
 assert any("without shadows" in n for n in p["notes"]), p["notes"]' \
   && echo "ok mirror: its passes and bit" || { echo "FAIL mirror: its passes and bit"; fail=1; }
+# --effects portal: its passes after the mirror's, in its own bit; the other scene's own shadow map
+# beside this scene's, whose light frustum stays the plan's.
+check portal --effects mirror,portal --size 64x64
+check mirror-only --effects mirror --size 64x64
+python3 -c '
+import json
+p = json.load(open("portal.json"))
+names = [q["name"] for q in p["passes"]]
+assert names[-7:] == ["mirror-restore", "portal-frame", "portal-mark", "portal-far", "portal shadow-map", "portal-scene",
+                      "portal-restore"], names
+uses = {u["name"]: u for u in p["stencil"]}
+o = uses["portal: the opening'"'"'s pixels"]
+assert o["write_mask"] & uses["mirror: the mirror'"'"'s pixels"]["write_mask"] == 0, uses
+for q in p["passes"]:
+    if q["module"] == "portal" and q["name"] != "portal-frame":
+        st = q["state"]["stencil"]
+        assert st["enabled"] and st["read_mask"] == o["read_mask"], q["name"]
+assert {r["name"] for r in p["resources"]} >= {"shadow-map", "portal shadow-map"}, p["resources"]
+assert p["light_frustum"] == json.load(open("mirror-only.json"))["light_frustum"]' \
+  && echo "ok portal: its passes, bit and map" || { echo "FAIL portal: its passes, bit and map"; fail=1; }
 # The text form names every pass too, and bad input is refused as render refuses it.
 "$penumbra" plan --technique planar --size 64x64 | grep -q "planar-stencil (planar)" || { echo "FAIL text"; fail=1; }
 if "$penumbra" plan --technique volume 2>/dev/null; then echo "FAIL: a bad technique was planned"; fail=1; fi

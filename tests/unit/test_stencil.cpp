@@ -301,13 +301,72 @@ TEST_F(StencilPlan, TheMirrorsPassesKeepToItsBitAndReflectEveryObjectButTheTable
     EXPECT_NE(check().find("no ground plane"), std::string::npos);
 }
 
+// The portal's passes after the mirror's and before the outline's, in its own bit; the other
+// scene's shadow map a resource of its own ("portal shadow-map") beside this scene's, whose light
+// frustum stays the plan's; its objects drawn clipped at the opening. Gooch's five bits and the
+// three effects' three are more than seven: refused, naming the uses. A scene without a portal
+// (a glTF scene) is refused with the reason.
+TEST_F(StencilPlan, ThePortalKeepsToItsBitAndDrawsTheOtherSceneWithItsOwnMap) {
+    s.effects = {render::Effect::Outline, render::Effect::Mirror};
+    const FramePlan before = make();
+    s.effects.push_back(render::Effect::Portal);
+    ASSERT_EQ(check(), "");
+    const FramePlan p = make();
+    const StencilUse* portal = p.stencil_use("portal: the opening's pixels");
+    const StencilUse* mirror = p.stencil_use("mirror: the mirror's pixels");
+    const StencilUse* outline = p.stencil_use("outline: the model's pixels");
+    ASSERT_TRUE(portal && mirror && outline);
+    EXPECT_EQ(portal->mask() & (mirror->mask() | outline->mask()), 0u);
+    std::vector<std::string> names;
+    for (const auto& pass : p.passes) names.push_back(pass.name);
+    const std::vector<std::string> want = {"mirror-restore", "portal-frame", "portal-mark", "portal-far",
+                                           "portal shadow-map", "portal-scene", "portal-restore", "outline-mark",
+                                           "outline-draw"};
+    ASSERT_GE(names.size(), want.size());
+    EXPECT_EQ(std::vector<std::string>(names.end() - static_cast<long>(want.size()), names.end()), want);
+    const auto find = [&](const char* name) -> const render::Pass& {
+        for (const auto& pass : p.passes)
+            if (pass.name == name) return pass;
+        throw std::runtime_error(std::string("no pass ") + name);
+    };
+    for (const char* name : {"portal-far", "portal-scene", "portal-restore"})
+        EXPECT_EQ(find(name).state.stencil.read_mask, portal->mask()) << name;
+    EXPECT_EQ(find("portal-mark").state.stencil.write_mask, portal->mask());
+    EXPECT_FALSE(find("portal-mark").state.depth_write);
+    const render::Pass& other = find("portal-scene");
+    ASSERT_EQ(other.draws.size(), course.scene.portal->beyond->objects.size());
+    for (const auto& d : other.draws) {
+        EXPECT_TRUE(d.beyond);
+        EXPECT_NE(std::find(d.variant.defines.begin(), d.variant.defines.end(), "CLIPPED"), d.variant.defines.end());
+    }
+    ASSERT_EQ(other.reads().size(), 1u);
+    EXPECT_EQ(p.resources[static_cast<size_t>(other.reads()[0])].desc.name, "portal shadow-map");
+    ASSERT_TRUE(p.light_frustum && before.light_frustum);
+    EXPECT_EQ(p.light_frustum->view_proj(), before.light_frustum->view_proj()) << "this scene's light stays the plan's";
+    // Gooch's 16 planes count in 5 bits: with three effects' bits that is one more than 7.
+    s.technique = render::Technique::Gooch;
+    s.gooch_planes = 16;
+    s.light_radius = 0.3f;
+    caps.stencil_bits = 7;
+    const std::string refused = check();
+    EXPECT_NE(refused.find("portal: the opening's pixels"), std::string::npos) << refused;
+    EXPECT_NE(refused.find("gooch: planes lighting the ground"), std::string::npos) << refused;
+    s.effects.pop_back();
+    EXPECT_EQ(check(), "") << "without the portal the uses fit";
+    s.effects.push_back(render::Effect::Portal);
+    caps.stencil_bits = 8;
+    s.technique = render::Technique::ShadowMap;
+    course.scene.portal.reset();
+    EXPECT_NE(check().find("the scene has no portal"), std::string::npos) << check();
+}
+
 TEST(EffectOptions, ParseCheckAndPrint) {
     render::Options o;
     EXPECT_EQ(render::parse_option(o, "effects", "outline"), "");
     EXPECT_TRUE(o.settings.has(render::Effect::Outline));
     EXPECT_EQ(render::parse_option(o, "effects", "none"), "");
     EXPECT_TRUE(o.settings.effects.empty());
-    EXPECT_NE(render::parse_option(o, "effects", "portal"), "");
+    EXPECT_NE(render::parse_option(o, "effects", "window"), "");
     EXPECT_EQ(render::parse_option(o, "effects", "mirror,outline"), "");
     ASSERT_EQ(o.settings.effects.size(), 2u);
     EXPECT_EQ(o.settings.effects[0], render::Effect::Outline);  // kAllEffects' order
