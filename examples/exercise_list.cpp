@@ -154,7 +154,7 @@ std::vector<ExerciseInfo> make_list() {
           {"technique", "Shadows", K::Select, {}, {}, "Heckbert-Herf averages any of them; PCSS filters a shadow map"},
           {"aov", "View", K::Select, {"color", "visibility"}}},
          {{"light", "off"}, {"jump", "off"}, {"light-radius", "0.3"}, {"filter", "pcss"}, {"area-per-frame", "4"}}},
-        {Exercise::Stencil, "stencil", "Stencil effects: outlines and a mirror",
+        {Exercise::Stencil, "stencil", "Stencil effects: outline, mirror, portal",
          "The stencil buffer is a mask with a value per pixel: a draw first writes a pattern into it, and later draws "
          "pass only where it holds a given value. The outline uses it twice: the teapot is drawn with colour and depth "
          "writes off, setting its pixels' stencil bit; then it is drawn again, enlarged, in one colour, only where the "
@@ -167,16 +167,19 @@ std::vector<ExerciseInfo> make_list() {
          "clears their depth, and draws the scene a second time through the camera reflected in the table's plane, "
          "only there: the reflected teapot is lit by the same light and shadowed by the same shadow map, and what "
          "would lie below the table is cut away in the shader (WebGL 1 has no clip planes). The reflectivity mixes "
-         "the reflection with the table's own colour and shadows.",
+         "the reflection with the table's own colour and shadows. The portal marks the opening of a frame standing at the "
+         "back of the table where it is seen (depth tested: the teapot in front of it hides it), sets their depth to "
+         "the far plane and draws another scene there, with its own light and its own shadow map, cut away on the "
+         "near side of the opening's plane.",
          "The stencil buffer as a mask: the teapot's pixels marked, then a copy pushed out by a constant number of "
          "pixels drawn only where they are not, outlining the teapot with any shadow technique; and the table top "
-         "made a mirror, the reflected scene drawn only in its pixels.",
+         "made a mirror, the reflected scene drawn only in its pixels; a portal into another scene through a frame.",
          "The teapot on the table, outlined in colour through the stencil buffer, the table a mirror",
-         "Widen the outline: the band stays as wide round the spout and the handle as round the body. Choose the "
-         "mirror and raise its reflectivity; switch to planar or volumes: they share the stencil with the effects.",
+         "Widen the outline: the band stays as wide round the spout as round the body. Choose the mirror, then the "
+         "portal: the teapot jumps in front of another world. Planar and volumes share the stencil with them.",
          render::Technique::ShadowMap,
          {light, jump,
-          {"effects", "Effects", K::Select, {"outline", "none", "mirror", "outline,mirror"}, {},
+          {"effects", "Effects", K::Select, {"outline", "none", "mirror", "outline,mirror", "portal", "outline,mirror,portal"}, {},
            "each marks its pixels in a stencil bit of its own"},
           {"outline-width", "Outline", K::Slider, {"1", "2", "3", "5", "8", "12", "16"}, {},
            "pixels, the same at any depth", 0.5, 16.0},
@@ -246,7 +249,7 @@ const std::vector<KeyBinding>& key_bindings() {
         {'X', "reference", "soft: the reference (256 light samples) / the method chosen"},
         {'T', "technique", "soft, stencil: next technique (shadow map, planar, volumes, ...)"},
         {'K', "pcss-taps", "soft: PCSS filter taps 8 / 16 / 32 / 64"},
-        {'Y', "effects", "stencil: effects outline / none / mirror / outline and mirror"},
+        {'Y', "effects", "stencil: effects outline / none / mirror / outline and mirror / portal / all three"},
         {'W', "outline-width", "stencil: outline width 1 / 2 / 3 / 5 / 8 / 12 / 16 px, Shift+W backwards"},
         {'D', "outline-color", "stencil: next outline colour (orange, yellow, cyan, magenta)"},
         {'Q', "reflectivity", "stencil: mirror reflectivity 0.25 / 0.5 / 0.75 / 1, Shift+Q backwards"},

@@ -226,6 +226,9 @@ TEST(ExerciseOptions, StencilOutline) {
     EXPECT_TRUE(a.settings().effects.empty());
     ASSERT_EQ(a.set_option("effects", "outline,mirror"), "");
     EXPECT_EQ(a.settings().effects, (std::vector<Effect>{Effect::Outline, Effect::Mirror}));
+    ASSERT_EQ(a.set_option("effects", "portal"), "");
+    EXPECT_EQ(a.settings().effects, std::vector<Effect>{Effect::Portal});
+    ASSERT_EQ(a.set_option("effects", "outline,mirror"), "");
     ASSERT_EQ(a.set_option("reflectivity", "0.8"), "");
     EXPECT_EQ(a.settings().reflectivity, 0.8f);
     ASSERT_EQ(a.set_option("effects", "outline"), "");
@@ -247,6 +250,8 @@ TEST(ExerciseOptions, StencilOutline) {
     EXPECT_EQ(k.on_key('Y', false), "effects = none");
     EXPECT_EQ(k.on_key('Y', false), "effects = mirror");
     EXPECT_EQ(k.on_key('Y', false), "effects = outline,mirror");
+    EXPECT_EQ(k.on_key('Y', false), "effects = portal");
+    EXPECT_EQ(k.on_key('Y', false), "effects = outline,mirror,portal");
     EXPECT_EQ(k.on_key('Y', false), "effects = outline");
     EXPECT_EQ(k.on_key('Q', false), "reflectivity = 0.75");
     EXPECT_EQ(k.on_key('Q', true), "reflectivity = 0.5");
