@@ -4,9 +4,11 @@
 // colour from the select paints the same pixels in it; planar shadows and shadow volumes (which
 // keep their own values in the stencil) give the same outline; the mirror changes the table's
 // pixels only (more of them with a higher reflectivity), and with the outline keeps its orange
-// pixels; the controls reach the URL and survive a reload; the browser's frame matches `penumbra
-// render --effects ...` (headless EGL) within web.egl_match's tolerance, for the shadow map and
-// shadow volumes with the outline and for the mirror; no console or GL error.
+// pixels; the portal changes only the pixels of the frame's region and shows the other scene's
+// lawn there; the controls reach the URL and survive a reload; the browser's frame matches
+// `penumbra render --effects ...` (headless EGL) within web.egl_match's tolerance, for the shadow
+// map and shadow volumes with the outline, for the mirror and for all three effects; no console
+// or GL error.
 // usage: stencil.mjs PENUMBRA_CLI OUT_DIR
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
@@ -110,6 +112,29 @@ await runTest('web.stencil', async ({ server, browser }) => {
   check(Math.abs(both - on) <= 0.02 * on, `outline and mirror: ${both} orange pixels, the outline alone ${on}`);
   console.log(`mirror: ${onTable} table pixels changed by > 4 levels (${pct(onTable)}), none elsewhere; > 16 levels: ` +
               `${half.differing} at 0.5, ${perfect.differing} at 1; with the outline ${both} orange pixels`);
+  // The portal: another scene seen through a frame at the back of the table. Only the pixels of
+  // the frame's region change (everything below its sill and outside its sides stays), and the
+  // other scene's lawn (green) appears there, none of it without the portal.
+  await page.selectOption('#effects', 'portal');
+  const portalShot = await shoot('portal');
+  const green = (px, i) => px.data[4 * i + 1] > px.data[4 * i] + 25 && px.data[4 * i + 1] > px.data[4 * i + 2] + 25;
+  let lawn = 0, lawnBefore = 0, changed = 0, box = { x0: 512, x1: -1, y0: 512, y1: -1 };
+  for (let i = 0; i < n; ++i) {
+    lawn += green(portalShot, i);
+    lawnBefore += green(shots.none, i);
+    if (![0, 1, 2].some((c) => portalShot.data[4 * i + c] !== shots.none.data[4 * i + c])) continue;
+    ++changed;
+    const x = i % 512, y = Math.floor(i / 512);
+    box = { x0: Math.min(box.x0, x), x1: Math.max(box.x1, x), y0: Math.min(box.y0, y), y1: Math.max(box.y1, y) };
+  }
+  check(lawn > 0.005 * n && lawnBefore === 0, `portal: ${lawn} lawn pixels (${lawnBefore} without the portal)`);
+  // The frame stands at the back of the table: its pixels lie in the upper middle of the frame.
+  check(box.x0 > 100 && box.x1 < 412 && box.y1 < 300, `portal: pixels changed from (${box.x0}, ${box.y0}) to ` +
+        `(${box.x1}, ${box.y1}), beyond the frame's region`);
+  s = await page.evaluate(() => window.penumbra.state());
+  check(s.options.effects === 'portal', `the select set effects=${s.options.effects}, not portal`);
+  console.log(`portal: ${changed} pixels changed, within (${box.x0}, ${box.y0})-(${box.x1}, ${box.y1}); ` +
+              `${lawn} lawn pixels (${pct(lawn)}), none without it`);
   await page.selectOption('#effects', 'outline');
   await page.$eval('#reflectivity', (el) => {
     el.value = '0.5';
@@ -174,6 +199,9 @@ await runTest('web.stencil', async ({ server, browser }) => {
     ['mirror', { technique: 'shadowmap', effects: 'outline,mirror', reflectivity: '0.75' },
      ['--technique', 'shadowmap', '--effects', 'outline,mirror', '--reflectivity', '0.75', '--outline-color', 'ff00ff',
       '--outline-width', '8']],
+    ['portal', { technique: 'shadowmap', effects: 'outline,mirror,portal' },
+     ['--technique', 'shadowmap', '--effects', 'outline,mirror,portal', '--reflectivity', '0.75',
+      '--outline-color', 'ff00ff', '--outline-width', '8']],
   ]) {
     await setOptions(page, query);
     const px = await frameAt(page, T);
