@@ -283,7 +283,10 @@
     resume: () => Module._penumbra_pause(0),
     frameCount: () => Module._penumbra_frame_count(),
     // Draws a frame now (at the current time), outside the animation loop.
-    renderNow: () => Module._penumbra_render_now(0, 0) === 1,
+    // At the backing store's size now: the loop's last frame may predate a setCanvasSize (a slow
+    // page's frame had not run since, and renderNow drew at the old size: web.context_loss once
+    // read 748x748 after setting 512x512).
+    renderNow: () => Module._penumbra_render_now(canvas.width, canvas.height) === 1,
     // The canvas's pixels, RGBA, top row first.
     readPixels: () => {
       const p = Module._penumbra_read_pixels();
