@@ -266,10 +266,7 @@ Pass camera_pass(PlanContext& c, const Module& module, bool stencil,
     cam.detail = c.plan.output + ", " + std::to_string(cam.draws.size()) + " object(s)";
     module.shade(c, cam, items);
     if (extra) extra(c, cam, items);
-    for (size_t i = 0; i < items.size(); ++i) {
-        cam.draws[i].variant = lit_variant(items[i].features);
-        cam.draws[i].bindings = items[i].bindings;
-    }
+    set_lit_draws(cam, items);
     if (c.settings.aov == Aov::Visibility) cam.detail += ", visibility AOV";
     return cam;
 }
@@ -313,10 +310,7 @@ void blend_pass(PlanContext& c, const Module& module) {
     p.detail = std::to_string(order.size()) + " translucent object(s) back to front: " + names +
                "; blend alpha, depth test, no depth writes";
     if (c.settings.technique != Technique::Volumes) module.shade(c, p, items);
-    for (size_t k = 0; k < items.size(); ++k) {
-        p.draws[k].variant = lit_variant(items[k].features);
-        p.draws[k].bindings = items[k].bindings;
-    }
+    set_lit_draws(p, items);
     c.add_pass(std::move(p));
 }
 

@@ -2,6 +2,7 @@
 // never overlap (or refuses, naming the uses), and every pass's stencil state stays inside its
 // use's bits. The outline effect's passes. No GL context.
 #include <algorithm>
+#include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -43,6 +44,18 @@ std::vector<Touch> stencil_touches(const FramePlan& p) {
         if (pass.state.stencil.enabled)
             out.push_back({pass.name, pass.state.stencil.read_mask, pass.state.stencil.write_mask, pass.state.stencil.ref});
     return out;
+}
+
+// The plan's pass of that name (std::runtime_error when it has none), and every pass's name in order.
+const render::Pass& pass_named(const FramePlan& p, const char* name) {
+    for (const auto& pass : p.passes)
+        if (pass.name == name) return pass;
+    throw std::runtime_error(std::string("no pass ") + name);
+}
+std::vector<std::string> pass_names(const FramePlan& p) {
+    std::vector<std::string> names;
+    for (const auto& pass : p.passes) names.push_back(pass.name);
+    return names;
 }
 
 struct StencilPlan : ::testing::Test {
@@ -250,8 +263,7 @@ TEST_F(StencilPlan, TheMirrorsPassesKeepToItsBitAndReflectEveryObjectButTheTable
     const StencilUse* planar = p.stencil_use("planar: shadowed ground");
     ASSERT_TRUE(mirror && outline && planar);
     EXPECT_EQ(mirror->mask() & (outline->mask() | planar->mask()), 0u);
-    std::vector<std::string> names;
-    for (const auto& pass : p.passes) names.push_back(pass.name);
+    const std::vector<std::string> names = pass_names(p);
     const std::vector<std::string> want = {"mirror-mark", "mirror-far", "mirror-depth", "mirror-sky", "mirror-reflect",
                                            "mirror-restore", "outline-mark", "outline-draw"};
     ASSERT_GE(names.size(), want.size());
@@ -264,9 +276,7 @@ TEST_F(StencilPlan, TheMirrorsPassesKeepToItsBitAndReflectEveryObjectButTheTable
             EXPECT_EQ(pass.state.stencil.func, gl::Compare::Equal) << pass.name;
         }
     }
-    const auto find = [&](const char* name) -> const render::Pass& {
-        return *std::find_if(p.passes.begin(), p.passes.end(), [&](const render::Pass& x) { return x.name == name; });
-    };
+    const auto find = [&](const char* name) -> const render::Pass& { return pass_named(p, name); };
     const render::Pass& reflect = find("mirror-reflect");
     EXPECT_EQ(reflect.state.blend, gl::Blend::Over);
     EXPECT_EQ(reflect.state.depth_func, gl::Compare::Equal);
@@ -317,18 +327,13 @@ TEST_F(StencilPlan, ThePortalKeepsToItsBitAndDrawsTheOtherSceneWithItsOwnMap) {
     const StencilUse* outline = p.stencil_use("outline: the model's pixels");
     ASSERT_TRUE(portal && mirror && outline);
     EXPECT_EQ(portal->mask() & (mirror->mask() | outline->mask()), 0u);
-    std::vector<std::string> names;
-    for (const auto& pass : p.passes) names.push_back(pass.name);
+    const std::vector<std::string> names = pass_names(p);
     const std::vector<std::string> want = {"mirror-restore", "portal-frame", "portal-mark", "portal-far",
                                            "portal shadow-map", "portal-scene", "portal-restore", "outline-mark",
                                            "outline-draw"};
     ASSERT_GE(names.size(), want.size());
     EXPECT_EQ(std::vector<std::string>(names.end() - static_cast<long>(want.size()), names.end()), want);
-    const auto find = [&](const char* name) -> const render::Pass& {
-        for (const auto& pass : p.passes)
-            if (pass.name == name) return pass;
-        throw std::runtime_error(std::string("no pass ") + name);
-    };
+    const auto find = [&](const char* name) -> const render::Pass& { return pass_named(p, name); };
     for (const char* name : {"portal-far", "portal-scene", "portal-restore"})
         EXPECT_EQ(find(name).state.stencil.read_mask, portal->mask()) << name;
     EXPECT_EQ(find("portal-mark").state.stencil.write_mask, portal->mask());

@@ -125,24 +125,7 @@ public:
         mark.detail = "the mirror's seen pixels marked in the stencil (" + use.describe() + "), colour and depth writes off";
         c.add_pass(std::move(mark));
 
-        const auto fullscreen = [&](const char* name, const glm::vec4& colour) {
-            Pass p;
-            p.name = name;
-            p.module = "mirror";
-            p.target = c.camera_target;
-            p.state.cull = gl::Cull::None;
-            p.state.stencil = use.test(gl::Compare::Equal, kMarked);
-            p.object_uniforms = ObjectUniforms::None;
-            p.bindings.push_back({"colour", {{"u_value", colour}}, {}});
-            Draw d;
-            d.fullscreen = true;
-            d.variant = far_plane_variant();
-            d.bindings = 1u;
-            p.draws.push_back(std::move(d));
-            return p;
-        };
-        Pass far = fullscreen("mirror-far", glm::vec4(0.0f));
-        far.state.depth_func = gl::Compare::Always;
+        Pass far = far_plane_pass(c, "mirror-far", "mirror", use, kMarked, glm::vec4(0.0f));
         far.state.color_write = false;
         far.detail = "the depth of the marked pixels set to the far plane (depth 1)";
         c.add_pass(std::move(far));
@@ -180,19 +163,11 @@ public:
         // texture). The stencil techniques' shadows fall on the mirror itself (planar), or are made
         // for the camera's view only (volumes: the reflection is lit without them), as are the
         // light samples of --area-samples (averaged per pixel of the camera's image).
-        std::string unshadowed;
-        if (c.plan.area) unshadowed = "the light samples are averaged for the camera's pixels";
-        else if (s.technique == Technique::Volumes) unshadowed = "shadow volumes are counted for the camera's view";
-        if (!unshadowed.empty()) {
+        if (const std::string unshadowed = shade_after_camera(c, reflect, items); !unshadowed.empty()) {
             c.plan.notes.push_back("--effects mirror: the reflection is lit without shadows (" + unshadowed + ")");
             reflect.detail = ", no shadows";
-        } else {
-            technique_module(s.technique).shade(c, reflect, items);
         }
-        for (size_t k = 0; k < items.size(); ++k) {
-            reflect.draws[k].variant = lit_variant(items[k].features);
-            reflect.draws[k].bindings = items[k].bindings;
-        }
+        set_lit_draws(reflect, items);
         const std::string shading = reflect.detail;
 
         Pass depth = reflect;
@@ -203,7 +178,7 @@ public:
                        "depth only, in the marked pixels";
         c.add_pass(std::move(depth));
 
-        Pass sky = fullscreen("mirror-sky", glm::vec4(glm::vec3(kBackground) * r, r));
+        Pass sky = far_plane_pass(c, "mirror-sky", "mirror", use, kMarked, glm::vec4(glm::vec3(kBackground) * r, r));
         sky.state.depth_func = gl::Compare::Equal;
         sky.state.depth_write = false;
         sky.state.blend = gl::Blend::Over;

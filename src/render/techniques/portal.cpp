@@ -91,7 +91,6 @@ public:
             return;
         }
         const StencilUse& use = c.stencil(kUse);
-        const Settings& s = c.settings;
 
         // The frame and the opening: draws of the portal's meshes in this scene (no scene object).
         const auto portal_draw = [&](int mesh, const char* label) {
@@ -112,15 +111,10 @@ public:
         Draw fd = portal_draw(portal.frame_mesh, "portal frame");
         std::vector<CameraItem> items{{-1, c.base_features(fd), (1u << frame.bindings.size()) - 1u}};
         // Lit as the camera pass lights an object, with its shadow lookup (shadow map, Gooch's
-        // texture); planar shadows fall on the ground only, shadow volumes are counted for the
-        // camera pass's objects and the light samples averaged for its pixels.
-        std::string unshadowed;
-        if (c.plan.area) unshadowed = "the light samples are averaged for the camera pass's pixels";
-        else if (s.technique == Technique::Volumes) unshadowed = "shadow volumes are counted for the camera pass";
+        // texture; planar shadows fall on the ground only).
         frame.draws.push_back(fd);
-        if (unshadowed.empty()) technique_module(s.technique).shade(c, frame, items);
-        frame.draws[0].variant = lit_variant(items[0].features);
-        frame.draws[0].bindings = items[0].bindings;
+        const std::string unshadowed = shade_after_camera(c, frame, items);
+        set_lit_draws(frame, items);
         frame.detail = "the frame in this scene's light" + frame.detail +
                        (unshadowed.empty() ? "" : " (unshadowed: " + unshadowed + ")");
         c.add_pass(std::move(frame));
@@ -148,20 +142,7 @@ public:
                       "), depth tested against this scene, colour and depth writes off";
         c.add_pass(std::move(mark));
 
-        Pass far;
-        far.name = "portal-far";
-        far.module = "portal";
-        far.target = c.camera_target;
-        far.state.cull = gl::Cull::None;
-        far.state.depth_func = gl::Compare::Always;
-        far.state.stencil = use.test(gl::Compare::Equal, kMarked);
-        far.object_uniforms = ObjectUniforms::None;
-        far.bindings.push_back({"sky", {{"u_value", glm::vec4(portal.sky, 1.0f)}}, {}});
-        Draw fs;
-        fs.fullscreen = true;
-        fs.variant = far_plane_variant();
-        fs.bindings = 1u;
-        far.draws.push_back(std::move(fs));
+        Pass far = far_plane_pass(c, "portal-far", "portal", use, kMarked, glm::vec4(portal.sky, 1.0f));
         far.detail = "the other scene's sky in the marked pixels, their depth set to the far plane (depth 1)";
         c.add_pass(std::move(far));
 
@@ -225,10 +206,7 @@ private:
                    "clipped at the opening's plane";
         if (shadows) sm.shade(o, p, items);
         else p.detail += ", no shadows (--technique none)";
-        for (size_t k = 0; k < items.size(); ++k) {
-            p.draws[k].variant = lit_variant(items[k].features);
-            p.draws[k].bindings = items[k].bindings;
-        }
+        set_lit_draws(p, items);
         c.add_pass(std::move(p));
         c.plan.light_frustum = frustum;
         c.plan.texel_use = texel_use;

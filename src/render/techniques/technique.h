@@ -135,4 +135,17 @@ public:
 const Module& technique_module(Technique t);
 const Module& effect_module(Effect e);
 
+// Helpers of the modules' passes (techniques.cpp).
+//
+// Each draw of `p` gets the lit variant and the bindings of its item (items[k] is draws[k]'s).
+void set_lit_draws(Pass& p, const std::vector<CameraItem>& items);
+// An effect's lit pass drawn after the camera pass (the mirror's reflection, the portal's frame)
+// takes the technique's shadow lookup: "" when it did, else why it is lit without shadows (the
+// light samples are averaged for the camera pass's pixels, shadow volumes counted for its view).
+std::string shade_after_camera(PlanContext& c, Pass& p, std::vector<CameraItem>& items);
+// A full-screen triangle on the far plane (depth 1) in `colour`, into the camera's target where
+// `use` holds `value`; depth test always, depth and colour written.
+Pass far_plane_pass(const PlanContext& c, std::string name, std::string module, const StencilUse& use, int value,
+                    const glm::vec4& colour);
+
 }  // namespace penumbra::render

@@ -44,6 +44,39 @@ const Module& effect_module(Effect e) {
     return outline_module();
 }
 
+void set_lit_draws(Pass& p, const std::vector<CameraItem>& items) {
+    for (size_t k = 0; k < items.size(); ++k) {
+        p.draws[k].variant = lit_variant(items[k].features);
+        p.draws[k].bindings = items[k].bindings;
+    }
+}
+
+std::string shade_after_camera(PlanContext& c, Pass& p, std::vector<CameraItem>& items) {
+    if (c.plan.area) return "the light samples are averaged for the camera pass's pixels";
+    if (c.settings.technique == Technique::Volumes) return "shadow volumes are counted for the camera pass's view";
+    technique_module(c.settings.technique).shade(c, p, items);
+    return {};
+}
+
+Pass far_plane_pass(const PlanContext& c, std::string name, std::string module, const StencilUse& use, int value,
+                    const glm::vec4& colour) {
+    Pass p;
+    p.name = std::move(name);
+    p.module = std::move(module);
+    p.target = c.camera_target;
+    p.state.cull = gl::Cull::None;
+    p.state.depth_func = gl::Compare::Always;
+    p.state.stencil = use.test(gl::Compare::Equal, value);
+    p.object_uniforms = ObjectUniforms::None;
+    p.bindings.push_back({"colour", {{"u_value", colour}}, {}});
+    Draw d;
+    d.fullscreen = true;
+    d.variant = far_plane_variant();
+    d.bindings = 1u;
+    p.draws.push_back(std::move(d));
+    return p;
+}
+
 void ContentKey::add(const void* data, std::size_t bytes) {
     const auto* p = static_cast<const unsigned char*>(data);
     for (std::size_t i = 0; i < bytes; ++i) {
