@@ -196,7 +196,7 @@ struct Planning {
     FramePlan plan;
     PlanContext ctx;
     const Module& module;
-    std::vector<const Module*> effects;  // drawn on the colour image only
+    std::vector<const Module*> effects;  // drawn on the colour image (the mirror and portal on visibility too)
     size_t technique_uses = 0;           // plan.stencil's first uses are the technique's (allocate)
 
     Planning(const scene::Scene& scene, const Settings& s, const gl::Caps& caps, const FrameInputs& in,
@@ -215,9 +215,14 @@ struct Planning {
         ctx.depth_path = {s.precision == shadow::Precision::Mediump, caps.unorm_floor};
         if (s.light_radius) ctx.light.radius = *s.light_radius;
         plan.camera = camera_view(scene, in);
+        // The mirror and the portal show surfaces: in the visibility AOV, the visibility of the surface
+        // seen in the mirror or through the opening (what the bench scores against the effects' truth).
+        // The outline is a colour, not a surface.
         for (Effect e : s.effects) {
-            if (s.aov != Aov::Color) {
-                plan.notes.push_back("--effects " + std::string(to_string(e)) + ": drawn on --aov color only, not on " +
+            const bool shown = s.aov == Aov::Color || (s.aov == Aov::Visibility && e != Effect::Outline);
+            if (!shown) {
+                plan.notes.push_back("--effects " + std::string(to_string(e)) + ": drawn on --aov color" +
+                                     (e == Effect::Outline ? "" : " and visibility") + " only, not on " +
                                      std::string(to_string(s.aov)));
                 continue;
             }

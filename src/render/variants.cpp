@@ -251,8 +251,9 @@ std::vector<Variant> all_variants() {
     out.push_back(flat_variant({true, true}));
     out.push_back(outline_variant());
     out.push_back(far_plane_variant());
-    // The mirror's reflection (colour only): no shadows, or any shadow map of the highp path with
-    // either bias, plain or textured, point or spot light; MASK cut-outs with the texture.
+    // The mirror's reflection: no shadows, or any shadow map of the highp path with either bias,
+    // plain or textured, point or spot light; MASK cut-outs with the texture; the visibility AOV
+    // plain (what the bench scores).
     for (LitFeatures base : shadowing) {
         if (base.mediump || base.in_shadow || base.area_lookup || base.light_term != LightTerm::All) continue;
         base.reflected = true;
@@ -264,14 +265,19 @@ std::vector<Variant> all_variants() {
             base.alpha_test = true;
             if (base.textured) out.push_back(lit_variant(base));
         }
+        base.textured = base.spot = base.alpha_test = false;
+        base.visibility_aov = true;
+        out.push_back(lit_variant(base));
     }
-    // The portal's other scene (colour only), shadow-mapped with any encoding, filter and bias of
-    // either precision path, plain or textured (its frame is a camera pass's draw).
+    // The portal's other scene, shadow-mapped with any encoding, filter and bias of either
+    // precision path, plain or textured (its frame is a camera pass's draw), and the visibility AOV
+    // plain.
     for (LitFeatures base : shadowing) {
         if (base.in_shadow || base.area_lookup || base.light_term != LightTerm::All) continue;
         base.clipped = true;
-        for (bool textured : {false, true}) {
-            base.textured = textured;
+        for (int bits = 0; bits < 3; ++bits) {
+            base.textured = bits == 1;
+            base.visibility_aov = bits == 2;
             out.push_back(lit_variant(base));
         }
     }

@@ -102,7 +102,9 @@ public:
         const Settings& s = c.settings;
         const StencilUse& use = c.stencil(kUse);
         const int ground = c.scene.ground_object;
-        const float r = std::clamp(s.reflectivity, 0.0f, 1.0f);
+        // The visibility AOV shows the reflected surfaces' visibility whole (the reflectivity blends colours).
+        const bool visibility = s.aov == Aov::Visibility;
+        const float r = visibility ? 1.0f : std::clamp(s.reflectivity, 0.0f, 1.0f);
 
         // The ground as the camera pass shades it (the same vertex shader: the same depths), no colour.
         const auto ground_pass = [&](const char* name) {
@@ -178,7 +180,8 @@ public:
                        "depth only, in the marked pixels";
         c.add_pass(std::move(depth));
 
-        Pass sky = far_plane_pass(c, "mirror-sky", "mirror", use, kMarked, glm::vec4(glm::vec3(kBackground) * r, r));
+        const glm::vec3 background = visibility ? glm::vec3(1.0f) : glm::vec3(kBackground);  // the camera pass's clear
+        Pass sky = far_plane_pass(c, "mirror-sky", "mirror", use, kMarked, glm::vec4(background * r, r));
         sky.state.depth_func = gl::Compare::Equal;
         sky.state.depth_write = false;
         sky.state.blend = gl::Blend::Over;

@@ -142,7 +142,9 @@ public:
                       "), depth tested against this scene, colour and depth writes off";
         c.add_pass(std::move(mark));
 
-        Pass far = far_plane_pass(c, "portal-far", "portal", use, kMarked, glm::vec4(portal.sky, 1.0f));
+        // The visibility AOV's background is white (the camera pass's clear), the sky's too.
+        const glm::vec4 sky = c.settings.aov == Aov::Visibility ? glm::vec4(1.0f) : glm::vec4(portal.sky, 1.0f);
+        Pass far = far_plane_pass(c, "portal-far", "portal", use, kMarked, sky);
         far.detail = "the other scene's sky in the marked pixels, their depth set to the far plane (depth 1)";
         c.add_pass(std::move(far));
 
@@ -164,7 +166,7 @@ private:
         Settings s = c.settings;
         const bool shadows = s.technique != Technique::None;
         s.technique = Technique::ShadowMap;
-        s.aov = Aov::Color;
+        s.aov = c.settings.aov == Aov::Visibility ? Aov::Visibility : Aov::Color;  // its own shadows' visibility
         s.area_samples = 1;
         if (s.encoding == shadow::Encoding::DepthTex && !c.caps.depth_texture) s.encoding = shadow::Encoding::RGBA;
         FrameInputs in = c.inputs;  // the camera and the output; the overrides name this scene's objects
