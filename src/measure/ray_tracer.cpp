@@ -23,6 +23,7 @@ const char* to_string(PixelClass c) {
         case PixelClass::NotReceiver: return "not-receiver";
         case PixelClass::FacingAway: return "facing-away";
         case PixelClass::OutsideCone: return "outside-cone";
+        case PixelClass::NotModelled: return "not-modelled";
     }
     return "?";
 }

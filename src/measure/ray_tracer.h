@@ -47,9 +47,10 @@ enum class PixelClass : std::uint8_t {
     Silhouette = 2,
     NotReceiver = 3,
     FacingAway = 4,
-    OutsideCone = 5
+    OutsideCone = 5,
+    NotModelled = 6  // only in an effect's truth (effect_truth.h): what the renderer leaves out there on purpose
 };
-inline constexpr int kPixelClassCount = 6;
+inline constexpr int kPixelClassCount = 7;
 const char* to_string(PixelClass c);
 
 struct TruthOptions {

@@ -61,6 +61,7 @@ Pixels classes_image(const measure::TruthImage& t) {
             case measure::PixelClass::NotReceiver: r = 120, g = 90, b = 40; break;
             case measure::PixelClass::FacingAway: r = 70, g = 110, b = 140; break;
             case measure::PixelClass::OutsideCone: r = 90, g = 70, b = 110; break;
+            case measure::PixelClass::NotModelled: r = 200, g = 150, b = 40; break;
         }
         px.data[3 * i] = r;
         px.data[3 * i + 1] = g;
