@@ -24,7 +24,7 @@ python3 - "$work/bench" <<'PY' && ok || bad "bench outputs are not well-formed"
 import csv, struct, sys, xml.etree.ElementTree as ET, zlib
 d = sys.argv[1]
 every = list(csv.DictReader(open(d + "/results.csv")))
-assert {r["section"] for r in every} == {"sweep", "silhouette"}, {r["section"] for r in every}
+assert {r["section"] for r in every} == {"sweep", "silhouette", "effects"}, {r["section"] for r in every}
 rows = [r for r in every if r["section"] == "sweep"]
 sil = [r for r in every if r["section"] == "silhouette"]
 # 2 scenes x (3 encodings x 3 filters x 2 maps + rgba hard and pcf4x4 at map 1024 as before issue 9
@@ -52,6 +52,25 @@ for r in sil:
     assert 0.0 <= float(r["error_pct"]) <= 100.0 and float(r["ms_moving"]) >= 0.0, r
     if r["technique"] == "volumes auto": assert float(r["fill_per_pixel"]) > 0.0, r
     else: assert r["silhouette_edges"] == "" and int(r["shadow_map_bytes"]) >= 1024 ** 2, r
+# the stencil effects on course@0.60: none, each alone and all three, under the default technique and volumes
+eff = [r for r in every if r["section"] == "effects"]
+sets = ["none", "outline", "mirror", "portal", "outline,mirror,portal"]
+assert sorted((r["technique"], r["effects"]) for r in eff) == sorted((t, e) for t in ("rgba hard", "volumes auto") for e in sets), eff
+for r in eff:
+    assert r["scene"] == "course@0.60" and "--effects " + r["effects"] in r["settings"], r
+    assert 0.0 <= float(r["error_pct"]) <= 100.0 and float(r["ms_moving"]) >= 0.0 and float(r["ms_still"]) >= 0.0, r
+    shows = "mirror" in r["effects"] or "portal" in r["effects"]
+    # the mirror's and the opening's pixels scored alone where there are any
+    assert (int(r["effect_valid_pixels"]) > 50) == shows, r
+    if shows: assert 0.0 <= float(r["effect_error_pct"]) <= 100.0, r
+    else: assert r["effect_error_pct"] == "", r
+    # the mirror does not reflect the portal: those pixels, and only those, are left out
+    assert (int(r["not_modelled_pixels"]) > 0) == ("mirror" in r["effects"] and "portal" in r["effects"]), r
+by = {(r["technique"], r["effects"]): r for r in eff}
+# the outline is not in the visibility AOV: the frame under it is scored, the same as without it
+assert by[("rgba hard", "outline")]["error_pct"] == by[("rgba hard", "none")]["error_pct"]
+# volumes leave the reflection unshadowed (documented): the mirror's pixels lose its shadows
+assert float(by[("volumes auto", "mirror")]["effect_false_lit_pct"]) > float(by[("rgba hard", "mirror")]["effect_false_lit_pct"])
 before = [r for r in rows if r["technique"].endswith(" (before)")]
 assert sorted({r["technique"] for r in before}) == ["rgba hard (before)", "rgba pcf4x4 (before)"], before
 for r in before:
@@ -80,6 +99,7 @@ assert "## Texel use" in md
 assert "## Shadow volumes against the shadow map (rgba hard, map 1024)" in md and "| course@0.60 | volumes auto |" in md
 assert "## Shadow volumes as the silhouette grows" in md and "| 128 | 16128 |" in md
 assert "## The defaults against the settings before issue 9" in md and "| rgba hard | 1024 |" in md
+assert "## The stencil effects on course@0.60" in md and "| volumes auto | outline,mirror,portal |" in md
 svg = ET.parse(d + "/tradeoff.svg").getroot()
 assert svg.tag.endswith("svg") and len(svg.findall(".//{http://www.w3.org/2000/svg}polyline")) > 0
 texts = [t.text for t in svg.iter("{http://www.w3.org/2000/svg}text")]
@@ -92,13 +112,16 @@ w, h = struct.unpack(">II", png[16:24]); assert w >= 400 and h >= 300, (w, h)
 print("outputs well-formed:", len(rows), "rows")
 PY
 
-# --from-csv: the same tables again from the rows, the silhouette sweep's included.
+# --from-csv: the same tables again from the rows, the silhouette sweep's and the effects' included.
 if "$penumbra" bench --from-csv "$work/bench/results.csv" --out-dir "$work/again" >/dev/null 2>"$work/again.err" &&
    grep -q "^## Shadow volumes as the silhouette grows" "$work/again/results.md" &&
    grep -q "^## Shadow volumes against the shadow map" "$work/again/results.md" &&
-   cmp -s <(grep -A8 "^| segments" "$work/bench/results.md" | awk -F'|' '{print $2 $3 $(NF-3) $(NF-2) $(NF-1)}') \
-          <(grep -A8 "^| segments" "$work/again/results.md" | awk -F'|' '{print $2 $3 $(NF-3) $(NF-2) $(NF-1)}'); then ok
-else bad "bench --from-csv lost the volumes' tables: $(cat "$work/again.err")"; fi
+   cmp -s <(sed -n '/^## The stencil effects/,/^$/p' "$work/bench/results.md") \
+          <(sed -n '/^## The stencil effects/,/^$/p' "$work/again/results.md") &&
+   grep -q "^| rgba hard | mirror |" "$work/again/results.md" &&
+   cmp -s <(sed -n '/^| segments/,/^$/p' "$work/bench/results.md" | awk -F'|' 'NF > 4 {print $2 $3 $(NF-3) $(NF-2) $(NF-1)}') \
+          <(sed -n '/^| segments/,/^$/p' "$work/again/results.md" | awk -F'|' 'NF > 4 {print $2 $3 $(NF-3) $(NF-2) $(NF-1)}'); then ok
+else bad "bench --from-csv lost the volumes' or the effects' tables: $(cat "$work/again.err")"; fi
 cmp -s "$work/bench/results.csv" "$work/again/results.csv" && ok || bad "bench --from-csv does not write the same CSV back"
 
 # `penumbra bench --soft --quick`: the soft methods against the area-light truth (course scene,

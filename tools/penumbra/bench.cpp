@@ -70,17 +70,17 @@ void turn_light(scene::Light& light, const scene::Light& original, const glm::ve
     light.direction = glm::normalize(glm::vec3(rot * glm::vec4(original.direction, 0.0f)));
 }
 
-}  // namespace bench
-
-namespace {
-
-using namespace bench;
-
 std::string technique_label(const render::Settings& s) {
     if (s.technique == render::Technique::Volumes) return kVolumesPrefix + std::string(render::to_string(s.volume_method));
     if (s.technique != render::Technique::ShadowMap) return std::string(render::to_string(s.technique));
     return std::string(shadow::to_string(s.encoding)) + " " + std::string(shadow::to_string(s.filter));
 }
+
+}  // namespace bench
+
+namespace {
+
+using namespace bench;
 
 // A list option of the bench (--encodings r8,rgba): each value checked by the option table's
 // entry for `option` and read into a Settings.
@@ -510,6 +510,7 @@ void run_sweep(Sweep& w) {
             w.rows.push_back(row);
         }
     silhouette_sweep(w, r, in);
+    effects_sweep(w, r, in);
     w.load_after = load_average();
 }
 

@@ -70,13 +70,21 @@ struct Row {
     // Shadow volumes (render::VolumeStats of the scored frame); silhouette_edges < 0: no volumes.
     int silhouette_edges = -1, volume_triangles = 0, zpass_casters = 0, zfail_casters = 0;
     double fill_per_pixel = 0.0;  // stencil fragments rasterised per pixel of the image
-    // Which table the row belongs to: "" the sweep's (every technique on the scene frames), or
-    // kSilhouetteSection (the sphere of a growing number of segments, bench.cpp silhouette_sweep).
+    // Which table the row belongs to: "" the sweep's (every technique on the scene frames),
+    // kSilhouetteSection (the sphere of a growing number of segments, bench.cpp silhouette_sweep)
+    // or kEffectsSection (the stencil effects on the course frame, effects_bench.cpp).
     std::string section;
     int segments = 0;  // the silhouette sweep's sphere
+    // The effects' rows: the --effects list ("none", "outline", "mirror,portal") and the score in
+    // the mirror's and the opening's pixels alone (region.valid 0: none of them), with the pixels
+    // the truth leaves out as not modelled (measure/effect_truth.h).
+    std::string effects;
+    measure::Score region;
+    std::size_t not_modelled = 0;
 };
 
 inline constexpr const char* kSilhouetteSection = "silhouette";
+inline constexpr const char* kEffectsSection = "effects";
 // The silhouette sweep's spheres: slices around, half as many stacks.
 inline constexpr int kSphereSegments[] = {8, 16, 32, 64, 128};
 
@@ -92,6 +100,8 @@ struct Sweep {
     std::string gl_renderer, context;
     std::vector<Row> rows;
     std::vector<Row> silhouette;  // the silhouette sweep's rows (section kSilhouetteSection)
+    std::vector<Row> effects;     // the effects' rows (section kEffectsSection)
+    std::string effects_frame;    // the scene frame they were measured on ("course@0.60")
     std::vector<std::string> notes;
     std::string command_line;
     std::string from_csv;  // rows read back from this file instead of measured
@@ -115,6 +125,9 @@ inline bool is_volumes(const std::string& technique) { return technique.rfind(kV
 inline constexpr const char* kBeforeSuffix = " (before)";
 
 // ---- bench.cpp: helpers the sweep and the soft-shadow bench (soft_bench.cpp) share -------------
+
+// The technique column: "rgba pcf4x4", "volumes auto", "planar".
+std::string technique_label(const render::Settings& s);
 
 // "teapot@0.6" -> {teapot, 0.6, course@0.60}; "FILE.gltf" -> {FILE.gltf, 0, FILE's stem}.
 SceneSpec parse_scene_spec(const std::string& spec);
@@ -151,6 +164,13 @@ Timing time_frames(render::Renderer& r, const render::Settings& s, const render:
     t.median_ms = measure::median(ms);
     return t;
 }
+
+// ---- effects_bench.cpp: the stencil effects on the course frame ---------------------------------
+
+// Each effect alone and all three, under the sweep's default technique and shadow volumes, on the
+// first course frame of --scenes: the error against the effects' truth (the frame, and the mirror's
+// and the opening's pixels alone) and ms/frame, into w.effects. No course frame: a note, no rows.
+void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in);
 
 // ---- soft_bench.cpp: penumbra bench --soft ------------------------------------------------------
 

@@ -53,10 +53,13 @@ std::string csv(const Sweep& w) {
     std::ostringstream o;
     o << "scene,time,width,height,technique,encoding,filter,map_size," << measure::score_csv_header()
       << ",ms_moving,ms_still,ms_shadow_pass,ms_camera_pass,frames,redrawn_moving,redrawn_still,shadow_map_bytes,texel_use_pct,"
-         "silhouette_edges,volume_triangles,fill_per_pixel,zpass_casters,zfail_casters,section,segments,settings\n";
+         "silhouette_edges,volume_triangles,fill_per_pixel,zpass_casters,zfail_casters,section,segments,"
+         "effects,effect_error_pct,effect_false_shadow_pct,effect_false_lit_pct,effect_valid_pixels,not_modelled_pixels,"
+         "settings\n";
     std::vector<const Row*> rows;
     for (const Row& r : w.rows) rows.push_back(&r);
     for (const Row& r : w.silhouette) rows.push_back(&r);
+    for (const Row& r : w.effects) rows.push_back(&r);
     for (const Row* rp : rows) {
         const Row& r = *rp;
         const bool vol = r.silhouette_edges >= 0;
@@ -67,8 +70,16 @@ std::string csv(const Sweep& w) {
           << (r.texel_use_pct >= 0.0 ? fixed(r.texel_use_pct, 1) : "") << "," << (vol ? std::to_string(r.silhouette_edges) : "") << ","
           << (vol ? std::to_string(r.volume_triangles) : "") << "," << (vol ? fixed(r.fill_per_pixel, 3) : "") << ","
           << (vol ? std::to_string(r.zpass_casters) : "") << "," << (vol ? std::to_string(r.zfail_casters) : "") << ","
-          << (r.section.empty() ? "sweep" : r.section) << "," << (r.segments ? std::to_string(r.segments) : "") << ",\""
-          << r.settings << "\"\n";
+          << (r.section.empty() ? "sweep" : r.section) << "," << (r.segments ? std::to_string(r.segments) : "") << ",";
+        if (r.section == kEffectsSection) {
+            const bool region = r.region.valid > 0;
+            o << "\"" << r.effects << "\"," << (region ? fixed(r.region.error_pct, 4) : "") << ","
+              << (region ? fixed(r.region.false_shadow_pct, 4) : "") << "," << (region ? fixed(r.region.false_lit_pct, 4) : "")
+              << "," << r.region.valid << "," << r.not_modelled << ",";
+        } else {
+            o << ",,,,,,";
+        }
+        o << "\"" << r.settings << "\"\n";
     }
     return o.str();
 }
@@ -347,6 +358,40 @@ std::string silhouette_table(const Sweep& w) {
     return o.str();
 }
 
+// The stencil effects on the course frame (effects_bench.cpp): per technique, each effect set's
+// error (the frame, and the mirror's and opening's pixels) and ms/frame beside "none". Empty
+// without its rows.
+std::string effects_table(const Sweep& w) {
+    if (w.effects.empty()) return "";
+    std::ostringstream o;
+    o << "\n## The stencil effects on " << w.effects_frame << "\n\n"
+      << "Each effect alone and all three under the default technique and shadow volumes, " << w.width << "x" << w.height
+      << ", the same run. Error: the visibility AOV against the effects' ray-traced hard truth (the mirror's pixels traced "
+         "in the mirrored scene, the opening's in the portal's scene; the visibility AOV shows the surface seen in the "
+         "mirror whole, whatever the reflectivity); \"in the mirror/opening\" counts only their valid pixels. The "
+         "outline is a colour: its error is the frame's under it. Not modelled: pixels the truth leaves out because the "
+         "renderer leaves them out on purpose (the mirror does not reflect the portal). ms/frame: the median of "
+      << w.o.rounds << " interleaved round(s) of " << w.o.frames
+      << " frames (moving: the course animated 1/60 s a frame; still: the same frame again); + ms: over \"none\" with "
+         "the same technique, moving.\n\n"
+      << "| technique | effects | error % | error % in the mirror/opening | px compared there | false lit % there | "
+         "not modelled px | ms/frame moving | ms/frame still | + ms | map bytes |\n"
+      << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const Row& r : w.effects) {
+        const Row* none = nullptr;
+        for (const Row& q : w.effects)
+            if (q.technique == r.technique && q.effects == "none") none = &q;
+        const bool region = r.region.valid > 0;
+        o << "| " << r.technique << " | " << r.effects << " | " << fixed(r.score.error_pct, 2) << " | "
+          << (region ? fixed(r.region.error_pct, 2) : "-") << " | " << r.region.valid << " | "
+          << (region ? fixed(r.region.false_lit_pct, 2) : "-") << " | " << r.not_modelled << " | " << fixed(r.ms_moving, 2)
+          << " | " << fixed(r.ms_still, 2) << " | "
+          << (none && none != &r ? (r.ms_moving >= none->ms_moving ? "+" : "") + fixed(r.ms_moving - none->ms_moving, 2) : "-")
+          << " | " << bytes_str(r.bytes) << " |\n";
+    }
+    return o.str();
+}
+
 std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& front) {
     std::ostringstream o;
     const auto all = select(w, [](const Row&) { return true; });
@@ -472,6 +517,7 @@ std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& fro
         }
     }
     o << silhouette_table(w);
+    o << effects_table(w);
     if (!w.notes.empty()) {
         o << "\n## Notes\n\n";
         for (const auto& n : w.notes) o << "- " << n << "\n";
@@ -593,6 +639,18 @@ void read_csv(Sweep& w, const std::string& path) {
         if (get("section") == kSilhouetteSection) {
             r.section = kSilhouetteSection;
             w.silhouette.push_back(r);
+            continue;
+        }
+        if (get("section") == kEffectsSection) {
+            r.section = kEffectsSection;
+            r.effects = get("effects");
+            r.region.valid = static_cast<std::size_t>(num("effect_valid_pixels", 0));
+            r.region.error_pct = num("effect_error_pct", 0.0);
+            r.region.false_shadow_pct = num("effect_false_shadow_pct", 0.0);
+            r.region.false_lit_pct = num("effect_false_lit_pct", 0.0);
+            r.not_modelled = static_cast<std::size_t>(num("not_modelled_pixels", 0));
+            w.effects_frame = r.scene;
+            w.effects.push_back(r);
             continue;
         }
         if (r.scene.empty() || r.technique.empty())
