@@ -125,8 +125,9 @@ struct Scene;
 // A portal (--effects portal, render/techniques/portal.cpp): a rectangular opening standing in
 // the scene through which another scene is seen, with its own objects, light and shadows, in the
 // camera's view (the other scene lies where the opening looks, clipped at the opening's plane).
-// The opening and its frame are the effect's, not the scene's objects: the truth, the shadow
-// techniques and the bench do not see them. Their meshes and material are kept with the other
+// The opening and its frame are the effect's, not the scene's objects: the scene's truth and the
+// shadow techniques do not see them (the effects' truth, measure/effect_truth.h, adds them as
+// objects that cast no shadow). Their meshes and material are kept with the other
 // scene's (`beyond`), so this scene's own lists are what they are without the portal.
 struct Portal {
     int opening_mesh = -1;    // in beyond's meshes: the opening, facing +z in its local z = 0 plane

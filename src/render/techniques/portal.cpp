@@ -26,7 +26,8 @@
 // The other scene is shadow-mapped whatever this scene's technique (its own map, with this
 // frame's encoding, filter, bias and precision, rgba where the context has no depth texture);
 // --technique none leaves it unshadowed too. The frame is the effect's, not a scene object:
-// it is drawn after this scene's shadows were made and casts none (the truth has no frame either).
+// it is drawn after this scene's shadows were made and casts none (the effects' truth,
+// measure/effect_truth.h, adds it as an object that casts none).
 #include <cstdio>
 
 #include "render/techniques/technique.h"
