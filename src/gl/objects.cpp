@@ -100,6 +100,58 @@ std::size_t Renderbuffer::bytes() const {
 
 // ---- Framebuffer ----------------------------------------------------------------------------
 
+std::string framebuffer_status_meaning(unsigned int status) {
+    switch (status) {
+        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
+            return "an attachment cannot be rendered to: its format is not renderable at that attachment point (a "
+                   "depth texture as colour, a colour format the context cannot draw into) or its image has no size";
+        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
+            return "nothing is attached: a framebuffer needs at least one image";
+        case GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS:
+            return "the attachments differ in size: GLES2 and WebGL 1 need every image of one framebuffer to have the "
+                   "same width and height";
+        case GL_FRAMEBUFFER_UNSUPPORTED:
+            return "this implementation does not support this combination of formats (separate depth and stencil "
+                   "buffers are the usual one: attach a packed depth-stencil instead)";
+        default: return "";
+    }
+}
+
+namespace {
+
+const char* texture_format_name(TextureFormat f) { return f == TextureFormat::Depth ? "depth" : "rgba8"; }
+
+const char* renderbuffer_format_name(RenderbufferFormat f) {
+    switch (f) {
+        case RenderbufferFormat::Depth16: return "depth16";
+        case RenderbufferFormat::Depth24: return "depth24";
+        case RenderbufferFormat::Depth24Stencil8: return "depth24-stencil8";
+        case RenderbufferFormat::DepthStencil: return "depth-stencil";
+        case RenderbufferFormat::Stencil8: return "stencil8";
+    }
+    return "?";
+}
+
+// "colour texture rgba8 64x64, depth renderbuffer depth16 32x32", or "nothing".
+std::string attachments(const FramebufferDesc& d) {
+    std::string out;
+    const auto add = [&](const std::string& s) { out += (out.empty() ? "" : ", ") + s; };
+    const auto size = [](int w, int h) { return std::to_string(w) + "x" + std::to_string(h); };
+    if (d.color) add(std::string("colour texture ") + texture_format_name(d.color->format()) + " " + size(d.color->width(), d.color->height()));
+    if (d.depth_texture)
+        add(std::string("depth texture ") + texture_format_name(d.depth_texture->format()) + " " +
+            size(d.depth_texture->width(), d.depth_texture->height()));
+    if (d.depth)
+        add(std::string("depth renderbuffer ") + renderbuffer_format_name(d.depth->format()) + " " +
+            size(d.depth->width(), d.depth->height()));
+    if (d.stencil)
+        add(std::string("stencil renderbuffer ") + renderbuffer_format_name(d.stencil->format()) + " " +
+            size(d.stencil->width(), d.stencil->height()));
+    return out.empty() ? "nothing" : out;
+}
+
+}  // namespace
+
 Framebuffer::Framebuffer(const FramebufferDesc& d) {
     GLuint id = 0;
     glGenFramebuffers(1, &id);
@@ -123,8 +175,11 @@ Framebuffer::Framebuffer(const FramebufferDesc& d) {
         PENUMBRA_GL(glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, d.stencil->id()));
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     PENUMBRA_GL(glBindFramebuffer(GL_FRAMEBUFFER, 0));
-    if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw Error(std::string(d.label) + ": framebuffer incomplete: " + enum_name(status));
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        const std::string meaning = framebuffer_status_meaning(status);
+        throw Error(std::string(d.label) + ": framebuffer incomplete: " + enum_name(status) + (meaning.empty() ? "" : ": " + meaning) +
+                    " (attached: " + attachments(d) + ")");
+    }
     check_errors(d.label, __FILE__, __LINE__);
 }
 

@@ -101,6 +101,8 @@ public:
     Renderbuffer(RenderbufferFormat format, int width, int height, const char* label);
     std::uint32_t id() const { return h_.id(); }
     RenderbufferFormat format() const { return format_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
     std::size_t bytes() const;
 
 private:
@@ -110,7 +112,8 @@ private:
 };
 
 // A framebuffer object with its attachments; completeness is checked where it is made and a
-// failure names the status (GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT, ...).
+// failure names the status (GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT, ...), says what it means and
+// lists what was attached (framebuffer_status_meaning).
 struct FramebufferDesc {
     const Texture* color = nullptr;
     const Texture* depth_texture = nullptr;
@@ -118,6 +121,11 @@ struct FramebufferDesc {
     const Renderbuffer* stencil = nullptr;
     const char* label = "framebuffer";
 };
+
+// What an incomplete framebuffer's status means, in the course notes' failure classes: an
+// attachment that cannot be rendered, none at all, sizes that differ, a combination the
+// implementation does not support. Empty for GL_FRAMEBUFFER_COMPLETE and unknown values.
+std::string framebuffer_status_meaning(unsigned int status);
 
 class Framebuffer {
 public:

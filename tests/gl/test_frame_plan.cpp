@@ -4,7 +4,9 @@
 #include "gl_fixture.h"
 
 #include <algorithm>
+#include <cstdio>
 
+#include "gl/objects.h"
 #include "render/options.h"
 #include "scene/course_scene.h"
 #include "scene/scene_source.h"
@@ -182,16 +184,86 @@ TEST_F(RendererGl, ABrokenShaderNamesItsStageAndLog) {
     }
 }
 
+// The framebuffer's failure classes (the course notes' FBO validation): each incomplete status
+// provoked, and the error naming it, saying what it means and listing what was attached. Missing
+// and attachment failures every GLES2 context produces; differing sizes and separate depth and
+// stencil buffers are allowed by some (GLES3 lifted the first; a driver may support the second):
+// there the framebuffer must be complete, and the test says which the context did.
+std::string incomplete(const gl::FramebufferDesc& d) {
+    try {
+        gl::Framebuffer fb(d);
+    } catch (const gl::Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
 TEST_F(RendererGl, AnIncompleteFramebufferNamesItsStatus) {
     gl::FramebufferDesc d;  // nothing attached
     d.label = "empty";
-    try {
-        gl::Framebuffer fb(d);
-        FAIL() << "an FBO without attachments was complete";
-    } catch (const gl::Error& e) {
-        EXPECT_NE(std::string(e.what()).find("GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT"), std::string::npos)
-            << e.what();
+    const std::string e = incomplete(d);
+    EXPECT_NE(e.find("empty: framebuffer incomplete: GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: nothing is attached"),
+              std::string::npos)
+        << e;
+    EXPECT_NE(e.find("(attached: nothing)"), std::string::npos) << e;
+}
+
+TEST_F(RendererGl, AnUnrenderableAttachmentIsNamed) {
+    if (!renderer->caps().depth_texture) GTEST_SKIP() << "no OES_depth_texture: no depth texture to misplace";
+    gl::TextureDesc td;
+    td.width = td.height = 32;
+    td.format = gl::TextureFormat::Depth;
+    td.label = "depth as colour";
+    const gl::Texture depth(td);
+    gl::FramebufferDesc d;
+    d.color = &depth;  // a depth format at the colour attachment
+    d.label = "misplaced";
+    const std::string e = incomplete(d);
+    EXPECT_NE(e.find("GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: an attachment cannot be rendered to"), std::string::npos) << e;
+    EXPECT_NE(e.find("(attached: colour texture depth 32x32)"), std::string::npos) << e;
+}
+
+TEST_F(RendererGl, DifferingSizesAreNamedWhereTheContextRefusesThem) {
+    gl::TextureDesc td;
+    td.width = td.height = 64;
+    const gl::Texture color(td);
+    const gl::Renderbuffer depth(gl::RenderbufferFormat::Depth16, 32, 32, "small depth");
+    gl::FramebufferDesc d;
+    d.color = &color;
+    d.depth = &depth;
+    d.label = "mismatched";
+    const std::string e = incomplete(d);
+    std::printf("colour 64x64 + depth 32x32 on %s: %s\n", renderer->caps().renderer.c_str(),
+                e.empty() ? "complete (this context allows differing sizes)" : e.c_str());
+    if (!e.empty()) {
+        EXPECT_NE(e.find("GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS: the attachments differ in size"), std::string::npos) << e;
+        EXPECT_NE(e.find("(attached: colour texture rgba8 64x64, depth renderbuffer depth16 32x32)"), std::string::npos) << e;
     }
+}
+
+TEST_F(RendererGl, SeparateDepthAndStencilAreNamedWhereUnsupported) {
+    gl::TextureDesc td;
+    td.width = td.height = 32;
+    const gl::Texture color(td);
+    const gl::Renderbuffer depth(gl::RenderbufferFormat::Depth16, 32, 32, "depth");
+    const gl::Renderbuffer stencil(gl::RenderbufferFormat::Stencil8, 32, 32, "stencil");
+    gl::FramebufferDesc d;
+    d.color = &color;
+    d.depth = &depth;
+    d.stencil = &stencil;
+    d.label = "separate";
+    const std::string e = incomplete(d);
+    std::printf("depth16 + stencil8 apart on %s: %s\n", renderer->caps().renderer.c_str(),
+                e.empty() ? "complete (this context supports them apart)" : e.c_str());
+    if (!e.empty()) {
+        EXPECT_NE(e.find("GL_FRAMEBUFFER_UNSUPPORTED: this implementation does not support"), std::string::npos) << e;
+    }
+}
+
+TEST(FramebufferStatus, EveryIncompleteStatusHasAMeaning) {
+    for (unsigned int s : {0x8CD6u, 0x8CD7u, 0x8CD9u, 0x8CDDu})  // attachment, missing, dimensions, unsupported
+        EXPECT_FALSE(gl::framebuffer_status_meaning(s).empty()) << std::hex << s;
+    EXPECT_TRUE(gl::framebuffer_status_meaning(0x8CD5u).empty());  // complete
 }
 
 TEST_F(RendererGl, GltfSceneRendersWithAShadow) {
