@@ -121,17 +121,6 @@ namespace {
 
 const char* texture_format_name(TextureFormat f) { return f == TextureFormat::Depth ? "depth" : "rgba8"; }
 
-const char* renderbuffer_format_name(RenderbufferFormat f) {
-    switch (f) {
-        case RenderbufferFormat::Depth16: return "depth16";
-        case RenderbufferFormat::Depth24: return "depth24";
-        case RenderbufferFormat::Depth24Stencil8: return "depth24-stencil8";
-        case RenderbufferFormat::DepthStencil: return "depth-stencil";
-        case RenderbufferFormat::Stencil8: return "stencil8";
-    }
-    return "?";
-}
-
 // "colour texture rgba8 64x64, depth renderbuffer depth16 32x32", or "nothing".
 std::string attachments(const FramebufferDesc& d) {
     std::string out;
@@ -142,10 +131,10 @@ std::string attachments(const FramebufferDesc& d) {
         add(std::string("depth texture ") + texture_format_name(d.depth_texture->format()) + " " +
             size(d.depth_texture->width(), d.depth_texture->height()));
     if (d.depth)
-        add(std::string("depth renderbuffer ") + renderbuffer_format_name(d.depth->format()) + " " +
+        add(std::string("depth renderbuffer ") + to_string(d.depth->format()) + " " +
             size(d.depth->width(), d.depth->height()));
     if (d.stencil)
-        add(std::string("stencil renderbuffer ") + renderbuffer_format_name(d.stencil->format()) + " " +
+        add(std::string("stencil renderbuffer ") + to_string(d.stencil->format()) + " " +
             size(d.stencil->width(), d.stencil->height()));
     return out.empty() ? "nothing" : out;
 }

@@ -17,16 +17,6 @@ glm::vec4 unit_plane(glm::vec4 p, const char* what) {
     return p / len;
 }
 
-// The reflection about the plane (n, d), |n| = 1: x -> x - 2 (n.x + d) n.
-glm::mat4 reflection(const glm::vec4& p) {
-    const glm::vec3 n(p);
-    glm::mat4 r(1.0f);
-    for (int col = 0; col < 3; ++col)
-        for (int row = 0; row < 3; ++row) r[col][row] -= 2.0f * n[row] * n[col];
-    r[3] = glm::vec4(-2.0f * p.w * n, 1.0f);
-    return r;
-}
-
 // A point in front of the camera's centre pixel, on its near plane: which side of a plane the
 // camera is on.
 glm::vec3 near_point(const TruthOptions& o) {
@@ -84,7 +74,7 @@ scene::Scene mirrored_scene(const scene::Scene& scene) {
     if (!scene.ground_plane || scene.ground_object < 0 || scene.ground_object >= static_cast<int>(scene.objects.size()))
         throw std::invalid_argument("the mirror's truth: the scene has no ground plane with an object in it");
     const glm::vec4 plane = unit_plane(*scene.ground_plane, "the mirror's truth");
-    const glm::mat4 R = reflection(plane);
+    const glm::mat4 R = scene::reflection(plane);
     scene::Scene m;
     m.materials = scene.materials;
     m.images = scene.images;
@@ -136,7 +126,7 @@ EffectTruth trace_effects(const scene::Scene& scene, bool mirror, bool portal, c
         if (portal) {
             scene::Scene with = m;
             std::tie(frame_m, opening_m) = add_portal_objects(with, *scene.portal);
-            const glm::mat4 R = reflection(unit_plane(*scene.ground_plane, "the mirror's truth"));
+            const glm::mat4 R = scene::reflection(unit_plane(*scene.ground_plane, "the mirror's truth"));
             for (int k : {frame_m, opening_m}) {
                 scene::Object& o = with.objects[static_cast<size_t>(k)];
                 scene::Mesh& mesh = with.meshes[static_cast<size_t>(o.mesh)];

@@ -70,6 +70,15 @@ Bounds mesh_bounds(const Mesh& mesh) {
     return b;
 }
 
+glm::mat4 reflection(const glm::vec4& plane) {
+    const glm::vec3 n(plane);
+    glm::mat4 r(1.0f);
+    for (int col = 0; col < 3; ++col)
+        for (int row = 0; row < 3; ++row) r[col][row] -= 2.0f * n[row] * n[col];
+    r[3] = glm::vec4(-2.0f * plane.w * n, 1.0f);
+    return r;
+}
+
 std::vector<glm::vec3> corners(const Bounds& b) {
     std::vector<glm::vec3> out;
     out.reserve(8);

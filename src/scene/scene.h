@@ -168,4 +168,8 @@ Bounds scene_bounds(const Scene& scene, bool casters_only = false);
 // The eight corners of a box.
 std::vector<glm::vec3> corners(const Bounds& b);
 
+// The reflection about the plane (n, d) with |n| = 1: x -> x - 2 (n.x + d) n (a mirror's; it turns
+// the triangles' winding).
+glm::mat4 reflection(const glm::vec4& plane);
+
 }  // namespace penumbra::scene

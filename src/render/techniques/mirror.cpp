@@ -57,16 +57,6 @@ glm::vec4 facing_plane(const PlanContext& c) {
     return side > 0.0f ? p : -p;
 }
 
-// The reflection about the plane (n, d): x -> x - 2 (n.x + d) n.
-glm::mat4 reflection(const glm::vec4& p) {
-    const glm::vec3 n(p);
-    glm::mat4 r(1.0f);
-    for (int col = 0; col < 3; ++col)
-        for (int row = 0; row < 3; ++row) r[col][row] -= 2.0f * n[row] * n[col];
-    r[3] = glm::vec4(-2.0f * p.w * n, 1.0f);
-    return r;
-}
-
 gl::Cull turned(gl::Cull c) {
     return c == gl::Cull::Back ? gl::Cull::Front : c == gl::Cull::Front ? gl::Cull::Back : gl::Cull::None;
 }
@@ -133,7 +123,7 @@ public:
         c.add_pass(std::move(far));
 
         // The reflected view: the camera's uniforms with the reflected eye, and the clip plane.
-        const glm::mat4 R = reflection(plane);
+        const glm::mat4 R = scene::reflection(plane);
         std::vector<Binding> bindings = c.lit_bindings();
         for (Uniform& u : bindings[0].uniforms) {
             if (u.name == "u_view_proj") u.value = c.plan.camera.view_proj * R;
