@@ -68,18 +68,12 @@ public:
     std::string check(const PlanContext& c) const override {
         if (!has_mirror(c))
             return "--effects mirror: the scene has no ground plane with an object in it to make a mirror of";
-        if (!c.inputs.output.window && !c.caps.packed_depth_stencil)
-            return "--effects mirror: this context has no OES_packed_depth_stencil for the stencil buffer";
-        return {};
+        return stencil_buffer_problem(c, "--effects mirror");
     }
 
     std::vector<StencilUse> stencil_uses(const PlanContext& c) const override {
         if (!has_mirror(c)) return {};
-        StencilUse u;
-        u.name = kUse;
-        u.module = "mirror";
-        u.bits = 1;
-        return {u};
+        return {marking_use(kUse, "mirror")};
     }
 
     void after_opaque(PlanContext& c) const override {

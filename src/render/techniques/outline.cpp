@@ -50,18 +50,12 @@ public:
     std::string_view name() const override { return "outline"; }
 
     std::string check(const PlanContext& c) const override {
-        if (!c.inputs.output.window && !c.caps.packed_depth_stencil)
-            return "--effects outline: this context has no OES_packed_depth_stencil for the stencil buffer";
-        return {};
+        return stencil_buffer_problem(c, "--effects outline");
     }
 
     std::vector<StencilUse> stencil_uses(const PlanContext& c) const override {
         if (outlined(c).empty()) return {};
-        StencilUse u;
-        u.name = kUse;
-        u.module = "outline";
-        u.bits = 1;
-        return {u};
+        return {marking_use(kUse, "outline")};
     }
 
     void after_camera(PlanContext& c) const override {

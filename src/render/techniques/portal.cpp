@@ -68,18 +68,12 @@ public:
         if (!beyond(c))
             return "--effects portal: the scene has no portal to draw (the course scene, --scene teapot, has one; "
                    "a glTF scene has none)";
-        if (!c.inputs.output.window && !c.caps.packed_depth_stencil)
-            return "--effects portal: this context has no OES_packed_depth_stencil for the stencil buffer";
-        return {};
+        return stencil_buffer_problem(c, "--effects portal");
     }
 
     std::vector<StencilUse> stencil_uses(const PlanContext& c) const override {
         if (!beyond(c)) return {};
-        StencilUse u;
-        u.name = kUse;
-        u.module = "portal";
-        u.bits = 1;
-        return {u};
+        return {marking_use(kUse, "portal")};
     }
 
     void after_opaque(PlanContext& c) const override {

@@ -58,6 +58,19 @@ std::string shade_after_camera(PlanContext& c, Pass& p, std::vector<CameraItem>&
     return {};
 }
 
+std::string stencil_buffer_problem(const PlanContext& c, std::string_view who) {
+    if (c.inputs.output.window || c.caps.packed_depth_stencil) return {};
+    return std::string(who) + ": this context has no OES_packed_depth_stencil for the stencil buffer";
+}
+
+StencilUse marking_use(std::string name, std::string module) {
+    StencilUse u;
+    u.name = std::move(name);
+    u.module = std::move(module);
+    u.bits = 1;
+    return u;
+}
+
 Pass far_plane_pass(const PlanContext& c, std::string name, std::string module, const StencilUse& use, int value,
                     const glm::vec4& colour) {
     Pass p;

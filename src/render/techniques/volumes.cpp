@@ -59,8 +59,7 @@ public:
     std::string_view name() const override { return "volumes"; }
 
     std::string check(const PlanContext& c) const override {
-        if (!c.inputs.output.window && !c.caps.packed_depth_stencil)
-            return "--technique volumes: this context has no OES_packed_depth_stencil for the stencil buffer";
+        if (std::string p = stencil_buffer_problem(c, "--technique volumes"); !p.empty()) return p;
         glm::mat4 p = camera_view(c.scene, c.inputs).proj;
         if (!shadow::infinite_far(p))
             return "--technique volumes: needs a perspective camera (its far plane is moved to infinity)";
