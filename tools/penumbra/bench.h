@@ -45,6 +45,13 @@ inline std::string fixed(double v, int digits) {
     return b;
 }
 
+// "8.0 MiB", "512 KiB", "0".
+inline std::string bytes_str(std::size_t b) {
+    if (b == 0) return "0";
+    if (b >= (1u << 20)) return fixed(static_cast<double>(b) / (1u << 20), b >= (16u << 20) ? 0 : 1) + " MiB";
+    return fixed(static_cast<double>(b) / 1024.0, 0) + " KiB";
+}
+
 // "teapot@0.6", "teapot" (t = 0), "FILE.gltf", "FILE.gltf@2" (a glTF scene is static).
 struct SceneSpec {
     std::string name;
@@ -185,6 +192,11 @@ struct Report {
     double elapsed = 0.0;    // seconds since t0 when results.md was written
 };
 Report write_report(const Sweep& w, const std::filesystem::path& dir, Clock::time_point t0);
+
+// bench_sections.cpp: the tables of the sections beside the sweep in results.md, each empty without
+// its rows: the silhouette sweep's (Sweep::silhouette) and the stencil effects' (Sweep::effects).
+std::string silhouette_table(const Sweep& w);
+std::string effects_table(const Sweep& w);
 
 // Reads rows written by the CSV writer (or by another harness with the same columns, e.g. three.js
 // runs scored with `penumbra truth --score`): the scenes, sizes and map sizes follow from the rows.

@@ -1,6 +1,6 @@
 // penumbra bench's outputs: results.csv (one row per scene frame and technique), results.md (the
-// tables of means), tradeoff.svg/.png and tradeoff_mae.svg/.png (error against time with the
-// Pareto front); --from-csv reads the rows back.
+// tables of means; the sections' tables are bench_sections.cpp's), tradeoff.svg/.png and
+// tradeoff_mae.svg/.png (error against time with the Pareto front); --from-csv reads the rows back.
 #include <algorithm>
 #include <cmath>
 #include <ctime>
@@ -39,13 +39,6 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
 }
 
 namespace {
-
-std::string bytes_str(std::size_t b) {
-    if (b == 0) return "0";
-    if (b >= (1u << 20)) return fixed(static_cast<double>(b) / (1u << 20), b >= (16u << 20) ? 0 : 1) + " MiB";
-    return fixed(static_cast<double>(b) / 1024.0, 0) + " KiB";
-}
-
 
 // One row per scene frame and technique; the score's columns are the score table's
 // (measure/score_columns.h), between the frame's and the time's.
@@ -312,83 +305,6 @@ std::string volumes_against_map(const Sweep& w, const std::vector<const Row*>& a
     }
     const auto means = means_by_key(chosen);
     for (const Key& k : keys_in_order(chosen)) line("**mean**", key_label(k), means.at(k), nullptr);
-    return o.str();
-}
-
-// The silhouette sweep: a sphere of a growing number of segments under a point light, volumes
-// (auto) against rgba hard 1024. Empty without its rows.
-std::string silhouette_table(const Sweep& w) {
-    if (w.silhouette.empty()) return "";
-    std::vector<int> segs;
-    std::vector<std::string> techniques;
-    for (const Row& r : w.silhouette) {
-        if (std::find(segs.begin(), segs.end(), r.segments) == segs.end()) segs.push_back(r.segments);
-        if (std::find(techniques.begin(), techniques.end(), key_label({r.technique, r.map})) == techniques.end())
-            techniques.push_back(key_label({r.technique, r.map}));
-    }
-    const auto find = [&](int seg, const std::string& t) -> const Row* {
-        for (const Row& r : w.silhouette)
-            if (r.segments == seg && key_label({r.technique, r.map}) == t) return &r;
-        return nullptr;
-    };
-    std::ostringstream o;
-    o << "\n## Shadow volumes as the silhouette grows\n\n"
-      << "A UV sphere (radius 1, N slices x N/2 stacks, 2 above a 10 x 10 ground quad) under a point light, "
-      << w.width << "x" << w.height << ", the same run: ms/frame is the median of " << w.o.rounds << " interleaved round(s) of "
-      << w.o.frames << " frames (moving: the light turning half a degree a frame; still: the same frame again, a map "
-         "reused); error against the ray-traced hard truth of each frame. Silhouette edges, volume triangles and fill "
-         "(stencil fragments per pixel) are the volumes'.\n\n"
-      << "| segments | sphere triangles |";
-    for (const auto& t : techniques) o << " " << t << " error % | " << t << " ms moving | " << t << " ms still |";
-    o << " silhouette edges | volume triangles | fill per pixel |\n|---:|---:|";
-    for (size_t i = 0; i < techniques.size(); ++i) o << "---:|---:|---:|";
-    o << "---:|---:|---:|\n";
-    for (int seg : segs) {
-        o << "| " << seg << " | " << 2 * seg * (seg / 2 - 1) << " |";
-        const Row* vol = nullptr;
-        for (const auto& t : techniques) {
-            const Row* r = find(seg, t);
-            if (r && r->silhouette_edges >= 0) vol = r;
-            o << " " << (r ? fixed(r->score.error_pct, 2) : "-") << " | " << (r ? fixed(r->ms_moving, 2) : "-") << " | "
-              << (r ? fixed(r->ms_still, 2) : "-") << " |";
-        }
-        o << " " << (vol ? std::to_string(vol->silhouette_edges) : "-") << " | " << (vol ? std::to_string(vol->volume_triangles) : "-")
-          << " | " << (vol ? fixed(vol->fill_per_pixel, 2) : "-") << " |\n";
-    }
-    return o.str();
-}
-
-// The stencil effects on the course frame (effects_bench.cpp): per technique, each effect set's
-// error (the frame, and the mirror's and opening's pixels) and ms/frame beside "none". Empty
-// without its rows.
-std::string effects_table(const Sweep& w) {
-    if (w.effects.empty()) return "";
-    std::ostringstream o;
-    o << "\n## The stencil effects on " << w.effects_frame << "\n\n"
-      << "Each effect alone and all three under the default technique and shadow volumes, " << w.width << "x" << w.height
-      << ", the same run. Error: the visibility AOV against the effects' ray-traced hard truth (the mirror's pixels traced "
-         "in the mirrored scene, the opening's in the portal's scene; the visibility AOV shows the surface seen in the "
-         "mirror whole, whatever the reflectivity); \"in the mirror/opening\" counts only their valid pixels. The "
-         "outline is a colour: its error is the frame's under it. Not modelled: pixels the truth leaves out because the "
-         "renderer leaves them out on purpose (the mirror does not reflect the portal). ms/frame: the median of "
-      << w.o.rounds << " interleaved round(s) of " << w.o.frames
-      << " frames (moving: the course animated 1/60 s a frame; still: the same frame again); + ms: over \"none\" with "
-         "the same technique, moving.\n\n"
-      << "| technique | effects | error % | error % in the mirror/opening | px compared there | false lit % there | "
-         "not modelled px | ms/frame moving | ms/frame still | + ms | map bytes |\n"
-      << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-    for (const Row& r : w.effects) {
-        const Row* none = nullptr;
-        for (const Row& q : w.effects)
-            if (q.technique == r.technique && q.effects == "none") none = &q;
-        const bool region = r.region.valid > 0;
-        o << "| " << r.technique << " | " << r.effects << " | " << fixed(r.score.error_pct, 2) << " | "
-          << (region ? fixed(r.region.error_pct, 2) : "-") << " | " << r.region.valid << " | "
-          << (region ? fixed(r.region.false_lit_pct, 2) : "-") << " | " << r.not_modelled << " | " << fixed(r.ms_moving, 2)
-          << " | " << fixed(r.ms_still, 2) << " | "
-          << (none && none != &r ? (r.ms_moving >= none->ms_moving ? "+" : "") + fixed(r.ms_moving - none->ms_moving, 2) : "-")
-          << " | " << bytes_str(r.bytes) << " |\n";
-    }
     return o.str();
 }
 
