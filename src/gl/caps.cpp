@@ -50,6 +50,10 @@ Caps probe_caps(Api api) {
     c.packed_depth_stencil = api == Api::WebGL1 || c.has("GL_OES_packed_depth_stencil");
     c.depth24 = c.has("GL_OES_depth24");
     c.element_index_uint = c.has("GL_OES_element_index_uint") || c.has("OES_element_index_uint");
+    c.half_float_target = (c.has("GL_OES_texture_half_float") || c.has("OES_texture_half_float")) &&
+                          (c.has("GL_EXT_color_buffer_half_float") || c.has("EXT_color_buffer_half_float"));
+    c.draw_buffers = c.has("GL_EXT_draw_buffers") || c.has("WEBGL_draw_buffers");
+    c.render_mipmap = c.has("GL_OES_fbo_render_mipmap");
 
     c.max_texture_size = get_int(GL_MAX_TEXTURE_SIZE);
     c.max_renderbuffer_size = get_int(GL_MAX_RENDERBUFFER_SIZE);
@@ -77,7 +81,9 @@ std::string Caps::summary() const {
       << fragment_mediump_float.precision << ", lowp " << fragment_lowp_float.precision << "\n"
       << "depth texture " << (depth_texture ? "yes" : "no") << ", packed depth-stencil "
       << (packed_depth_stencil ? "yes" : "no") << ", depth24 " << (depth24 ? "yes" : "no")
-      << ", uint indices " << (element_index_uint ? "yes" : "no");
+      << ", uint indices " << (element_index_uint ? "yes" : "no") << "\n"
+      << "half-float targets " << (half_float_target ? "yes" : "no") << ", draw buffers "
+      << (draw_buffers ? "yes" : "no") << ", render into mip levels " << (render_mipmap ? "yes" : "no");
     return s.str();
 }
 

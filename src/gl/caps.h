@@ -33,6 +33,13 @@ struct Caps {
     bool depth24 = false;               // OES_depth24 renderbuffers
     bool element_index_uint = false;    // OES_element_index_uint
     bool fragment_highp = false;        // highp float in fragment shaders (optional in ES 2.0)
+    // Multipass: half-float colour targets (OES_texture_half_float to sample them and
+    // EXT_color_buffer_half_float to render into them; both, or the post passes stay RGBA8),
+    // several colour attachments (EXT_draw_buffers / WEBGL_draw_buffers), rendering into a
+    // texture's mip levels other than 0 (OES_fbo_render_mipmap; WebGL 1 cannot).
+    bool half_float_target = false;
+    bool draw_buffers = false;
+    bool render_mipmap = false;
     // The context truncates float colours to unorm8 instead of rounding them: found by the
     // renderer's probe (render/renderer.h), not by probe_caps; the packing shaders aim at the
     // middle of the byte when it is set (PACK_FLOOR).

@@ -52,6 +52,9 @@ Texture::Texture(const TextureDesc& d) : width_(d.width), height_(d.height), for
     if (d.format == TextureFormat::Depth) {
         PENUMBRA_GL(glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, d.width, d.height, 0, GL_DEPTH_COMPONENT,
                                  GL_UNSIGNED_INT, nullptr));
+    } else if (d.format == TextureFormat::RGBA16F) {
+        if (d.rgba) throw Error(std::string(d.label) + ": a half-float texture takes no initial RGBA8 pixels");
+        PENUMBRA_GL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, d.width, d.height, 0, GL_RGBA, GL_HALF_FLOAT_OES, nullptr));
     } else {
         // Rows of 4 bytes are always aligned; the default unpack alignment of 4 is right.
         PENUMBRA_GL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, d.width, d.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, d.rgba));
@@ -71,7 +74,10 @@ Texture::Texture(const TextureDesc& d) : width_(d.width), height_(d.height), for
     check_errors(d.label, __FILE__, __LINE__);
 }
 
-std::size_t Texture::bytes() const { return static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * 4u; }
+std::size_t Texture::bytes() const {
+    return static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) *
+           static_cast<std::size_t>(bytes_per_pixel(format_));
+}
 
 // ---- Renderbuffer ---------------------------------------------------------------------------
 

@@ -128,7 +128,7 @@ std::string to_string(RenderbufferFormat f) {
     return "?";
 }
 
-int bytes_per_pixel(TextureFormat) { return 4; }
+int bytes_per_pixel(TextureFormat f) { return f == TextureFormat::RGBA16F ? 8 : 4; }
 
 int bytes_per_pixel(RenderbufferFormat f) {
     switch (f) {

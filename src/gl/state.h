@@ -85,7 +85,8 @@ std::string to_string(Cull c);       // "back"
 std::string to_string(const PipelineState& s);
 
 enum class TextureFormat {
-    RGBA8,  // GL_RGBA / GL_UNSIGNED_BYTE
+    RGBA8,    // GL_RGBA / GL_UNSIGNED_BYTE
+    RGBA16F,  // GL_RGBA / GL_HALF_FLOAT_OES (OES_texture_half_float; a target with EXT_color_buffer_half_float)
     Depth   // GL_DEPTH_COMPONENT / GL_UNSIGNED_INT (OES_depth_texture)
 };
 enum class Sampling { Nearest, Linear, LinearMipmap };

@@ -82,7 +82,8 @@ FrameInputs offscreen(int width, int height);  // the default inputs at another 
 struct ResourceDesc {
     std::string name;  // its role: "shadow-map", "camera", "w09p2b"
     int width = 0, height = 0;
-    bool color = true;                                      // an RGBA8 colour texture
+    bool color = true;                                      // an RGBA8 colour texture...
+    bool half_float = false;                                // ...RGBA16F instead (Caps::half_float_target)
     std::optional<gl::RenderbufferFormat> depth_buffer;     // a depth (or depth-stencil) renderbuffer
     bool depth_texture = false;                             // a depth texture (OES_depth_texture)
     gl::Sampling sampling = gl::Sampling::Nearest;          // of the texture a pass samples

@@ -31,7 +31,9 @@ std::unique_ptr<ResourcePool::Entry> ResourcePool::make(const ResourceDesc& d) {
     const std::string fb_label = d.name + " framebuffer";
     fd.label = fb_label.c_str();
     if (d.color) {
-        e->color = gl::Texture(td);
+        gl::TextureDesc cd = td;
+        if (d.half_float) cd.format = gl::TextureFormat::RGBA16F;
+        e->color = gl::Texture(cd);
         fd.color = &e->color;
     }
     if (d.depth_texture) {
