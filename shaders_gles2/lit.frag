@@ -1,7 +1,8 @@
 #version 100
 // Camera pass: Phong lighting from one light, scaled by the light's visibility. Variants:
 // SHADOW_MAP (with ENC_*, FILTER_*, and BIAS_AUTO with LIGHT_PERSPECTIVE or not; EMULATE_MEDIUMP), IN_SHADOW (planar shadow region: visibility 0),
-// AREA_LOOKUP (Heckbert-Herf: the visibility averaged over light samples, from a target),
+// AREA_LOOKUP (Heckbert-Herf: the visibility averaged over light samples, from a target; --post
+// shadow-blur: the visibility AOV blurred, from a target),
 // GOOCH_TEXTURE (Gooch's shadow texture, black casters on white, sampled linearly at GOOCH_TAPS
 // offsets over the penumbra's width at this receiver's distance from the light), LIGHT_AMBIENT /
 // LIGHT_DIRECT (only that term: Gooch's planes add the direct light once per plane that lights the
@@ -47,7 +48,7 @@ varying vec4 v_shadow_coord;
 // Heckbert-Herf: the counts of lit light samples (area_add.frag), one channel per sample mod 4.
 uniform sampler2D u_area;
 uniform vec4 u_area_window;  // xy: the viewport's lower-left corner; zw: 1 / its size
-uniform float u_area_scale;  // 255 / the number of samples in
+uniform vec4 u_area_weights;  // what each channel counts: 255 / the samples in (area), (1, 0, 0, 0) (shadow-blur)
 #endif
 
 #ifdef GOOCH_TEXTURE
@@ -95,7 +96,7 @@ void main() {
     visibility = 0.0;
 #elif defined(AREA_LOOKUP)
     vec4 counts = texture2D(u_area, (gl_FragCoord.xy - u_area_window.xy) * u_area_window.zw);
-    visibility = min(dot(counts, vec4(1.0)) * u_area_scale, 1.0);
+    visibility = min(dot(counts, u_area_weights), 1.0);
 #elif defined(GOOCH_TEXTURE)
     // Behind the light or outside its frustum: lit.
     if (v_gooch_coord.w > 0.0) {

@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "render/post.h"
+
 namespace penumbra::render {
 
 std::string_view to_string(Technique t) {
@@ -71,7 +73,7 @@ bool Settings::operator==(const Settings& o) const {
            area_per_frame == o.area_per_frame && gooch_planes == o.gooch_planes && gooch_method == o.gooch_method &&
            blend_shadows == o.blend_shadows &&
            effects == o.effects && outline_color == o.outline_color && outline_width == o.outline_width &&
-           reflectivity == o.reflectivity;
+           reflectivity == o.reflectivity && post == o.post;
 }
 
 bool Job::operator==(const Job& o) const {
@@ -552,6 +554,18 @@ std::vector<Option<Options>> make_table() {
     reflectivity.step = 0.05;
     add(reflectivity, [](Options& o, std::string_view v) { o.settings.reflectivity = static_cast<float>(number_of(v)); },
         [](const Options& o) { return shortest_float(o.settings.reflectivity); });
+
+    OptionInfo post = make_option_info("post", P::Technique, T::Text,
+                         "passes over the finished image, a comma list applied in its order: blur:R = a Gaussian of "
+                         "radius R pixels (1..32, sigma R/3) by ping-pong between two targets; bloom:T = what is "
+                         "brighter than T (0..1) blurred at 1/2 and 1/4 size and added back; shadow-blur:R = the "
+                         "shadow's visibility alone blurred in screen space before shading (a cheap soft shadow); "
+                         "none = nothing", "Post-processing");
+    post.presets = {{"none", "none"}, {"blur:4", "blur, radius 4 px"}, {"bloom:0.6", "bloom above 0.6"},
+                    {"shadow-blur:6", "shadow blur, radius 6 px"}, {"shadow-blur:6,bloom:0.6", "shadow blur and bloom"}};
+    post.form = post_form;
+    add(post, [](Options& o, std::string_view v) { o.settings.post = parse_post(v); },
+        [](const Options& o) { return post_text(o.settings.post); });
 
     OptionInfo aov = make_option_info("aov", P::Technique, T::Choice, "what the image shows", "Show",
                    {{"color", "colour"}, {"visibility", "visibility (white lit, black shadowed)"},

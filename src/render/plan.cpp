@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/options.h"
+#include "render/post.h"
 #include "render/techniques/technique.h"
 #include "shadow/area_light.h"
 
@@ -378,7 +379,7 @@ void area_lookup(PlanContext& c, Pass& cam, std::vector<CameraItem>& items) {
                             {{"u_area", kAreaUnit},
                              {"u_area_window", glm::vec4(static_cast<float>(t.x), static_cast<float>(t.y),
                                                          1.0f / static_cast<float>(t.width), 1.0f / static_cast<float>(t.height))},
-                             {"u_area_scale", 255.0f / static_cast<float>(std::max(a.done, 1))}},
+                             {"u_area_weights", glm::vec4(255.0f / static_cast<float>(std::max(a.done, 1)))}},
                             {{kAreaUnit, r}}});
     for (CameraItem& it : items) {
         if (!c.receives(it.object)) continue;
@@ -474,6 +475,89 @@ void plan_area(Planning& p, bool stencil, bool effect_stencil) {
         if (r.desc.name != kAreaLight) r.content.clear();
 }
 
+// ---- the frame of one hard shadow -------------------------------------------------------------
+
+void plan_frame(Planning& p, bool stencil) {
+    PlanContext& c = p.ctx;
+    p.module.before_camera(c);
+    const bool own = p.module.own_view(c);
+    if (!own) c.add_pass(camera_pass(c, p.module, stencil));
+    p.module.after_camera(c);
+    if (!own) {
+        for (const Module* e : p.effects) e->after_opaque(c);
+        blend_pass(c, p.module);
+    }
+    for (const Module* e : p.effects) e->after_camera(c);
+}
+
+// ---- --post shadow-blur: the visibility blurred in screen space before shading -------------------
+
+constexpr const char* kShadowVisibility = "shadow-visibility";
+
+// Whether this frame blurs its shadow, and if not but asked for, why (a note). Under
+// --area-samples the light samples' average is soft already (area_applies comes first).
+bool shadow_blur_applies(const PlanContext& c, std::string* why) {
+    const Settings& s = c.settings;
+    const PostStep* step = s.post_step(PostKind::ShadowBlur);
+    if (!step) return false;
+    const auto no = [&](std::string w) {
+        if (why) *why = "--post shadow-blur:" + shortest_float(step->value) + ": " + std::move(w);
+        return false;
+    };
+    if (c.plan.area) return no("the light samples are averaged already (--area-samples)");
+    if (s.technique == Technique::None) return no("no shadows to blur (--technique none)");
+    if (s.technique == Technique::Gooch) return no("--technique gooch is soft by itself");
+    if (s.aov != Aov::Color && s.aov != Aov::Visibility)
+        return no("--aov " + std::string(to_string(s.aov)) + " shows the technique's own view");
+    return true;
+}
+
+void screen_visibility_lookup(PlanContext& c, Pass& cam, std::vector<CameraItem>& items) {
+    const int r = c.plan.resource_index(kShadowVisibility);
+    const TargetRef& t = c.camera_target;
+    const std::uint32_t bit = 1u << cam.bindings.size();
+    cam.bindings.push_back({"blurred visibility",
+                            {{"u_area", kAreaUnit},
+                             {"u_area_window", glm::vec4(static_cast<float>(t.x), static_cast<float>(t.y),
+                                                         1.0f / static_cast<float>(t.width), 1.0f / static_cast<float>(t.height))},
+                             {"u_area_weights", glm::vec4(1.0f, 0.0f, 0.0f, 0.0f)}},
+                            {{kAreaUnit, r}}});
+    for (CameraItem& it : items) {
+        if (!c.receives(it.object)) continue;
+        it.features.area_lookup = true;
+        it.bindings |= bit;
+    }
+    cam.detail += ", visibility from " + std::string(kShadowVisibility) + " blurred in screen space";
+}
+
+// The technique's visibility AOV into "shadow-visibility" (its own passes: shadow map, stencil,
+// volumes), blurred there through "shadow-blur-tmp", and the camera pass shading with it. The
+// effects after it are the technique's (shade_after_camera): hard where they look the map up.
+void plan_shadow_blur(Planning& p, bool stencil, bool effect_stencil) {
+    PlanContext& c = p.ctx;
+    const Output& out = c.inputs.output;
+    Settings hard = c.settings;
+    hard.aov = Aov::Visibility;
+    const ResourceDesc vis_desc =
+        texture_desc(Output::texture(kShadowVisibility, out.width, out.height, gl::Sampling::Nearest, gl::Wrap::Clamp),
+                     c.caps, stencil);
+    const int vis = c.add_resource(vis_desc, "", "the hard shadow's visibility, then blurred (--post shadow-blur)");
+    PlanContext sc{c.scene, hard, c.caps, c.inputs, c.previous, p.plan, c.light, c.drawable, c.casters, c.depth_path,
+                   {vis, out.width, out.height, 0, 0, false}, {}, {}, false};
+    p.module.before_camera(sc);
+    Pass hard_cam = camera_pass(sc, p.module, stencil);
+    hard_cam.name = "shadow-visibility";
+    c.add_pass(std::move(hard_cam));
+    p.module.after_camera(sc);
+    const int tmp = add_post_target(c, "shadow-blur-tmp", out.width, out.height, "--post shadow-blur: its first pass");
+    add_blur_passes(c, "shadow-blur", vis, tmp, {vis, out.width, out.height, 0, 0, false},
+                    static_cast<int>(c.settings.post_step(PostKind::ShadowBlur)->value));
+    c.add_pass(camera_pass(c, technique_module(Technique::None), effect_stencil, screen_visibility_lookup));
+    for (const Module* e : p.effects) e->after_opaque(c);
+    blend_pass(c, p.module);
+    for (const Module* e : p.effects) e->after_camera(c);
+}
+
 }  // namespace
 
 std::string check(const scene::Scene& scene, const Settings& s, const gl::Caps& caps, const FrameInputs& in) {
@@ -510,22 +594,29 @@ FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& cap
     if (!out.window)
         c.camera_target = {c.add_resource(texture_desc(out, caps, stencil), "", "the camera's image"), out.width,
                            out.height, 0, 0, false};
+    // --post blur, bloom: the camera draws into an image of its own, which the post passes read.
+    const TargetRef output = c.camera_target;
+    if (image_post(s))
+        c.camera_target = {c.add_resource(texture_desc(Output::texture("post-scene", out.width, out.height,
+                                                                       gl::Sampling::Linear, gl::Wrap::Clamp),
+                                                       caps, stencil),
+                                          "", "the camera's image before --post"),
+                           out.width, out.height, 0, 0, false};
 
     std::string why;
     if (area_applies(c, &why)) {
         plan_area(p, technique_stencil, effect_stencil);
-        return std::move(p.plan);
+    } else if (!why.empty()) {
+        p.plan.notes.push_back(why);
     }
-    if (!why.empty()) p.plan.notes.push_back(why);
-    p.module.before_camera(c);
-    const bool own = p.module.own_view(c);
-    if (!own) c.add_pass(camera_pass(c, p.module, stencil));
-    p.module.after_camera(c);
-    if (!own) {
-        for (const Module* e : p.effects) e->after_opaque(c);
-        blend_pass(c, p.module);
+    std::string blur_why;
+    if (!p.plan.area && shadow_blur_applies(c, &blur_why)) {
+        plan_shadow_blur(p, technique_stencil, effect_stencil);
+    } else if (!p.plan.area) {
+        plan_frame(p, stencil);
     }
-    for (const Module* e : p.effects) e->after_camera(c);
+    if (!blur_why.empty()) p.plan.notes.push_back(blur_why);
+    if (image_post(s)) add_post_passes(c, c.camera_target.resource, output);
     return std::move(p.plan);
 }
 

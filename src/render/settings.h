@@ -54,6 +54,22 @@ inline constexpr Technique kAllTechniques[] = {Technique::ShadowMap, Technique::
 // mirror.cpp, portal.cpp): each is a module of the plan that declares its stencil use.
 enum class Effect { Outline, Mirror, Portal };
 inline constexpr Effect kAllEffects[] = {Effect::Outline, Effect::Mirror, Effect::Portal};
+// --post: what is done to finished images (render/post.cpp). Blur and bloom are passes over the
+// camera's image, in the list's order, ping-ponged between two targets; shadow-blur blurs the
+// shadow's visibility alone in screen space before the camera pass shades with it.
+enum class PostKind {
+    Blur,       // a separable Gaussian, taps -R..R pixels (sigma R/3), horizontal then vertical
+    Bloom,      // what exceeds the threshold T (per channel), blurred at 1/2 and 1/4 size, added back
+    ShadowBlur  // the visibility AOV blurred (radius R) and the image shaded with it
+};
+struct PostStep {
+    PostKind kind = PostKind::Blur;
+    float value = 0.0f;  // blur, shadow-blur: the radius R in pixels (whole, 1..kMaxBlurRadius); bloom: T, 0..1
+    bool operator==(const PostStep& o) const { return kind == o.kind && value == o.value; }
+};
+inline constexpr int kMaxBlurRadius = 32;
+std::string_view to_string(PostKind k);
+
 // --outline-width: pixels on the screen, whatever the object's depth.
 inline constexpr float kMinOutlineWidth = 0.5f, kMaxOutlineWidth = 32.0f;
 inline constexpr Aov kAllAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth, Aov::StencilCount};
@@ -109,7 +125,15 @@ struct Settings {
     // --effects mirror: the share of the mirror's colour that is the reflection (1: a perfect
     // mirror, 0: the table as it was).
     float reflectivity = 0.5f;
+    // --post: each kind at most once; blur and bloom applied in the list's order.
+    std::vector<PostStep> post;
 
+    // The step of that kind, or null.
+    const PostStep* post_step(PostKind k) const {
+        for (const PostStep& p : post)
+            if (p.kind == k) return &p;
+        return nullptr;
+    }
     bool has(Effect e) const {
         for (Effect x : effects)
             if (x == e) return true;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "render/post.h"
 #include "render/settings.h"
 #include "shadow/gooch.h"
 #include "shadow/pcf.h"
@@ -163,6 +164,24 @@ Variant outline_variant() { return {"outline.vert", "probe.frag", {}}; }
 
 Variant area_add_variant() { return {"light_depth.vert", "area_add.frag", {}}; }
 
+Variant blur_variant(int radius) {
+    const std::vector<float> w = gaussian_weights(radius);
+    const auto glsl_weight = [](float v) {  // every bit of the float: "1.23456789e-02"
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.8e", static_cast<double>(v));
+        return std::string(buf);
+    };
+    std::string sum = "BLUR_SUM(F) (F(0.0, " + glsl_weight(w[0]) + ")";
+    for (size_t i = 1; i < w.size(); ++i) {
+        const std::string x = glsl_float(static_cast<float>(i)), weight = glsl_weight(w[i]);
+        sum += " + F(" + x + ", " + weight + ") + F(-" + x + ", " + weight + ")";
+    }
+    return {"light_depth.vert", "post_blur.frag", {"BLUR_RADIUS " + std::to_string(radius), sum + ")"}};
+}
+
+Variant bright_variant() { return {"light_depth.vert", "post_bright.frag", {}}; }
+Variant bloom_add_variant() { return {"light_depth.vert", "post_bloom.frag", {}}; }
+
 Variant ramp_variant(shadow::Encoding e, const DepthPath& path) {
     Variant v{"light_depth.vert", "ramp.frag", {encoding_define(e)}};
     if (path.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
@@ -246,6 +265,9 @@ std::vector<Variant> all_variants() {
     out.push_back(probe_variant());
     out.push_back(volume_variant());
     out.push_back(area_add_variant());
+    for (int r = 1; r <= kMaxBlurRadius; ++r) out.push_back(blur_variant(r));
+    out.push_back(bright_variant());
+    out.push_back(bloom_add_variant());
     out.push_back(flat_variant());
     out.push_back(flat_variant({true, false}));
     out.push_back(flat_variant({true, true}));

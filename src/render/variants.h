@@ -109,6 +109,12 @@ Variant far_plane_variant();
 // Heckbert-Herf: one light sample's visibility (a texture) added as a count into one channel.
 Variant area_add_variant();
 
+// --post (render/post.h): one direction of the Gaussian of radius 1..kMaxBlurRadius (BLUR_RADIUS,
+// BLUR_SUM generated), the bright pass (also the 2x2 downsample), the image plus its bloom.
+Variant blur_variant(int radius);
+Variant bright_variant();
+Variant bloom_add_variant();
+
 // Every variant the renderer can build.
 std::vector<Variant> all_variants();
 

@@ -165,13 +165,13 @@ TEST(Options, ArgsLabelTheResult) {
               "--map-size 1024 --bias auto --map-faces auto --light-fit tight --precision highp --volume-method auto "
               "--show-volumes off --light-radius scene --pcss-search 16 --pcss-taps 16 --area-samples 1 --area-per-frame 0 "
               "--gooch-planes 8 --gooch-method planes --blend-shadows off --effects none --outline-color ff8c00 "
-              "--outline-width 3 --reflectivity 0.5 --aov color --technique shadowmap --eye scene --frames 1");
+              "--outline-width 3 --reflectivity 0.5 --post none --aov color --technique shadowmap --eye scene --frames 1");
     EXPECT_EQ(to_args(o.settings),
               "--encoding r8 --filter hard --pcf-kernel early-exit --map-size 1024 --bias auto --map-faces auto "
               "--light-fit tight --precision highp --volume-method auto --show-volumes off --light-radius scene "
               "--pcss-search 16 --pcss-taps 16 --area-samples 1 --area-per-frame 0 --gooch-planes 8 --gooch-method planes "
               "--blend-shadows off "
-              "--effects none --outline-color ff8c00 --outline-width 3 --reflectivity 0.5 --aov color --technique shadowmap");
+              "--effects none --outline-color ff8c00 --outline-width 3 --reflectivity 0.5 --post none --aov color --technique shadowmap");
 }
 
 TEST(Options, AcceptedValuesAndListsComeFromTheTable) {
