@@ -53,9 +53,17 @@ for r in sil:
     if r["technique"] == "volumes auto": assert float(r["fill_per_pixel"]) > 0.0, r
     else: assert r["silhouette_edges"] == "" and int(r["shadow_map_bytes"]) >= 1024 ** 2, r
 # the stencil effects on course@0.60: none, each alone and all three, under the default technique and volumes
-eff = [r for r in every if r["section"] == "effects"]
+# (and the --post passes under the default technique: timed, not scored)
+post = [r for r in every if r["section"] == "effects" and r["post"] != "none"]
+eff = [r for r in every if r["section"] == "effects" and r["post"] == "none"]
 sets = ["none", "outline", "mirror", "portal", "outline,mirror,portal"]
 assert sorted((r["technique"], r["effects"]) for r in eff) == sorted((t, e) for t in ("rgba hard", "volumes auto") for e in sets), eff
+assert sorted(r["post"] for r in post) == ["bloom:0.6", "blur:12", "blur:4", "shadow-blur:6"], post
+map_bytes = {r["technique"]: int(r["shadow_map_bytes"]) for r in eff if r["effects"] == "none"}
+for r in post:
+    assert r["technique"] == "rgba hard" and r["effects"] == "none" and "--post " + r["post"] in r["settings"], r
+    assert int(r["valid_pixels"]) == 0 and r["effect_error_pct"] == "" and float(r["ms_moving"]) > 0.0, r
+    assert int(r["shadow_map_bytes"]) > map_bytes["rgba hard"], r  # the post targets counted beside the map
 for r in eff:
     assert r["scene"] == "course@0.60" and "--effects " + r["effects"] in r["settings"], r
     assert 0.0 <= float(r["error_pct"]) <= 100.0 and float(r["ms_moving"]) >= 0.0 and float(r["ms_still"]) >= 0.0, r
@@ -99,7 +107,8 @@ assert "## Texel use" in md
 assert "## Shadow volumes against the shadow map (rgba hard, map 1024)" in md and "| course@0.60 | volumes auto |" in md
 assert "## Shadow volumes as the silhouette grows" in md and "| 128 | 16128 |" in md
 assert "## The defaults against the settings before issue 9" in md and "| rgba hard | 1024 |" in md
-assert "## The stencil effects on course@0.60" in md and "| volumes auto | outline,mirror,portal |" in md
+assert "## The stencil effects and the post passes on course@0.60" in md and "| volumes auto | outline,mirror,portal | none |" in md
+assert "| rgba hard | none | shadow-blur:6 | - |" in md
 svg = ET.parse(d + "/tradeoff.svg").getroot()
 assert svg.tag.endswith("svg") and len(svg.findall(".//{http://www.w3.org/2000/svg}polyline")) > 0
 texts = [t.text for t in svg.iter("{http://www.w3.org/2000/svg}text")]
@@ -138,7 +147,7 @@ d = sys.argv[1]
 rows = list(csv.DictReader(open(d + "/soft.csv")))
 sweep = {r["method"]: r for r in rows if r["section"] == "sweep"}
 conv = sorted((r for r in rows if r["section"] == "convergence"), key=lambda r: int(r["samples"]))
-want = {"hard", "pcf4x4", "pcss 16/16", "hh 4", "hh 16", "hh 64"}
+want = {"hard", "pcf4x4", "pcss 16/16", "hh 4", "hh 16", "hh 64", "shadow-blur 4"}
 assert want <= set(sweep), sorted(sweep)
 assert set(sweep) - want <= {"gooch"}, sorted(sweep)
 for r in rows:
@@ -154,9 +163,11 @@ for r in rows:
 for m, r in sweep.items():
     if m.startswith("hh "): assert "--area-samples " + m[3:] in r["settings"], r
     if m.startswith("pcss"): assert "--filter pcss" in r["settings"] and "--pcss-taps 16" in r["settings"], r
+    if m.startswith("shadow-blur"): assert "--post shadow-blur:4" in r["settings"] and r["family"] == "screen blur", r
 e = {m: float(r["mae_area_light_pct"]) for m, r in sweep.items()}
 assert e["hh 4"] > e["hh 16"] > e["hh 64"], e
 assert e["pcss 16/16"] < e["hard"] and e["pcss 16/16"] < e["pcf4x4"], e
+assert e["shadow-blur 4"] < e["hard"], e  # blurring the hard edge moves it towards the penumbra
 assert [int(r["samples"]) for r in conv] == [1, 2, 4, 8, 16, 32, 64], conv
 ce = [float(r["mae_area_light_pct"]) for r in conv]
 assert ce[-1] < 0.5 * ce[0] and ce[2] > ce[-1], ce

@@ -88,6 +88,9 @@ struct Row {
     std::string effects;
     measure::Score region;
     std::size_t not_modelled = 0;
+    // --post rows of the effects section ("" or "none": none): timed, not scored (score.valid 0);
+    // bytes then counts the post passes' targets beside the map.
+    std::string post;
 };
 
 inline constexpr const char* kSilhouetteSection = "silhouette";

@@ -48,7 +48,7 @@ std::string csv(const Sweep& w) {
       << ",ms_moving,ms_still,ms_shadow_pass,ms_camera_pass,frames,redrawn_moving,redrawn_still,shadow_map_bytes,texel_use_pct,"
          "silhouette_edges,volume_triangles,fill_per_pixel,zpass_casters,zfail_casters,section,segments,"
          "effects,effect_error_pct,effect_false_shadow_pct,effect_false_lit_pct,effect_valid_pixels,not_modelled_pixels,"
-         "settings\n";
+         "post,settings\n";
     std::vector<const Row*> rows;
     for (const Row& r : w.rows) rows.push_back(&r);
     for (const Row& r : w.silhouette) rows.push_back(&r);
@@ -68,9 +68,9 @@ std::string csv(const Sweep& w) {
             const bool region = r.region.valid > 0;
             o << "\"" << r.effects << "\"," << (region ? fixed(r.region.error_pct, 4) : "") << ","
               << (region ? fixed(r.region.false_shadow_pct, 4) : "") << "," << (region ? fixed(r.region.false_lit_pct, 4) : "")
-              << "," << r.region.valid << "," << r.not_modelled << ",";
+              << "," << r.region.valid << "," << r.not_modelled << ",\"" << r.post << "\",";
         } else {
-            o << ",,,,,,";
+            o << ",,,,,,,";
         }
         o << "\"" << r.settings << "\"\n";
     }
@@ -565,6 +565,7 @@ void read_csv(Sweep& w, const std::string& path) {
             r.region.false_shadow_pct = num("effect_false_shadow_pct", 0.0);
             r.region.false_lit_pct = num("effect_false_lit_pct", 0.0);
             r.not_modelled = static_cast<std::size_t>(num("not_modelled_pixels", 0));
+            r.post = get("post");
             w.effects_frame = r.scene;
             w.effects.push_back(r);
             continue;

@@ -58,7 +58,7 @@ std::string silhouette_table(const Sweep& w) {
 std::string effects_table(const Sweep& w) {
     if (w.effects.empty()) return "";
     std::ostringstream o;
-    o << "\n## The stencil effects on " << w.effects_frame << "\n\n"
+    o << "\n## The stencil effects and the post passes on " << w.effects_frame << "\n\n"
       << "Each effect alone and all three under the default technique and shadow volumes, " << w.width << "x" << w.height
       << ", the same run. Error: the visibility AOV against the effects' ray-traced hard truth (the mirror's pixels traced "
          "in the mirrored scene, the opening's in the portal's scene; the visibility AOV shows the surface seen in the "
@@ -67,16 +67,21 @@ std::string effects_table(const Sweep& w) {
          "renderer leaves them out on purpose (the mirror does not reflect the portal). ms/frame: the median of "
       << w.o.rounds << " interleaved round(s) of " << w.o.frames
       << " frames (moving: the course animated 1/60 s a frame; still: the same frame again); + ms: over \"none\" with "
-         "the same technique, moving.\n\n"
-      << "| technique | effects | error % | error % in the mirror/opening | px compared there | false lit % there | "
-         "not modelled px | ms/frame moving | ms/frame still | + ms | map bytes |\n"
-      << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         "the same technique, moving. The --post rows (render/post.h) are timed, not scored: they change the image "
+         "itself (shadow-blur is scored against the area-light truth by bench --soft); their bytes count the post "
+         "passes' targets beside the map.\n\n"
+      << "| technique | effects | post | error % | error % in the mirror/opening | px compared there | false lit % there | "
+         "not modelled px | ms/frame moving | ms/frame still | + ms | map (+ post targets) bytes |\n"
+      << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    const auto plain = [](const Row& q) { return q.effects == "none" && (q.post.empty() || q.post == "none"); };
     for (const Row& r : w.effects) {
         const Row* none = nullptr;
         for (const Row& q : w.effects)
-            if (q.technique == r.technique && q.effects == "none") none = &q;
+            if (q.technique == r.technique && plain(q)) none = &q;
         const bool region = r.region.valid > 0;
-        o << "| " << r.technique << " | " << r.effects << " | " << fixed(r.score.error_pct, 2) << " | "
+        const bool scored = r.post.empty() || r.post == "none";
+        o << "| " << r.technique << " | " << r.effects << " | " << (r.post.empty() ? "none" : r.post) << " | "
+          << (scored ? fixed(r.score.error_pct, 2) : "-") << " | "
           << (region ? fixed(r.region.error_pct, 2) : "-") << " | " << r.region.valid << " | "
           << (region ? fixed(r.region.false_lit_pct, 2) : "-") << " | " << r.not_modelled << " | " << fixed(r.ms_moving, 2)
           << " | " << fixed(r.ms_still, 2) << " | "

@@ -26,8 +26,28 @@ namespace penumbra::tools::bench {
 
 namespace {
 
-// Each effect alone, and all three: what the table compares with "none".
-constexpr const char* kEffectSets[] = {"none", "outline", "mirror", "portal", "outline,mirror,portal"};
+// Each effect alone, and all three: what the table compares with "none". Then the --post passes
+// (render/post.h) under the first technique: their cost, not scored (they change the image, and
+// shadow-blur's error against the area-light truth is in bench --soft).
+struct EffectSet {
+    const char* effects;
+    const char* post;
+};
+constexpr EffectSet kEffectSets[] = {{"none", "none"},    {"outline", "none"},         {"mirror", "none"},
+                                     {"portal", "none"},  {"outline,mirror,portal", "none"}, {"none", "blur:4"},
+                                     {"none", "blur:12"}, {"none", "bloom:0.6"},       {"none", "shadow-blur:6"}};
+
+// The bytes of the post passes' targets in a plan (render/post.cpp's and plan.cpp's names).
+std::size_t post_bytes(const render::FramePlan& plan) {
+    std::size_t b = 0;
+    for (const render::PlannedResource& r : plan.resources) {
+        const std::string& n = r.desc.name;
+        if (n.rfind("post-", 0) == 0 || n.rfind("bloom-", 0) == 0 || n.rfind("shadow-blur", 0) == 0 ||
+            n == "shadow-visibility")
+            b += r.desc.bytes();
+    }
+    return b;
+}
 
 bool has(const std::string& list, const char* effect) {
     std::string padded = "," + list + ",";
@@ -106,15 +126,20 @@ void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in)
     };
     std::vector<Pending> pending;
     for (const Planned& planned : techniques)
-        for (const char* effects : kEffectSets) {
+        for (const EffectSet& set : kEffectSets) {
+            const char* effects = set.effects;
+            const bool post = std::string(set.post) != "none";
+            if (post && planned.label != techniques.front().label) continue;
             render::Settings s = planned.settings;
             if (const std::string err = render::parse_option(s, "effects", effects); !err.empty()) throw CommandError{err, 1};
+            if (const std::string err = render::parse_option(s, "post", set.post); !err.empty()) throw CommandError{err, 1};
             Row row;
             row.section = kEffectsSection;
             row.scene = spec->label;
             row.time = spec->time;
             row.technique = planned.label;
             row.effects = effects;
+            row.post = set.post;
             const bool map = s.technique == render::Technique::ShadowMap;
             row.encoding = map ? std::string(shadow::to_string(s.encoding)) : "-";
             row.filter = map ? std::string(shadow::to_string(s.filter)) : "-";
@@ -126,6 +151,15 @@ void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in)
             row.settings = render::to_args(labelled);
             if (const std::string problem = r.check(still, s, in); !problem.empty()) {
                 w.notes.push_back(spec->label + ": " + row.technique + " --effects " + effects + " skipped: " + problem);
+                continue;
+            }
+            if (post) {
+                const render::FramePlan plan = r.plan(still, s, in);
+                row.bytes = post_bytes(plan);
+                if (const render::PlannedResource* m = plan.resource("shadow-map")) row.bytes += m->desc.bytes();
+                std::fprintf(stderr, "post    %-12s %-14s %-22s (timed, not scored)\n", spec->label.c_str(),
+                             row.technique.c_str(), set.post);
+                pending.push_back({row, s, {}, {}});
                 continue;
             }
             const bool mirror = has(effects, "mirror"), portal = has(effects, "portal");

@@ -111,6 +111,13 @@ SoftRun configure(const BenchOptions& in) {
         w.methods.push_back(m);
     }
     for (int n : o.quick ? std::vector<int>{4, 16, 64} : std::vector<int>{4, 16, 64, 256}) w.methods.push_back(hh_method(n));
+    // --post shadow-blur: the hard map's visibility blurred in screen space, a fixed radius in
+    // pixels whatever the light's size or the receiver's distance from the caster.
+    for (int r : o.quick ? std::vector<int>{4} : std::vector<int>{4, 8, 16}) {
+        Method m{"shadow-blur " + std::to_string(r), "screen blur", map_settings(shadow::Filter::Hard), 1};
+        m.s.post = {{render::PostKind::ShadowBlur, static_cast<float>(r)}};
+        w.methods.push_back(m);
+    }
     // Gooch's planes, where this build's option table has them (a helper adds them alongside).
     {
         render::Settings g = map_settings(shadow::Filter::Hard);

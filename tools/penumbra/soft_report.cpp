@@ -85,7 +85,7 @@ const SoftRow* find_row(const SoftRun& w, const std::string& section, const std:
 }
 
 int family_color(const std::string& family) {
-    return family == "pcss" ? 1 : family == "heckbert-herf" ? 2 : family == "gooch" ? 3 : 0;
+    return family == "pcss" ? 1 : family == "heckbert-herf" ? 2 : family == "gooch" ? 3 : family == "screen blur" ? 4 : 0;
 }
 
 }  // namespace
@@ -98,13 +98,14 @@ Plot pareto_plot(const SoftRun& w, std::vector<std::string>* front_names) {
                  "; time: median ms/frame, light moving" + (w.gl_renderer.empty() ? "" : "; " + w.gl_renderer);
     p.xlabel = "ms per frame, light moving (log scale)";
     p.ylabel = "mean |visibility - area-light truth| %";
-    p.colors = {"#666666", "#d95f02", "#1b9e77", "#7570b3"};
+    p.colors = {"#666666", "#d95f02", "#1b9e77", "#7570b3", "#e7298a"};
     p.color_title = "method (colour)";
     p.marker_title = "variant (shape)";
     p.color_legend = {{"shadow map (hard, PCF)", 0}, {"PCSS", 1}, {"Heckbert-Herf", 2}};
     if (w.gooch) p.color_legend.push_back({"Gooch", 3});
-    p.marker_legend = {{"hard / 4 samples / 8 taps", Marker::Circle}, {"pcf4x4 / 16", Marker::Triangle},
-                       {"32 taps / 64 samples", Marker::Square}, {"256 samples", Marker::Diamond}};
+    p.color_legend.push_back({"shadow blur (screen space)", 4});
+    p.marker_legend = {{"hard / 4 samples / 8 taps / blur 4 px", Marker::Circle}, {"pcf4x4 / 16 / blur 8 px", Marker::Triangle},
+                       {"32 taps / 64 samples / blur 16 px", Marker::Square}, {"256 samples", Marker::Diamond}};
     p.notes = {"rgba shadow map 1024 for all", "hover (SVG) for the figures"};
     std::vector<measure::Point2> pts;
     std::vector<std::string> names;
@@ -116,8 +117,10 @@ Plot pareto_plot(const SoftRun& w, std::vector<std::string>* front_names) {
         pt.color = family_color(m.family);
         const bool big = m.samples == 64 || m.s.pcss_taps == 32;
         pt.marker = m.samples == 256                                                  ? Marker::Diamond
-                    : big && (m.family == "pcss" || m.family == "heckbert-herf")      ? Marker::Square
-                    : name == "pcf4x4" || m.samples == 16 || name == "pcss 16/16"     ? Marker::Triangle
+                    : (big && (m.family == "pcss" || m.family == "heckbert-herf")) || name == "shadow-blur 16"
+                        ? Marker::Square
+                    : name == "pcf4x4" || m.samples == 16 || name == "pcss 16/16" || name == "shadow-blur 8"
+                        ? Marker::Triangle
                                                                                       : Marker::Circle;
         pt.radius = 5.0;
         pt.label = name;
