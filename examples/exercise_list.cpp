@@ -189,6 +189,30 @@ std::vector<ExerciseInfo> make_list() {
           {"technique", "Shadows", K::Select, {"shadowmap", "planar", "volumes", "none"}, {},
            "planar and volumes keep their shadows in the stencil too"}},
          {{"effects", "outline"}}},
+        {Exercise::Multipass, "multipass", "Multipass: blur, bloom and a blurred shadow by ping-pong",
+         "A frame object (FBO) lets a pass draw into a texture that a later pass reads: the whole image drawn into "
+         "one, then a triangle over the screen that reads it and writes into a second, and back. A Gaussian blur is "
+         "two such passes, because it is separable: each pixel the weighted sum of its row's neighbours, then of its "
+         "column's, 2R + 1 lookups each instead of (2R + 1) squared. Bloom keeps what is brighter than a threshold, "
+         "shrinks it to half size (linear filtering averages four pixels at once), blurs it there and again at "
+         "quarter size, where the same radius reaches twice as far, and adds both back. The shadow blur draws the "
+         "shadow's visibility alone, white lit and black shadowed, blurs that, and lights the scene with it: a soft "
+         "edge for two cheap passes, but one that knows nothing of depth, so it is as wide by the teapot's foot as "
+         "far from it, and it bleeds across the teapot's outline. The passes' targets are half floats where the "
+         "context can draw into them (OES_texture_half_float with EXT_color_buffer_half_float), else 8-bit.",
+         "Render to a texture, then draw from it: a separable Gaussian blur by ping-pong between two targets, bloom at "
+         "half and quarter size, and the shadow's visibility blurred on its own as a cheap soft shadow.",
+         "The teapot on the table, the image passed through a blur, a bloom or a blurred shadow",
+         "Blur the shadow alone, then look at the teapot's foot: the edge is as soft there as far away, where a light "
+         "with a size (the soft exercise) keeps it sharp. Add bloom: the bright marble glows into the dark.",
+         render::Technique::ShadowMap,
+         {light, jump,
+          {"post", "Post-processing", K::Select, {"shadow-blur:6", "none", "blur:4", "bloom:0.6", "shadow-blur:6,bloom:0.6"},
+           {}, "passes over the finished image, each reading the last one's target"},
+          {"technique", "Shadows", K::Select, {"shadowmap", "planar", "volumes"}, {},
+           "the shadow blur blurs any of them"},
+          {"aov", "View", K::Select, {"color", "visibility"}, {}, "visibility: the (blurred) shadow alone"}},
+         {{"post", "shadow-blur:6"}}},
     };
 }
 
@@ -253,6 +277,7 @@ const std::vector<KeyBinding>& key_bindings() {
         {'W', "outline-width", "stencil: outline width 1 / 2 / 3 / 5 / 8 / 12 / 16 px, Shift+W backwards"},
         {'D', "outline-color", "stencil: next outline colour (orange, yellow, cyan, magenta)"},
         {'Q', "reflectivity", "stencil: mirror reflectivity 0.25 / 0.5 / 0.75 / 1, Shift+Q backwards"},
+        {'0', "post", "multipass: post-processing shadow blur / none / blur / bloom / shadow blur and bloom"},
     };
     return keys;
 }

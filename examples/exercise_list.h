@@ -16,7 +16,7 @@
 
 namespace penumbra::examples {
 
-enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c, Volumes, Soft, Stencil };
+enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c, Volumes, Soft, Stencil, Multipass };
 
 // What the controls set besides render::Settings.
 struct Toggles {
@@ -75,7 +75,7 @@ bool offers(const ExerciseInfo& x, std::string_view option);
 const std::vector<ExerciseInfo>& exercise_list();
 const ExerciseInfo& exercise_info(Exercise e);
 bool parse_exercise(std::string_view name, Exercise& out);
-std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c, volumes, soft, stencil"
+std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c, volumes, soft, stencil, multipass"
 
 // A desktop key bound to an option: pressing it steps the option to its next value (Shift: the
 // previous one) among the values `exercise`'s control offers, or all of them.

@@ -276,6 +276,7 @@ void CourseApp::render(render::Settings s, const render::FrameInputs& in) {
 render::Settings CourseApp::frame_settings() const {
     render::Settings s = settings_;
     if (!offers(exercise_info(exercise_), "technique")) s.technique = exercise_info(exercise_).technique;
+    if (!offers(exercise_info(exercise_), "post")) s.post.clear();  // the multipass exercise's alone
     if (exercise_ == Exercise::Soft && toggles_.reference) {
         s.filter = shadow::Filter::Hard;
         s.area_samples = kReferenceSamples;
@@ -365,6 +366,10 @@ void CourseApp::draw(int width, int height) {
             break;
         case Exercise::Stencil:  // the colour image: the effects are drawn on it only
             s.aov = render::Aov::Color;
+            render(s, in);
+            break;
+        case Exercise::Multipass:  // colour or visibility, through the post passes
+            if (s.aov != render::Aov::Visibility) s.aov = render::Aov::Color;
             render(s, in);
             break;
     }

@@ -50,8 +50,9 @@ Caps probe_caps(Api api) {
     c.packed_depth_stencil = api == Api::WebGL1 || c.has("GL_OES_packed_depth_stencil");
     c.depth24 = c.has("GL_OES_depth24");
     c.element_index_uint = c.has("GL_OES_element_index_uint") || c.has("OES_element_index_uint");
-    c.half_float_target = (c.has("GL_OES_texture_half_float") || c.has("OES_texture_half_float")) &&
-                          (c.has("GL_EXT_color_buffer_half_float") || c.has("EXT_color_buffer_half_float"));
+    const auto either = [&](const char* name) { return c.has(std::string("GL_") + name) || c.has(name); };
+    c.half_float_target = either("OES_texture_half_float") && either("OES_texture_half_float_linear") &&
+                          either("EXT_color_buffer_half_float");
     c.draw_buffers = c.has("GL_EXT_draw_buffers") || c.has("WEBGL_draw_buffers");
     c.render_mipmap = c.has("GL_OES_fbo_render_mipmap");
 

@@ -33,8 +33,9 @@ struct Caps {
     bool depth24 = false;               // OES_depth24 renderbuffers
     bool element_index_uint = false;    // OES_element_index_uint
     bool fragment_highp = false;        // highp float in fragment shaders (optional in ES 2.0)
-    // Multipass: half-float colour targets (OES_texture_half_float to sample them and
-    // EXT_color_buffer_half_float to render into them; both, or the post passes stay RGBA8),
+    // Multipass: half-float colour targets (OES_texture_half_float to sample them,
+    // OES_texture_half_float_linear to filter them, EXT_color_buffer_half_float to render into
+    // them; all three, or the post passes stay RGBA8),
     // several colour attachments (EXT_draw_buffers / WEBGL_draw_buffers), rendering into a
     // texture's mip levels other than 0 (OES_fbo_render_mipmap; WebGL 1 cannot).
     bool half_float_target = false;

@@ -15,7 +15,9 @@ namespace {
 
 // WebGL extensions are off until asked for; the library uses these where the browser has them.
 // After a restore they are off again and are asked for again.
-constexpr const char* kExtensions[] = {"WEBGL_depth_texture", "OES_element_index_uint"};
+// The half-float ones give the post passes' targets (render/post.h) where all three are there.
+constexpr const char* kExtensions[] = {"WEBGL_depth_texture", "OES_element_index_uint", "OES_texture_half_float",
+                                       "OES_texture_half_float_linear", "EXT_color_buffer_half_float"};
 
 class WebCanvas final : public Platform {
 public:

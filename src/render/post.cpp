@@ -105,7 +105,7 @@ std::vector<float> gaussian_weights(int radius) {
 bool image_post(const Settings& s) { return s.post_step(PostKind::Blur) || s.post_step(PostKind::Bloom); }
 
 std::string post_format(const gl::Caps& caps) {
-    return caps.half_float_target ? "rgba16f (OES_texture_half_float + EXT_color_buffer_half_float)"
+    return caps.half_float_target ? "rgba16f (OES_texture_half_float, _linear and EXT_color_buffer_half_float)"
                                   : "rgba8 (this context renders into no half-float texture)";
 }
 
@@ -156,8 +156,12 @@ Pass image_pass(const PlanContext& c, std::string name, int src, const TargetRef
     more.insert(more.begin(), Uniform{"u_image", kImageUnit});
     p.bindings.push_back({"image", std::move(more), {{kImageUnit, src}}});
     p.draws.push_back(fullscreen(std::move(v)));
-    p.detail = name_of(c, src) + " -> " + (dst.resource >= 0 ? name_of(c, dst.resource) : std::string("the window")) +
-               ": " + std::move(detail);
+    std::string into = "the window";
+    if (dst.resource >= 0) {
+        const ResourceDesc& d = c.plan.resources[static_cast<size_t>(dst.resource)].desc;
+        into = d.name + (d.half_float ? " (rgba16f)" : " (rgba8)");
+    }
+    p.detail = name_of(c, src) + " -> " + into + ": " + std::move(detail);
     return p;
 }
 

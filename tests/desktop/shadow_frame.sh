@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
-# desktop.w09p2c-frame, desktop.w09p1-frame, desktop.stencil-frame: an exercise with a shadow
-# (W09P2c's shadow map, the map's view off so the whole frame is the scene; W09P1's planar shadow;
-# the stencil exercise's shadow map with the teapot's outline) in a real window (Xvfb),
+# desktop.w09p2c-frame, desktop.w09p1-frame, desktop.stencil-frame, desktop.multipass-frame: an
+# exercise with a shadow (W09P2c's shadow map, the map's view off so the whole frame is the scene;
+# W09P1's planar shadow; the stencil exercise's shadow map with the teapot's outline; the multipass
+# exercise's shadow blurred in screen space) in a real window (Xvfb),
 # frozen at t = 0.6: the screenshot is checked as a picture of the scene (check_frame.py), not only
 # its size. The P key prints the frame's settings as a `penumbra render` command; the CLI renders
 # that command headless (and once more with --technique none, every pixel lit), the Embree ray
 # tracer (`penumbra truth`) traces the same frame, and the window's frame must match the CLI's,
 # show the table, and a shadow on it where the CLI's frame and the ray tracer have it. The title
 # printed (--print-title) must be the exercise and the options the app reports as its URL query.
-# usage: shadow_frame.sh PENUMBRA_DESKTOP PENUMBRA OUT_DIR w09p2c|w09p1|stencil [more penumbra-desktop options...]
+# usage: shadow_frame.sh PENUMBRA_DESKTOP PENUMBRA OUT_DIR w09p2c|w09p1|stencil|multipass [more penumbra-desktop options...]
 # (more options go to the window only, after the test's own: `--bias 1` takes W09P2c's shadow
 # away, `--time 0.9` moves it; either must make the check fail.)
 set -euo pipefail
@@ -18,7 +19,8 @@ case $exercise in
   w09p2c) name=W09P2c own=(--map-view off) ;;
   w09p1) name=W09P1 own=() ;;
   stencil) name="Stencil effects" own=() ;;  # the outline on: the CLI's frame has it too
-  *) echo "shadow_frame.sh: w09p2c, w09p1 or stencil, not '$exercise'"; exit 2 ;;
+  multipass) name="Multipass" own=() ;;  # the shadow blurred: the CLI's frame has it too
+  *) echo "shadow_frame.sh: w09p2c, w09p1, stencil or multipass, not '$exercise'"; exit 2 ;;
 esac
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$out"

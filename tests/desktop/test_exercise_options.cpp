@@ -265,6 +265,33 @@ TEST(ExerciseOptions, StencilOutline) {
     for (const char* key : {"  7  ", "  Y  ", "  W  ", "  D  "}) EXPECT_NE(help.find(key), std::string::npos) << key << help;
 }
 
+TEST(ExerciseOptions, MultipassPost) {
+    using penumbra::render::PostKind;
+    CourseApp a(Exercise::Multipass);
+    ASSERT_EQ(a.settings().post.size(), 1u);
+    EXPECT_EQ(a.settings().post[0].kind, PostKind::ShadowBlur);
+    EXPECT_NE(a.query().find("post=shadow-blur:6"), std::string::npos) << a.query();
+    ASSERT_EQ(a.set_option("post", "blur:4"), "");
+    EXPECT_EQ(a.frame_settings().post.at(0).kind, PostKind::Blur);
+    EXPECT_NE(a.set_option("post", "blur:99"), "") << "the option's range";
+    EXPECT_NE(a.on_key('P', false).find("--post blur:4"), std::string::npos) << a.on_key('P', false);
+    // The 0 key steps through the select's values; chosen by its number key; no other exercise
+    // draws the post passes, and choosing one puts the default back.
+    CourseApp k(Exercise::W09P1);
+    EXPECT_EQ(k.on_key('8', false).rfind("Multipass", 0), 0u);
+    EXPECT_EQ(k.query(), CourseApp(Exercise::Multipass).query());
+    EXPECT_EQ(k.on_key('0', false), "post = none");
+    EXPECT_EQ(k.on_key('0', false), "post = blur:4");
+    EXPECT_EQ(k.on_key('0', false), "post = bloom:0.6");
+    EXPECT_EQ(k.on_key('0', true), "post = blur:4");
+    EXPECT_EQ(k.on_key('A', false), "aov = visibility");
+    k.on_key('1', false);
+    EXPECT_TRUE(k.frame_settings().post.empty());
+    EXPECT_EQ(k.query().find("post="), std::string::npos) << k.query();
+    const std::string help = CourseApp::key_help();
+    for (const char* key : {"  8  ", "  0  "}) EXPECT_NE(help.find(key), std::string::npos) << key << help;
+}
+
 TEST(ExerciseOptions, TimeFreezesAndIsKept) {
     CourseApp a(Exercise::W09P1);
     ASSERT_EQ(a.set_option("time", "0.6"), "");
@@ -335,7 +362,7 @@ TEST(ExerciseOptions, Keys) {
 // names an option of a table, and every value a control offers is one that option accepts.
 TEST(ExerciseList, EveryControlNamesAnOptionAndOffersValidValues) {
     using namespace penumbra;
-    ASSERT_EQ(exercise_list().size(), 7u);
+    ASSERT_EQ(exercise_list().size(), 8u);
     for (const auto& x : exercise_list()) {
         Exercise parsed{};
         ASSERT_TRUE(examples::parse_exercise(x.name, parsed));
