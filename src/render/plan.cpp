@@ -370,22 +370,28 @@ std::string area_key(const PlanContext& c) {
     return key.str();
 }
 
-void area_lookup(PlanContext& c, Pass& cam, std::vector<CameraItem>& items) {
-    const int r = c.plan.resource_index(kAreaLight);
-    const AreaStats& a = *c.plan.area;
+// The lit shader's screen-space visibility (AREA_LOOKUP) for every receiver of the camera pass:
+// dot(the texel of `resource` under the pixel, `weights`), bound as `binding`.
+void screen_lookup(PlanContext& c, Pass& cam, std::vector<CameraItem>& items, const char* resource,
+                   const glm::vec4& weights, const char* binding) {
     const TargetRef& t = c.camera_target;
     const std::uint32_t bit = 1u << cam.bindings.size();
-    cam.bindings.push_back({"light samples",
+    cam.bindings.push_back({binding,
                             {{"u_area", kAreaUnit},
                              {"u_area_window", glm::vec4(static_cast<float>(t.x), static_cast<float>(t.y),
                                                          1.0f / static_cast<float>(t.width), 1.0f / static_cast<float>(t.height))},
-                             {"u_area_weights", glm::vec4(255.0f / static_cast<float>(std::max(a.done, 1)))}},
-                            {{kAreaUnit, r}}});
+                             {"u_area_weights", weights}},
+                            {{kAreaUnit, c.plan.resource_index(resource)}}});
     for (CameraItem& it : items) {
         if (!c.receives(it.object)) continue;
         it.features.area_lookup = true;
         it.bindings |= bit;
     }
+}
+
+void area_lookup(PlanContext& c, Pass& cam, std::vector<CameraItem>& items) {
+    const AreaStats& a = *c.plan.area;
+    screen_lookup(c, cam, items, kAreaLight, glm::vec4(255.0f / static_cast<float>(std::max(a.done, 1))), "light samples");
     cam.detail += ", visibility averaged over " + std::to_string(a.done) + " of " + std::to_string(a.total) +
                   " light samples";
 }
@@ -513,20 +519,7 @@ bool shadow_blur_applies(const PlanContext& c, std::string* why) {
 }
 
 void screen_visibility_lookup(PlanContext& c, Pass& cam, std::vector<CameraItem>& items) {
-    const int r = c.plan.resource_index(kShadowVisibility);
-    const TargetRef& t = c.camera_target;
-    const std::uint32_t bit = 1u << cam.bindings.size();
-    cam.bindings.push_back({"blurred visibility",
-                            {{"u_area", kAreaUnit},
-                             {"u_area_window", glm::vec4(static_cast<float>(t.x), static_cast<float>(t.y),
-                                                         1.0f / static_cast<float>(t.width), 1.0f / static_cast<float>(t.height))},
-                             {"u_area_weights", glm::vec4(1.0f, 0.0f, 0.0f, 0.0f)}},
-                            {{kAreaUnit, r}}});
-    for (CameraItem& it : items) {
-        if (!c.receives(it.object)) continue;
-        it.features.area_lookup = true;
-        it.bindings |= bit;
-    }
+    screen_lookup(c, cam, items, kShadowVisibility, glm::vec4(1.0f, 0.0f, 0.0f, 0.0f), "blurred visibility");
     cam.detail += ", visibility from " + std::string(kShadowVisibility) + " blurred in screen space";
 }
 
