@@ -200,7 +200,7 @@ void add_post_passes(PlanContext& c, int image, const TargetRef& out) {
             // Into the ping-pong target the horizontal pass did not use (or back where it read: the
             // vertical pass reads only the other one), never into the RGBA8 camera image.
             const int tmp = other(current);
-            const int dst = current == image ? other(tmp) : current;
+            const int dst = last ? -1 : current == image ? other(tmp) : current;
             add_blur_passes(c, "post-blur", current, tmp, last ? out : whole(c, dst), static_cast<int>(s.value));
             if (!last) current = dst;
             continue;

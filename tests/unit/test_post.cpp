@@ -108,6 +108,7 @@ TEST(Post, BlurIsTwoPassesThroughASecondTargetIntoTheOutput) {
     EXPECT_EQ(target_name(p, h), "post-a");
     EXPECT_EQ(read_name(p, v), "post-a");
     EXPECT_EQ(target_name(p, v), "camera");  // the frame's output
+    EXPECT_EQ(p.resource("post-b"), nullptr) << "one ping-pong target is enough for one blur";
     ASSERT_EQ(h.draws.size(), 1u);
     EXPECT_TRUE(h.draws[0].fullscreen);
     EXPECT_EQ(h.draws[0].variant, render::blur_variant(4));
