@@ -5,10 +5,10 @@
 // marble's mipmap selection; a wrong matrix, encoding or bias would move whole regions.
 // usage: egl_match.mjs PENUMBRA_CLI OUT_DIR
 import { execFileSync } from 'node:child_process';
-import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { runTest, openPage, frameAt, compare, check } from './harness.mjs';
+import { runTest, openPage, frameAt, compare, check, savePng } from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
 if (!cli || !outDir) throw new Error('usage: egl_match.mjs PENUMBRA_CLI OUT_DIR');
@@ -29,12 +29,6 @@ const CASES = [
     args: ['--encoding', 'rgba', '--filter', 'pcf4x4', '--bias', 'auto', '--precision', 'mediump', '--aov', 'visibility'] },
   { name: 'w09p1-planar', page: 'w09p1', query: '', args: ['--technique', 'planar'] },
 ];
-
-function savePng(px, file) {
-  const png = new PNG({ width: px.width, height: px.height });
-  png.data = Buffer.from(px.data);
-  writeFileSync(file, PNG.sync.write(png));
-}
 
 await runTest('web.egl_match', async ({ server, browser }) => {
   mkdirSync(outDir, { recursive: true });

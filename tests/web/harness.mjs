@@ -3,9 +3,10 @@
 // records console errors, page errors and failed requests, and pixel helpers.
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
-import { existsSync } from 'node:fs';
+import { existsSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
+import { PNG } from 'pngjs';
 
 export const CHROMIUM = process.env.PENUMBRA_CHROMIUM || '/usr/bin/chromium';
 // From ../shared/design/TOOLCHAIN.md: WebGL on SwiftShader, and no background networking (this
@@ -15,7 +16,7 @@ export const CHROMIUM_ARGS = [
   '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update',
   '--disable-sync',
 ];
-export const PAGES = ['w09p1', 'w09p2a', 'w09p2b', 'w09p2c', 'volumes', 'soft', 'stencil'];
+export const PAGES = ['w09p1', 'w09p2a', 'w09p2b', 'w09p2c', 'volumes', 'soft', 'stencil', 'multipass'];
 
 const TYPES = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.css': 'text/css; charset=utf-8',
@@ -166,4 +167,11 @@ export async function runTest(name, body) {
     if (browser) await browser.close().catch(() => {});
     if (server) await server.close();
   }
+}
+
+// Writes pixels ({width, height, data}: RGBA rows, top first) as a PNG.
+export function savePng(px, file) {
+  const png = new PNG({ width: px.width, height: px.height });
+  png.data = Buffer.from(px.data);
+  writeFileSync(file, PNG.sync.write(png));
 }

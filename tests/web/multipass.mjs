@@ -8,10 +8,10 @@
 // or GL error.
 // usage: multipass.mjs PENUMBRA_CLI OUT_DIR
 import { execFileSync } from 'node:child_process';
-import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { runTest, openPage, frameAt, compare, check, glErrors, setOptions } from './harness.mjs';
+import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng } from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
 if (!cli || !outDir) throw new Error('usage: multipass.mjs PENUMBRA_CLI OUT_DIR');
@@ -20,12 +20,6 @@ const T = 0.6;
 const MAX_MEAN = 1.5;
 const LEVELS = 16;
 const MAX_FRACTION = 0.005;
-
-function savePng(px, file) {
-  const png = new PNG({ width: px.width, height: px.height });
-  png.data = Buffer.from(px.data);
-  writeFileSync(file, PNG.sync.write(png));
-}
 
 // The grey levels strictly between black and white in a visibility frame (red channel).
 function greys(px) {

@@ -9,20 +9,14 @@
 // its noise. Prints the page's ms/frame for PCSS and for Heckbert-Herf on SwiftShader.
 // usage: soft.mjs PENUMBRA_CLI OUT_DIR
 import { execFileSync } from 'node:child_process';
-import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { runTest, openPage, waitFrames, readPixels, frameAt, compare, check, glErrors, setOptions } from './harness.mjs';
+import { runTest, openPage, waitFrames, readPixels, frameAt, compare, check, glErrors, setOptions, savePng } from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
 if (!cli || !outDir) throw new Error('usage: soft.mjs PENUMBRA_CLI OUT_DIR');
 const T = 0; // the teapot stands on the table: the penumbra grows away from the contact
-
-function savePng(px, file) {
-  const png = new PNG({ width: px.width, height: px.height });
-  png.data = Buffer.from(px.data);
-  writeFileSync(file, PNG.sync.write(png));
-}
 
 // The share of pixels in the penumbra of the visibility view: neither lit nor shadowed.
 function penumbra(px) {

@@ -11,10 +11,10 @@
 // or GL error.
 // usage: stencil.mjs PENUMBRA_CLI OUT_DIR
 import { execFileSync } from 'node:child_process';
-import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { runTest, openPage, frameAt, compare, check, glErrors, setOptions } from './harness.mjs';
+import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng } from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
 if (!cli || !outDir) throw new Error('usage: stencil.mjs PENUMBRA_CLI OUT_DIR');
@@ -23,12 +23,6 @@ const T = 0.6;
 const MAX_MEAN = 1.5;
 const LEVELS = 16;
 const MAX_FRACTION = 0.005;
-
-function savePng(px, file) {
-  const png = new PNG({ width: px.width, height: px.height });
-  png.data = Buffer.from(px.data);
-  writeFileSync(file, PNG.sync.write(png));
-}
 
 // The pixels within 2 levels of the colour RRGGBB in each channel.
 function countColour(px, hex) {

@@ -6,20 +6,14 @@
 // match `penumbra render`'s (headless EGL) for the eye in the shadow; no console or GL error.
 // usage: volumes.mjs PENUMBRA_CLI OUT_DIR
 import { execFileSync } from 'node:child_process';
-import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { runTest, openPage, frameAt, compare, check, glErrors, setOptions } from './harness.mjs';
+import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng } from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
 if (!cli || !outDir) throw new Error('usage: volumes.mjs PENUMBRA_CLI OUT_DIR');
 const T = 0.6;
-
-function savePng(px, file) {
-  const png = new PNG({ width: px.width, height: px.height });
-  png.data = Buffer.from(px.data);
-  writeFileSync(file, PNG.sync.write(png));
-}
 
 // The share of pixels whose red channel is below 64 (the visibility view: black = shadowed).
 function shadowed(px) {
