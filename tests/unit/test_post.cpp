@@ -187,3 +187,18 @@ TEST(Post, ShadowBlurShadesWithTheBlurredVisibility) {
             EXPECT_EQ(target_name(v, pass), "shadow-visibility") << pass.name;
         }
 }
+
+TEST(Post, AWindowsStencilIsNotThePostImagesOne) {
+    // Without OES_packed_depth_stencil an offscreen target has no stencil: a window's has. With
+    // --post blur the camera draws into a texture even for a window, so the outline is refused there.
+    const scene::Scene scene = scene::make_course_scene(4).scene;
+    gl::Caps caps = full_caps();
+    caps.packed_depth_stencil = false;
+    render::FrameInputs window;
+    window.output = render::Output::to_window(64, 64);
+    render::Settings s = with_post("none");
+    s.effects = {render::Effect::Outline};
+    EXPECT_EQ(render::check(scene, s, caps, window), "");
+    s.post = with_post("blur:2").post;
+    EXPECT_NE(render::check(scene, s, caps, window).find("OES_packed_depth_stencil"), std::string::npos);
+}

@@ -147,8 +147,9 @@ std::string shade_after_camera(PlanContext& c, Pass& p, std::vector<CameraItem>&
 // `use` holds `value`; depth test always, depth and colour written.
 Pass far_plane_pass(const PlanContext& c, std::string name, std::string module, const StencilUse& use, int value,
                     const glm::vec4& colour);
-// "" when the frame's target has a stencil buffer (a window's, or off screen a packed
-// depth-stencil: OES_packed_depth_stencil), else why `who` ("--effects mirror") cannot run.
+// "" when the frame's target has a stencil buffer (a window's, or off screen, --post's image
+// included, a packed depth-stencil: OES_packed_depth_stencil), else why `who` ("--effects
+// mirror") cannot run.
 std::string stencil_buffer_problem(const PlanContext& c, std::string_view who);
 // A use of one stencil bit that marks pixels (the outline's, the mirror's, the portal's).
 StencilUse marking_use(std::string name, std::string module);

@@ -3,6 +3,8 @@
 
 #include "render/techniques/technique.h"
 
+#include "render/post.h"
+
 namespace penumbra::render {
 
 const Module& shadow_map_module();  // shadow_map.cpp
@@ -59,7 +61,8 @@ std::string shade_after_camera(PlanContext& c, Pass& p, std::vector<CameraItem>&
 }
 
 std::string stencil_buffer_problem(const PlanContext& c, std::string_view who) {
-    if (c.inputs.output.window || c.caps.packed_depth_stencil) return {};
+    // With --post blur or bloom the camera draws into a texture even when the output is a window.
+    if ((c.inputs.output.window && !image_post(c.settings)) || c.caps.packed_depth_stencil) return {};
     return std::string(who) + ": this context has no OES_packed_depth_stencil for the stencil buffer";
 }
 
