@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 
 #include "render/options.h"
 #include "render/techniques/technique.h"
@@ -67,8 +66,6 @@ std::string parse_steps(std::string_view text, std::vector<PostStep>& out) {
     }
 }
 
-std::string number_text(float v) { return shortest_float(v); }
-
 }  // namespace
 
 std::string post_form(std::string_view text) {
@@ -84,7 +81,7 @@ std::vector<PostStep> parse_post(std::string_view text) {
 
 std::string post_text(const std::vector<PostStep>& steps) {
     std::string s;
-    for (const PostStep& p : steps) s += (s.empty() ? "" : ",") + std::string(to_string(p.kind)) + ":" + number_text(p.value);
+    for (const PostStep& p : steps) s += (s.empty() ? "" : ",") + std::string(to_string(p.kind)) + ":" + shortest_float(p.value);
     return s.empty() ? "none" : s;
 }
 
@@ -211,7 +208,7 @@ void add_post_passes(PlanContext& c, int image, const TargetRef& out) {
         const int quarter = add_post_target(c, "bloom-quarter", w / 4, h / 4, "--post bloom: at quarter size");
         const int quarter_tmp = add_post_target(c, "bloom-quarter-tmp", w / 4, h / 4, "--post bloom: its blur's first pass");
         c.add_pass(image_pass(c, "bloom-bright", current, whole(c, half), bright_variant(), {{"u_threshold", s.value}},
-                              "each channel minus " + number_text(s.value) + ", a 2x2 box by linear sampling"));
+                              "each channel minus " + shortest_float(s.value) + ", a 2x2 box by linear sampling"));
         add_blur_passes(c, "bloom-half-blur", half, half_tmp, whole(c, half), kBloomRadius);
         c.add_pass(image_pass(c, "bloom-down", half, whole(c, quarter), bright_variant(), {{"u_threshold", 0.0f}},
                               "a 2x2 box by linear sampling"));

@@ -76,6 +76,14 @@ std::string technique_label(const render::Settings& s) {
     return std::string(shadow::to_string(s.encoding)) + " " + std::string(shadow::to_string(s.filter));
 }
 
+void set_technique(Row& row, const render::Settings& s, const std::string& label) {
+    row.technique = label;
+    const bool map = s.technique == render::Technique::ShadowMap;
+    row.encoding = map ? std::string(shadow::to_string(s.encoding)) : "-";
+    row.filter = map ? std::string(shadow::to_string(s.filter)) : "-";
+    row.map = map ? s.map_size : 0;
+}
+
 }  // namespace bench
 
 namespace {
@@ -251,11 +259,7 @@ void silhouette_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& 
             row.section = kSilhouetteSection;
             row.segments = segments;
             row.scene = "sphere-" + std::to_string(segments);
-            row.technique = planned.label;
-            const bool map = s.technique == render::Technique::ShadowMap;
-            row.encoding = map ? std::string(shadow::to_string(s.encoding)) : "-";
-            row.filter = map ? std::string(shadow::to_string(s.filter)) : "-";
-            row.map = map ? s.map_size : 0;
+            set_technique(row, s, planned.label);
             render::Options labelled = w.base;
             labelled.job.scene = row.scene;  // made in code (sphere_scene), not a file
             labelled.settings = s;
@@ -412,10 +416,7 @@ void run_sweep(Sweep& w) {
             Row row;
             row.scene = spec.label;
             row.time = spec.time;
-            row.technique = planned.label;
-            row.encoding = s.technique == render::Technique::ShadowMap ? std::string(shadow::to_string(s.encoding)) : "-";
-            row.filter = s.technique == render::Technique::ShadowMap ? std::string(shadow::to_string(s.filter)) : "-";
-            row.map = s.technique == render::Technique::ShadowMap ? s.map_size : 0;
+            set_technique(row, s, planned.label);
             row.settings = render::to_args(labelled);
             ++done;
             if (const std::string problem = r.check(still, s, in); !problem.empty()) {

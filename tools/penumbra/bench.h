@@ -138,6 +138,9 @@ inline constexpr const char* kBeforeSuffix = " (before)";
 
 // The technique column: "rgba pcf4x4", "volumes auto", "planar".
 std::string technique_label(const render::Settings& s);
+// A row's technique columns: its label, and the encoding, filter and map size of a shadow map
+// ("-", "-", 0 for the other techniques).
+void set_technique(Row& row, const render::Settings& s, const std::string& label);
 
 // "teapot@0.6" -> {teapot, 0.6, course@0.60}; "FILE.gltf" -> {FILE.gltf, 0, FILE's stem}.
 SceneSpec parse_scene_spec(const std::string& spec);

@@ -137,13 +137,9 @@ void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in)
             row.section = kEffectsSection;
             row.scene = spec->label;
             row.time = spec->time;
-            row.technique = planned.label;
+            set_technique(row, s, planned.label);
             row.effects = effects;
             row.post = set.post;
-            const bool map = s.technique == render::Technique::ShadowMap;
-            row.encoding = map ? std::string(shadow::to_string(s.encoding)) : "-";
-            row.filter = map ? std::string(shadow::to_string(s.filter)) : "-";
-            row.map = map ? s.map_size : 0;
             render::Options labelled = w.base;
             labelled.job.scene = spec->name;
             labelled.job.time = spec->time;
