@@ -8,6 +8,10 @@
 #include "gl/gl_headers.h"
 #include "gl/uniforms.h"
 
+#ifndef __EMSCRIPTEN__
+#include <EGL/egl.h>  // both native platforms (headless, GLFW) make their GLES 2 contexts through EGL
+#endif
+
 namespace penumbra::gl {
 
 void BufferDeleter::operator()(std::uint32_t id) const { glDeleteBuffers(1, &id); }
@@ -133,6 +137,8 @@ std::string attachments(const FramebufferDesc& d) {
     const auto add = [&](const std::string& s) { out += (out.empty() ? "" : ", ") + s; };
     const auto size = [](int w, int h) { return std::to_string(w) + "x" + std::to_string(h); };
     if (d.color) add(std::string("colour texture ") + texture_format_name(d.color->format()) + " " + size(d.color->width(), d.color->height()));
+    for (const Texture* t : d.more_colors)
+        if (t) add(std::string("colour texture ") + texture_format_name(t->format()) + " " + size(t->width(), t->height()));
     if (d.depth_texture)
         add(std::string("depth texture ") + texture_format_name(d.depth_texture->format()) + " " +
             size(d.depth_texture->width(), d.depth_texture->height()));
@@ -145,6 +151,18 @@ std::string attachments(const FramebufferDesc& d) {
     return out.empty() ? "nothing" : out;
 }
 
+// glDrawBuffersEXT: an extension's entry point, looked up where the platform is EGL (Emscripten
+// exports it, and routes it to WEBGL_draw_buffers).
+void draw_buffers(GLsizei n, const GLenum* buffers, const char* label) {
+#ifdef __EMSCRIPTEN__
+    glDrawBuffersEXT(n, buffers);
+#else
+    static const auto fn = reinterpret_cast<PFNGLDRAWBUFFERSEXTPROC>(eglGetProcAddress("glDrawBuffersEXT"));
+    if (!fn) throw Error(std::string(label) + ": several colour attachments, but no glDrawBuffersEXT on this context");
+    fn(n, buffers);
+#endif
+}
+
 }  // namespace
 
 Framebuffer::Framebuffer(const FramebufferDesc& d) {
@@ -154,6 +172,15 @@ Framebuffer::Framebuffer(const FramebufferDesc& d) {
     PENUMBRA_GL(glBindFramebuffer(GL_FRAMEBUFFER, id));
     if (d.color)
         PENUMBRA_GL(glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, d.color->id(), 0));
+    GLenum buffers[1 + kMaxExtraColors] = {GL_COLOR_ATTACHMENT0};
+    GLsizei count = 1;
+    for (const Texture* t : d.more_colors) {
+        if (!t) break;
+        buffers[count] = static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + count);
+        PENUMBRA_GL(glFramebufferTexture2D(GL_FRAMEBUFFER, buffers[count], GL_TEXTURE_2D, t->id(), 0));
+        ++count;
+    }
+    if (count > 1) draw_buffers(count, buffers, d.label);
     if (d.depth_texture)
         PENUMBRA_GL(
             glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, d.depth_texture->id(), 0));

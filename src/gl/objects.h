@@ -114,8 +114,14 @@ private:
 // A framebuffer object with its attachments; completeness is checked where it is made and a
 // failure names the status (GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT, ...), says what it means and
 // lists what was attached (framebuffer_status_meaning).
+// Colour attachments beyond the first: EXT_draw_buffers / WEBGL_draw_buffers (Caps::draw_buffers).
+inline constexpr int kMaxExtraColors = 3;
+
 struct FramebufferDesc {
     const Texture* color = nullptr;
+    // COLOR_ATTACHMENT1.. in order (null: none): with any, the framebuffer's draw buffers are all
+    // of its colour attachments, gl_FragData[i] into attachment i.
+    const Texture* more_colors[kMaxExtraColors] = {nullptr, nullptr, nullptr};
     const Texture* depth_texture = nullptr;
     const Renderbuffer* depth = nullptr;  // depth or packed depth-stencil
     const Renderbuffer* stencil = nullptr;

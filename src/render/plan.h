@@ -84,6 +84,7 @@ struct ResourceDesc {
     int width = 0, height = 0;
     bool color = true;                                      // an RGBA8 colour texture...
     bool half_float = false;                                // ...RGBA16F instead (Caps::half_float_target)
+    int colors = 1;  // colour textures (with color): more than 1, attachments 0.. (Caps::draw_buffers)
     std::optional<gl::RenderbufferFormat> depth_buffer;     // a depth (or depth-stencil) renderbuffer
     bool depth_texture = false;                             // a depth texture (OES_depth_texture)
     gl::Sampling sampling = gl::Sampling::Nearest;          // of the texture a pass samples
@@ -128,7 +129,8 @@ struct Uniform {
 };
 struct TextureBinding {
     int unit = 0;
-    int resource = -1;  // the resource's sampled texture
+    int resource = -1;   // the resource's sampled texture
+    int attachment = 0;  // which of its colour textures (ResourceDesc::colors)
 };
 // Uniforms and textures that some draws of a pass share: "camera", "spot light", "shadow lookup".
 struct Binding {
@@ -159,6 +161,8 @@ struct Draw {
     std::uint32_t bindings = 0;  // bit i set: the pass's bindings[i] applies to this draw
     int image = -1;              // Lit: the scene image sampled as base colour (-1: none)...
     int image_resource = -1;     // ...or this resource's texture instead (an ImageOverride)
+    // Uniforms of this draw alone, set after the pass's bindings (a deferred point light's).
+    std::vector<Uniform> uniforms;
     std::optional<gl::Cull> cull;  // the pass's state with this face culling instead (a shadow map's faces)
     // The material's alpha is read (ALPHA_TEST, ALPHA_BLEND): the executor sets u_base_color,
     // u_alpha_cutoff and the base texture (`image`) in any pass, depth and stencil passes too.

@@ -62,8 +62,9 @@ std::size_t ResourceDesc::bytes() const {
     const auto px = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     std::size_t per = 0;
     if (color)
-        per += static_cast<std::size_t>(
-            gl::bytes_per_pixel(half_float ? gl::TextureFormat::RGBA16F : gl::TextureFormat::RGBA8));
+        per += static_cast<std::size_t>(colors) *
+               static_cast<std::size_t>(
+                   gl::bytes_per_pixel(half_float ? gl::TextureFormat::RGBA16F : gl::TextureFormat::RGBA8));
     if (depth_texture) per += static_cast<std::size_t>(gl::bytes_per_pixel(gl::TextureFormat::Depth));
     if (depth_buffer) per += static_cast<std::size_t>(gl::bytes_per_pixel(*depth_buffer));
     return px * per;
@@ -72,14 +73,14 @@ std::size_t ResourceDesc::bytes() const {
 std::string ResourceDesc::describe() const {
     std::string s = size_str(width, height);
     std::string parts;
-    if (color) parts += half_float ? "rgba16f" : "rgba8";
+    if (color) parts += (colors > 1 ? std::to_string(colors) + " x " : std::string()) + (half_float ? "rgba16f" : "rgba8");
     if (depth_texture) parts += std::string(parts.empty() ? "" : " + ") + "depth texture";
     if (depth_buffer) parts += std::string(parts.empty() ? "" : " + ") + gl::to_string(*depth_buffer);
     return s + " " + parts + ", " + gl::to_string(sampling) + ", " + gl::to_string(wrap);
 }
 
 bool ResourceDesc::operator==(const ResourceDesc& o) const {
-    return name == o.name && width == o.width && height == o.height && color == o.color && half_float == o.half_float &&
+    return name == o.name && width == o.width && height == o.height && color == o.color && half_float == o.half_float && colors == o.colors &&
            depth_buffer == o.depth_buffer && depth_texture == o.depth_texture && sampling == o.sampling && wrap == o.wrap;
 }
 
@@ -110,7 +111,7 @@ StateCounts FramePlan::state_counts() const {
         n.state_calls += gl::state_calls(state, pass.state);
         state = pass.state;
         for (const Binding& b : pass.bindings)
-            for (const TextureBinding& t : b.textures) bind(t.unit, "resource " + std::to_string(t.resource));
+            for (const TextureBinding& t : b.textures) bind(t.unit, "resource " + std::to_string(t.resource) + "." + std::to_string(t.attachment));
         bool first = true;
         std::uint32_t bound = 0;
         std::string pass_program;

@@ -128,7 +128,8 @@ std::string json_pass(const FramePlan& p, const Pass& pass) {
         j += "},\"textures\":[";
         for (size_t k = 0; k < b.textures.size(); ++k)
             j += std::string(k ? "," : "") + "{\"unit\":" + std::to_string(b.textures[k].unit) +
-                 ",\"resource\":" + json_quote(resource_name(p, b.textures[k].resource)) + "}";
+                 ",\"resource\":" + json_quote(resource_name(p, b.textures[k].resource)) +
+                 ",\"attachment\":" + std::to_string(b.textures[k].attachment) + "}";
         j += "]}";
     }
     j += "],\"draws\":[";
@@ -229,7 +230,8 @@ std::string FramePlan::to_text() const {
         for (const Binding& b : p.bindings) {
             o << "     binding " << b.name << ":";
             for (const Uniform& u : b.uniforms) o << " " << u.name;
-            for (const TextureBinding& t : b.textures) o << " [unit " << t.unit << ": " << resource_name(*this, t.resource) << "]";
+            for (const TextureBinding& t : b.textures) o << " [unit " << t.unit << ": " << resource_name(*this, t.resource)
+                                                            << (t.attachment ? " colour " + std::to_string(t.attachment) : "") << "]";
             o << "\n";
         }
         const std::vector<int> reads = p.reads();

@@ -9,6 +9,7 @@ namespace penumbra::render {
 struct ResourcePool::Entry {
     ResourceDesc desc;
     gl::Texture color;
+    gl::Texture more_colors[gl::kMaxExtraColors];
     gl::Texture depth_texture;
     gl::Renderbuffer depth;
     gl::Framebuffer fb;
@@ -35,6 +36,10 @@ std::unique_ptr<ResourcePool::Entry> ResourcePool::make(const ResourceDesc& d) {
         if (d.half_float) cd.format = gl::TextureFormat::RGBA16F;
         e->color = gl::Texture(cd);
         fd.color = &e->color;
+        for (int i = 1; i < d.colors && i <= gl::kMaxExtraColors; ++i) {
+            e->more_colors[i - 1] = gl::Texture(cd);
+            fd.more_colors[i - 1] = &e->more_colors[i - 1];
+        }
     }
     if (d.depth_texture) {
         gl::TextureDesc dd = td;
@@ -82,8 +87,10 @@ gl::Target ResourcePool::whole(const std::string& name) const {
     return gl::Target{&e.fb, e.desc.width, e.desc.height};
 }
 
-const gl::Texture& ResourcePool::texture(const std::string& name) const {
+const gl::Texture& ResourcePool::texture(const std::string& name, int attachment) const {
     const Entry& e = entry(name);
+    if (attachment > 0 && attachment < e.desc.colors && attachment <= gl::kMaxExtraColors)
+        return e.more_colors[attachment - 1];
     return e.desc.color ? e.color : e.depth_texture;
 }
 

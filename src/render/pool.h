@@ -28,7 +28,8 @@ public:
     // The whole of a resource's framebuffer (for reading it back).
     gl::Target whole(const std::string& name) const;
     // The texture a pass samples: the colour texture, or the depth texture of a depth-only target.
-    const gl::Texture& texture(const std::string& name) const;
+    // `attachment`: which colour texture of a target with several (ResourceDesc::colors).
+    const gl::Texture& texture(const std::string& name, int attachment = 0) const;
     bool has(const std::string& name) const { return entries_.count(name) > 0; }
     std::size_t count() const { return entries_.size(); }
     std::size_t bytes() const;  // the GPU memory of every resource held

@@ -152,7 +152,8 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
     device_.apply(pass.state);
     for (const Binding& b : pass.bindings)
         for (const TextureBinding& t : b.textures)
-            device_.bind_texture(t.unit, pool_.texture(plan.resources[static_cast<size_t>(t.resource)].desc.name));
+            device_.bind_texture(t.unit,
+                                 pool_.texture(plan.resources[static_cast<size_t>(t.resource)].desc.name, t.attachment));
     const gl::Program* program = nullptr;
     std::uint32_t bound = 0;
     gl::Cull cull = pass.state.cull;
@@ -207,6 +208,7 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
                 p.set("u_base_texture", kBaseTextureUnit);
             }
         }
+        for (const Uniform& u : d.uniforms) set_uniform(p, u);
         if (d.fullscreen) device_.draw_fullscreen();
         else if (d.triangles) device_.draw_points(*d.triangles);
         else device_.draw(up.meshes[static_cast<size_t>(d.mesh)]);
