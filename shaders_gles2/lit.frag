@@ -14,7 +14,13 @@
 // behind the mirror's plane, u_clip_plane < 0, discarded: GLES2 has no user clip planes; the colour
 // premultiplied by u_reflectivity, its alpha, for the blend over the mirror's own colour),
 // CLIPPED (--effects portal: the other scene seen through the opening; what lies on the camera's
-// side of the opening's plane, u_clip_plane < 0, discarded).
+// side of the opening's plane, u_clip_plane < 0, discarded),
+// POINT_LIGHTS K (--lights: K point lights from u_point_lights added, points.glsl), POINTS_ONLY
+// (only those: forward's later batches, deferred's per-light squares, blended additively),
+// GBUFFER_WRITE (--shading deferred's geometry pass: the surface into the G-buffer, gbuffer.glsl:
+// all three targets with GBUFFER_MRT through gl_FragData, else the one GBUFFER_TARGET 0/1/2 names;
+// RECEIVES: the object receives shadows), GBUFFER_READ (the lighting passes, with screen.vert: the
+// surface read back from the G-buffer at the pixel instead of the varyings and the material).
 #include "precision.glsl"
 
 uniform vec4 u_base_color;
@@ -36,13 +42,37 @@ uniform vec3 u_spot_direction;  // where the light travels
 uniform vec2 u_spot_cos;        // cos(outer cone), cos(inner cone)
 #endif
 
+#ifdef GBUFFER_READ
+#include "gbuffer.glsl"
+uniform sampler2D u_gbuffer_color;
+uniform sampler2D u_gbuffer_normal;
+uniform sampler2D u_gbuffer_depth;
+uniform vec4 u_screen;  // xy: the viewport's lower-left corner; zw: 1 / its size
+varying vec4 v_near;
+varying vec4 v_far;
+#else
 varying vec3 v_world;
 varying vec3 v_normal;
 varying vec2 v_uv;
+#endif
+#ifdef GBUFFER_WRITE
+#include "gbuffer.glsl"
+uniform vec4 u_depth_map;  // the ray position s = dot(xyz, world) + w: 0 on the near plane, 1 on the far
+#ifndef GBUFFER_TARGET
+#define GBUFFER_TARGET 0
+#endif
+#endif
+#ifdef POINT_LIGHTS
+#include "points.glsl"
+#endif
 
 #ifdef SHADOW_MAP
 #include "shadow.glsl"
+#ifdef GBUFFER_READ
+uniform mat4 u_light_matrix;
+#else
 varying vec4 v_shadow_coord;
+#endif
 #endif
 #ifdef AREA_LOOKUP
 // Heckbert-Herf: the counts of lit light samples (area_add.frag), one channel per sample mod 4.
@@ -72,8 +102,21 @@ uniform float u_reflectivity;
 #endif
 
 void main() {
+#ifdef GBUFFER_READ
+    vec2 gUv = (gl_FragCoord.xy - u_screen.xy) * u_screen.zw;
+    vec4 gDepth = gbufferBytes(texture2D(u_gbuffer_depth, gUv));
+    if (gbufferEmpty(gDepth)) discard;
+    vec3 world = mix(v_near.xyz / v_near.w, v_far.xyz / v_far.w, gbufferDepth(gDepth));
+    vec3 n = gbufferNormal(gbufferBytes(texture2D(u_gbuffer_normal, gUv)));
+    vec4 gColor = texture2D(u_gbuffer_color, gUv);
+    vec4 base = vec4(gColor.rgb, 1.0);
+    float specularStrength = gColor.a;
+    float shininess = gbufferShininess(gDepth);
+    bool receives = gbufferReceives(gDepth);
+#else
+    vec3 world = v_world;
 #if defined(REFLECTED) || defined(CLIPPED)
-    if (dot(u_clip_plane, vec4(v_world, 1.0)) < 0.0) discard;
+    if (dot(u_clip_plane, vec4(world, 1.0)) < 0.0) discard;
 #endif
 #if defined(ALPHA_TEST) || defined(ALPHA_BLEND)
     float alpha = u_base_color.a;
@@ -88,9 +131,41 @@ void main() {
 #ifdef DOUBLE_SIDED
     if (!gl_FrontFacing) n = -n;
 #endif
-    vec3 l = normalize(u_light.xyz - v_world * u_light.w);
+    vec4 base = u_base_color;
+#ifdef TEXTURED
+    base *= texture2D(u_base_texture, v_uv);
+#endif
+    float specularStrength = u_specular;
+    float shininess = u_shininess;
+    bool receives = true;
+#endif
+
+#if defined(GBUFFER_WRITE)
+    float s = dot(u_depth_map.xyz, world) + u_depth_map.w;
+#ifdef RECEIVES
+    bool receivesShadows = true;
+#else
+    bool receivesShadows = false;
+#endif
+#if defined(GBUFFER_MRT)
+    gl_FragData[0] = gbufferOut(gbufferColorBytes(base.rgb, specularStrength));
+    gl_FragData[1] = gbufferOut(gbufferNormalBytes(n));
+    gl_FragData[2] = gbufferOut(gbufferDepthBytes(s, shininess, receivesShadows));
+#elif GBUFFER_TARGET == 0
+    gl_FragColor = gbufferOut(gbufferColorBytes(base.rgb, specularStrength));
+#elif GBUFFER_TARGET == 1
+    gl_FragColor = gbufferOut(gbufferNormalBytes(n));
+#else
+    gl_FragColor = gbufferOut(gbufferDepthBytes(s, shininess, receivesShadows));
+#endif
+#elif defined(POINTS_ONLY)
+    gl_FragColor = vec4(pointLights(world, n, base.rgb), 1.0);
+#else
+    vec3 l = normalize(u_light.xyz - world * u_light.w);
     float visibility = 1.0;
-#if defined(SHADOW_MAP)
+#if defined(SHADOW_MAP) && defined(GBUFFER_READ)
+    if (receives) visibility = shadowVisibility(u_light_matrix * vec4(world, 1.0), n);
+#elif defined(SHADOW_MAP)
     visibility = shadowVisibility(v_shadow_coord, n);
 #elif defined(IN_SHADOW)
     visibility = 0.0;
@@ -116,19 +191,18 @@ void main() {
 #elif defined(AOV_VISIBILITY)
     gl_FragColor = vec4(vec3(visibility), 1.0);
 #else
-    vec4 base = u_base_color;
-#ifdef TEXTURED
-    base *= texture2D(u_base_texture, v_uv);
-#endif
-    vec3 v = normalize(u_camera_pos - v_world);
+    vec3 v = normalize(u_camera_pos - world);
     float diffuse = max(dot(n, l), 0.0);
     float specular = 0.0;
-    if (diffuse > 0.0) specular = u_specular * pow(max(dot(reflect(-l, n), v), 0.0), u_shininess);
+    if (diffuse > 0.0) specular = specularStrength * pow(max(dot(reflect(-l, n), v), 0.0), shininess);
     float cone = 1.0;
 #ifdef LIGHT_SPOT
     cone = smoothstep(u_spot_cos.x, u_spot_cos.y, dot(-l, u_spot_direction));
 #endif
     vec3 direct = (base.rgb * diffuse + vec3(specular)) * u_light_color * (visibility * cone);
+#ifdef POINT_LIGHTS
+    direct += pointLights(world, n, base.rgb);
+#endif
 #if defined(LIGHT_AMBIENT)
     gl_FragColor = vec4(base.rgb * u_ambient, 1.0);
 #elif defined(LIGHT_DIRECT)
@@ -141,6 +215,7 @@ void main() {
 #endif
 #ifdef REFLECTED
     gl_FragColor = vec4(gl_FragColor.rgb * u_reflectivity, u_reflectivity);
+#endif
 #endif
 #endif
 }

@@ -9,6 +9,9 @@ uniform mat4 u_model;
 uniform mat3 u_normal_matrix;  // inverse transpose of the model matrix's upper 3x3
 uniform mat4 u_view_proj;
 
+// The same position in every variant: forward's later light batches draw the surfaces again, depth equal.
+invariant gl_Position;
+
 varying vec3 v_world;
 varying vec3 v_normal;
 varying vec2 v_uv;

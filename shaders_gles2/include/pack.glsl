@@ -3,6 +3,9 @@
 // (round(c * 255)) stores the byte exactly. Under float32 every step is exact, so the round trip
 // is exact to 2^-24; src/shadow/encoding.cpp mirrors this on the CPU for the tests.
 
+#ifndef PACK_GLSL
+#define PACK_GLSL 1  // included by shadow.glsl and gbuffer.glsl, both in lit.frag
+
 // PACK_FLOOR: the start-up probe found that this context truncates float -> unorm8 instead of
 // rounding; aim at the middle of each byte so the intended byte is stored either way.
 #ifdef PACK_FLOOR
@@ -31,3 +34,4 @@ float unpackDepth(vec4 rgba) {
 vec4 packDepthR8(float depth) {
     return vec4(MP(MP(depth) + UNORM_OFFSET / 255.0), 0.0, 0.0, 1.0);
 }
+#endif  // PACK_GLSL

@@ -502,10 +502,32 @@ std::vector<Option<Options>> make_table() {
     add(post, [](Options& o, std::string_view v) { o.settings.post = parse_post(v); },
         [](const Options& o) { return post_text(o.settings.post); });
 
+    OptionInfo shading = make_option_info("shading", P::Technique, T::Choice,
+                         "forward = each object lit as it is drawn (the point lights in batches of 16, one pass "
+                         "each); deferred = the objects drawn once into a G-buffer (colour, normal, depth), then "
+                         "its pixels lit: the main light and its shadow in one full-screen pass, each point light "
+                         "over the square its range covers", "Shading",
+                         {{"forward", "forward"}, {"deferred", "deferred (G-buffer)"}});
+    add(shading, [](Options& o, std::string_view v) { o.settings.shading = enum_of(v, kAllShadings); },
+        [](const Options& o) { return std::string(to_string(o.settings.shading)); });
+
+    OptionInfo lights = make_option_info("lights", P::Technique, T::Integer,
+                        "point lights beside the scene's light, unshadowed, each with a range, placed over the "
+                        "ground around the objects", "Point lights");
+    lights.min = 0;
+    lights.max = kMaxLights;
+    lights.presets = {{"0", "none"}, {"8", "8"}, {"32", "32"}, {"128", "128"}, {"256", "256"}};
+    add(lights, [](Options& o, std::string_view v) { o.settings.lights = int_of(v); },
+        [](const Options& o) { return std::to_string(o.settings.lights); });
+
     OptionInfo aov = make_option_info("aov", P::Technique, T::Choice, "what the image shows", "Show",
                    {{"color", "colour"}, {"visibility", "visibility (white lit, black shadowed)"},
                     {"light-depth", "the shadow map's depth"},
-                    {"stencil-count", "the stencil count of shadow volumes, in false colour"}});
+                    {"stencil-count", "the stencil count of shadow volumes, in false colour"},
+                    {"gbuffer-color", "G-buffer: colour (--shading deferred)"},
+                    {"gbuffer-normal", "G-buffer: normal"},
+                    {"gbuffer-position", "G-buffer: position"},
+                    {"gbuffer-depth", "G-buffer: depth"}});
     add(aov, [](Options& o, std::string_view v) { o.settings.aov = enum_of(v, kAllAovs); },
         [](const Options& o) { return std::string(to_string(o.settings.aov)); });
 

@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/deferred.h"
 #include "render/options.h"
 #include "render/post.h"
 #include "render/techniques/technique.h"
@@ -272,6 +273,7 @@ Pass camera_pass(PlanContext& c, const Module& module, bool stencil,
     cam.detail = c.plan.output + ", " + std::to_string(cam.draws.size()) + " object(s)";
     module.shade(c, cam, items);
     if (extra) extra(c, cam, items);
+    forward_lights(c, cam, items);
     set_lit_draws(cam, items);
     if (c.settings.aov == Aov::Visibility) cam.detail += ", visibility AOV";
     return cam;
@@ -487,7 +489,7 @@ void plan_frame(Planning& p, bool stencil) {
     PlanContext& c = p.ctx;
     p.module.before_camera(c);
     const bool own = p.module.own_view(c);
-    if (!own) c.add_pass(camera_pass(c, p.module, stencil));
+    if (!own) add_forward_light_passes(c, c.add_pass(camera_pass(c, p.module, stencil)));
     p.module.after_camera(c);
     if (!own) {
         for (const Module* e : p.effects) e->after_opaque(c);
@@ -545,7 +547,8 @@ void plan_shadow_blur(Planning& p, bool stencil, bool effect_stencil) {
     const int tmp = add_post_target(c, "shadow-blur-tmp", out.width, out.height, "--post shadow-blur: its first pass");
     add_blur_passes(c, "shadow-blur", vis, tmp, {vis, out.width, out.height, 0, 0, false},
                     static_cast<int>(c.settings.post_step(PostKind::ShadowBlur)->value));
-    c.add_pass(camera_pass(c, technique_module(Technique::None), effect_stencil, screen_visibility_lookup));
+    add_forward_light_passes(
+        c, c.add_pass(camera_pass(c, technique_module(Technique::None), effect_stencil, screen_visibility_lookup)));
     for (const Module* e : p.effects) e->after_opaque(c);
     blend_pass(c, p.module);
     for (const Module* e : p.effects) e->after_camera(c);
@@ -567,6 +570,7 @@ std::string check(const scene::Scene& scene, const Settings& s, const gl::Caps& 
     if (s.aov == Aov::StencilCount && s.technique != Technique::Volumes)
         return "--aov stencil-count: needs --technique volumes";
     Planning p(scene, s, caps, in, nullptr);
+    if (std::string why = shading_problem(p.ctx); !why.empty()) return why;
     if (std::string why = p.module.check(p.ctx); !why.empty()) return why;
     for (const Module* e : p.effects)
         if (std::string why = e->check(p.ctx); !why.empty()) return why;
@@ -596,6 +600,11 @@ FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& cap
                                           "", "the camera's image before --post"),
                            out.width, out.height, 0, 0, false};
 
+    if (s.shading == Shading::Deferred) {
+        plan_deferred(c, p.module);
+        if (image_post(s)) add_post_passes(c, c.camera_target.resource, output);
+        return std::move(p.plan);
+    }
     std::string why;
     if (area_applies(c, &why)) {
         plan_area(p, technique_stencil, effect_stencil);

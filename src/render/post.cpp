@@ -146,6 +146,8 @@ const std::string& name_of(const PlanContext& c, int resource) {
     return c.plan.resources[static_cast<size_t>(resource)].desc.name;
 }
 
+}  // namespace
+
 // A pass of one full-screen draw reading `src` at unit 0 as u_image, with `more` uniforms.
 Pass image_pass(const PlanContext& c, std::string name, int src, const TargetRef& dst, Variant v,
                 std::vector<Uniform> more, std::string detail) {
@@ -161,8 +163,6 @@ Pass image_pass(const PlanContext& c, std::string name, int src, const TargetRef
     p.detail = name_of(c, src) + " -> " + into + ": " + std::move(detail);
     return p;
 }
-
-}  // namespace
 
 void add_blur_passes(PlanContext& c, const std::string& name, int src, int tmp, const TargetRef& dst, int radius) {
     const TargetRef t = whole(c, tmp);

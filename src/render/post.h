@@ -45,6 +45,10 @@ std::string post_format(const gl::Caps& caps);
 // The separable blur of resource `src` (sampled) into `dst`, through resource `tmp` (the
 // horizontal pass's target, the size of dst): two passes named NAME-h and NAME-v.
 void add_blur_passes(PlanContext& c, const std::string& name, int src, int tmp, const TargetRef& dst, int radius);
+// A pass of one full-screen draw reading resource `src` at unit 0 as u_image, with `more`
+// uniforms, into `dst` (the bloom's bright pass with u_threshold 0 is a copy).
+Pass image_pass(const PlanContext& c, std::string name, int src, const TargetRef& dst, Variant v,
+                std::vector<Uniform> more, std::string detail);
 // The resource of the intermediate targets: `name` at width x height (linear, clamp), colour only.
 int add_post_target(PlanContext& c, const std::string& name, int width, int height, const std::string& purpose);
 

@@ -53,9 +53,15 @@ std::string_view to_string(Aov a) {
         case Aov::Visibility: return "visibility";
         case Aov::LightDepth: return "light-depth";
         case Aov::StencilCount: return "stencil-count";
+        case Aov::GbufferColor: return "gbuffer-color";
+        case Aov::GbufferNormal: return "gbuffer-normal";
+        case Aov::GbufferPosition: return "gbuffer-position";
+        case Aov::GbufferDepth: return "gbuffer-depth";
     }
     return "?";
 }
+
+std::string_view to_string(Shading s) { return s == Shading::Forward ? "forward" : "deferred"; }
 
 bool Settings::operator==(const Settings& o) const {
     return technique == o.technique && encoding == o.encoding && filter == o.filter && pcf_kernel == o.pcf_kernel &&
@@ -66,7 +72,7 @@ bool Settings::operator==(const Settings& o) const {
            area_per_frame == o.area_per_frame && gooch_planes == o.gooch_planes && gooch_method == o.gooch_method &&
            blend_shadows == o.blend_shadows &&
            effects == o.effects && outline_color == o.outline_color && outline_width == o.outline_width &&
-           reflectivity == o.reflectivity && post == o.post;
+           reflectivity == o.reflectivity && post == o.post && shading == o.shading && lights == o.lights;
 }
 
 }  // namespace penumbra::render

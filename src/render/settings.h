@@ -25,8 +25,22 @@ enum class Aov {
     Color,        // the shaded image
     Visibility,   // 8-bit grey: 255 where the light reaches the surface seen at the pixel, 0 in shadow
     LightDepth,   // the shadow map, depth scaled for viewing
-    StencilCount  // shadow volumes: the stencil count in false colour over the unlit image
+    StencilCount,  // shadow volumes: the stencil count in false colour over the unlit image
+    // --shading deferred: what the G-buffer holds, decoded (render/deferred.h)
+    GbufferColor,     // the base colour
+    GbufferNormal,    // the world normal, n * 0.5 + 0.5
+    GbufferPosition,  // the world position, over the shadowed objects' bounds (0..1 per axis)
+    GbufferDepth      // the camera's linear depth, near white, far black
 };
+// --shading: how the camera's image is lit. Forward draws every object once per batch of lights;
+// deferred draws the objects once into a G-buffer (colour, normal, depth) and then lights its
+// pixels: the main light in one full-screen pass, each point light over the screen-space square
+// its range covers (render/deferred.h).
+enum class Shading { Forward, Deferred };
+inline constexpr Shading kAllShadings[] = {Shading::Forward, Shading::Deferred};
+// --lights N: point lights beside the scene's light, unshadowed (render/lights.h).
+inline constexpr int kMaxLights = 256;
+std::string_view to_string(Shading s);
 // How shadow volumes count in the stencil buffer.
 enum class VolumeMethod {
     Auto,   // depth-pass for casters whose volume cannot reach the near plane, depth-fail for the rest
@@ -72,7 +86,12 @@ std::string_view to_string(PostKind k);
 
 // --outline-width: pixels on the screen, whatever the object's depth.
 inline constexpr float kMinOutlineWidth = 0.5f, kMaxOutlineWidth = 32.0f;
-inline constexpr Aov kAllAovs[] = {Aov::Color, Aov::Visibility, Aov::LightDepth, Aov::StencilCount};
+inline constexpr Aov kAllAovs[] = {Aov::Color,        Aov::Visibility,    Aov::LightDepth,      Aov::StencilCount,
+                                   Aov::GbufferColor, Aov::GbufferNormal, Aov::GbufferPosition, Aov::GbufferDepth};
+// The AOVs that show the G-buffer (--shading deferred).
+inline bool gbuffer_aov(Aov a) {
+    return a == Aov::GbufferColor || a == Aov::GbufferNormal || a == Aov::GbufferPosition || a == Aov::GbufferDepth;
+}
 
 std::string_view to_string(Technique t);
 std::string_view to_string(Aov a);
@@ -127,6 +146,8 @@ struct Settings {
     float reflectivity = 0.5f;
     // --post: each kind at most once; blur and bloom applied in the list's order.
     std::vector<PostStep> post;
+    Shading shading = Shading::Forward;
+    int lights = 0;  // --lights: point lights beside the scene's, 0..kMaxLights
 
     // The step of that kind, or null.
     const PostStep* post_step(PostKind k) const {

@@ -13,6 +13,9 @@ std::string variant_source(const std::string& file, const std::vector<std::strin
         if (text.rfind(version, 0) != 0) throw gl::Error(file + ": must start with '#version 100'");
         std::string lines;
         for (const auto& d : defines) lines += "#define " + d + (d.find(' ') == std::string::npos ? " 1\n" : "\n");
+        // gl_FragData[i > 0] needs the extension, declared before anything else but #version.
+        for (const auto& d : defines)
+            if (d == "GBUFFER_MRT") lines = "#extension GL_EXT_draw_buffers : require\n" + lines;
         text.insert(version.size(), lines);
         return text;
     }

@@ -109,6 +109,18 @@ Variant lit_variant(const LitFeatures& f) {
     if (f.double_sided) v.defines.emplace_back("DOUBLE_SIDED");
     if (f.reflected) v.defines.emplace_back("REFLECTED");
     if (f.clipped) v.defines.emplace_back("CLIPPED");
+    if (f.point_lights > 0) v.defines.push_back("POINT_LIGHTS " + std::to_string(f.point_lights));
+    if (f.points_only) v.defines.emplace_back("POINTS_ONLY");
+    switch (f.gbuffer) {
+        case Gbuffer::None: break;
+        case Gbuffer::WriteAll: v.defines.emplace_back("GBUFFER_WRITE"); v.defines.emplace_back("GBUFFER_MRT"); break;
+        case Gbuffer::WriteOne:
+            v.defines.emplace_back("GBUFFER_WRITE");
+            v.defines.push_back("GBUFFER_TARGET " + std::to_string(f.gbuffer_target));
+            break;
+        case Gbuffer::Read: v.vertex = "screen.vert"; v.defines.emplace_back("GBUFFER_READ"); break;
+    }
+    if (f.receives && (f.gbuffer == Gbuffer::WriteAll || f.gbuffer == Gbuffer::WriteOne)) v.defines.emplace_back("RECEIVES");
     return v;
 }
 
@@ -181,6 +193,14 @@ Variant blur_variant(int radius) {
 
 Variant bright_variant() { return {"light_depth.vert", "post_bright.frag", {}}; }
 Variant bloom_add_variant() { return {"light_depth.vert", "post_bloom.frag", {}}; }
+
+Variant gbuffer_view_variant(Aov aov) {
+    const char* view = aov == Aov::GbufferColor ? "VIEW_COLOR"
+                       : aov == Aov::GbufferNormal ? "VIEW_NORMAL"
+                       : aov == Aov::GbufferPosition ? "VIEW_POSITION"
+                                                     : "VIEW_DEPTH";
+    return {"screen.vert", "gbuffer_view.frag", {view}};
+}
 
 Variant ramp_variant(shadow::Encoding e, const DepthPath& path) {
     Variant v{"light_depth.vert", "ramp.frag", {encoding_define(e)}};
@@ -303,6 +323,48 @@ std::vector<Variant> all_variants() {
             out.push_back(lit_variant(base));
         }
     }
+    // --lights and --shading deferred: forward's batches (1 and kLightsPerPass lights, with the
+    // main light or alone), the geometry pass (all targets or one, textured, cut out,
+    // double-sided, receiving or not), the lighting pass (no shadow, or the shadow map of either
+    // bias, point or spot light, colour or visibility) and its per-light squares, the views.
+    for (int k : {1, 16}) {
+        LitFeatures f;
+        f.point_lights = k;
+        out.push_back(lit_variant(f));
+        f.shadow_map = f.bias_auto = f.light_perspective = f.textured = true;
+        out.push_back(lit_variant(f));
+        f.points_only = true;
+        out.push_back(lit_variant(f));
+    }
+    for (int target = -1; target < 3; ++target)
+        for (int bits = 0; bits < 8; ++bits) {
+            LitFeatures g;
+            g.gbuffer = target < 0 ? Gbuffer::WriteAll : Gbuffer::WriteOne;
+            g.gbuffer_target = std::max(target, 0);
+            g.textured = g.alpha_test = bits & 1;
+            g.double_sided = bits & 2;
+            g.receives = bits & 4;
+            out.push_back(lit_variant(g));
+        }
+    for (LitFeatures base : shadowing) {
+        if (!(base.light_term == LightTerm::All && !base.in_shadow && !base.area_lookup && base.gooch_taps == 0)) continue;
+        if (base.mediump || (base.shadow_map && base.pcf_kernel != shadow::PcfKernel::EarlyExit &&
+                             shadow::pcf_early_exit_applies(base.filter)))
+            continue;
+        base.gbuffer = Gbuffer::Read;
+        for (int bits = 0; bits < 4; ++bits) {
+            base.spot = bits & 1;
+            base.visibility_aov = bits & 2;
+            out.push_back(lit_variant(base));
+        }
+    }
+    LitFeatures square;
+    square.gbuffer = Gbuffer::Read;
+    square.point_lights = 1;
+    square.points_only = true;
+    out.push_back(lit_variant(square));
+    for (Aov a : {Aov::GbufferColor, Aov::GbufferNormal, Aov::GbufferPosition, Aov::GbufferDepth})
+        out.push_back(gbuffer_view_variant(a));
     // PCSS's tap counts, each once (the loops' bounds).
     for (int n : {1, 8, 32, 64}) {
         LitFeatures p;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "render/settings.h"
 #include "shadow/encoding.h"
 
 namespace penumbra::render {
@@ -26,6 +27,14 @@ struct Variant {
 // What the lit shader writes: everything, the ambient term only (LIGHT_AMBIENT), or the direct
 // term only, scaled by u_light_weight (LIGHT_DIRECT; visibility AOV: u_light_weight).
 enum class LightTerm { All, Ambient, Direct };
+
+// --shading deferred: what a lit draw does with the G-buffer (render/deferred.h).
+enum class Gbuffer {
+    None,
+    WriteAll,  // the geometry pass into the three targets at once (GBUFFER_MRT: EXT_draw_buffers)
+    WriteOne,  // into target gbuffer_target only (one geometry pass per target)
+    Read       // a lighting pass: the surface read back at the pixel (screen.vert)
+};
 
 // What the lit shader needs for one object in one pass.
 struct LitFeatures {
@@ -58,6 +67,12 @@ struct LitFeatures {
     // --effects portal: the other scene seen through the opening (the world position on the
     // camera's side of the opening's plane discarded, u_clip_plane).
     bool clipped = false;
+    // --lights: this many point lights added (u_point_lights); points_only: nothing else.
+    int point_lights = 0;
+    bool points_only = false;
+    Gbuffer gbuffer = Gbuffer::None;
+    int gbuffer_target = 0;  // WriteOne: 0 colour, 1 normal, 2 depth
+    bool receives = false;   // WriteAll, WriteOne: the object receives shadows (the depth target's flag)
 };
 
 // How a pass that draws casters without their material (depth, stencil, flat) treats a caster's
@@ -114,6 +129,9 @@ Variant area_add_variant();
 Variant blur_variant(int radius);
 Variant bright_variant();
 Variant bloom_add_variant();
+
+// --aov gbuffer-*: a G-buffer target decoded for people (gbuffer_view.frag through screen.vert).
+Variant gbuffer_view_variant(Aov aov);
 
 // Every variant the renderer can build.
 std::vector<Variant> all_variants();
