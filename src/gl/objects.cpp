@@ -155,6 +155,7 @@ std::string attachments(const FramebufferDesc& d) {
 // exports it, and routes it to WEBGL_draw_buffers).
 void draw_buffers(GLsizei n, const GLenum* buffers, const char* label) {
 #ifdef __EMSCRIPTEN__
+    (void)label;
     glDrawBuffersEXT(n, buffers);
 #else
     static const auto fn = reinterpret_cast<PFNGLDRAWBUFFERSEXTPROC>(eglGetProcAddress("glDrawBuffersEXT"));
