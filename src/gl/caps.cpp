@@ -53,7 +53,7 @@ Caps probe_caps(Api api) {
     const auto either = [&](const char* name) { return c.has(std::string("GL_") + name) || c.has(name); };
     c.half_float_target = either("OES_texture_half_float") && either("OES_texture_half_float_linear") &&
                           either("EXT_color_buffer_half_float");
-    c.draw_buffers = c.has("GL_EXT_draw_buffers") || c.has("WEBGL_draw_buffers");
+    c.draw_buffers = either("EXT_draw_buffers") || either("WEBGL_draw_buffers");
     c.render_mipmap = c.has("GL_OES_fbo_render_mipmap");
 
     c.max_texture_size = get_int(GL_MAX_TEXTURE_SIZE);
