@@ -24,7 +24,7 @@ python3 - "$work/bench" <<'PY' && ok || bad "bench outputs are not well-formed"
 import csv, struct, sys, xml.etree.ElementTree as ET, zlib
 d = sys.argv[1]
 every = list(csv.DictReader(open(d + "/results.csv")))
-assert {r["section"] for r in every} == {"sweep", "silhouette", "effects"}, {r["section"] for r in every}
+assert {r["section"] for r in every} == {"sweep", "silhouette", "effects", "lights"}, {r["section"] for r in every}
 rows = [r for r in every if r["section"] == "sweep"]
 sil = [r for r in every if r["section"] == "silhouette"]
 # 2 scenes x (3 encodings x 3 filters x 2 maps + rgba hard and pcf4x4 at map 1024 as before issue 9
@@ -74,6 +74,18 @@ for r in eff:
     else: assert r["effect_error_pct"] == "", r
     # the mirror does not reflect the portal: those pixels, and only those, are left out
     assert (int(r["not_modelled_pixels"]) > 0) == ("mirror" in r["effects"] and "portal" in r["effects"]), r
+# forward against deferred: 0, 8 and 64 lights, each shading; the shadow is the main light's in
+# both (the same error up to the rare pixels where the shadow test flips), the G-buffer's bytes
+# counted (deferred's targets more), the settings naming both options
+lit = [r for r in every if r["section"] == "lights"]
+assert sorted((int(r["lights"]), r["shading"]) for r in lit) == sorted((n, s) for n in (0, 8, 64) for s in ("forward", "deferred")), lit
+lby = {(int(r["lights"]), r["shading"]): r for r in lit}
+for n in (0, 8, 64):
+    f, g = lby[(n, "forward")], lby[(n, "deferred")]
+    assert abs(float(f["error_pct"]) - float(g["error_pct"])) < 0.05, (f, g)
+    assert int(g["shadow_map_bytes"]) > int(f["shadow_map_bytes"]), (f, g)
+    assert "--shading deferred" in g["settings"] and "--lights %d" % n in g["settings"], g
+    assert float(f["ms_moving"]) > 0 and float(g["ms_moving"]) > 0
 by = {(r["technique"], r["effects"]): r for r in eff}
 # the outline is not in the visibility AOV: the frame under it is scored, the same as without it
 assert by[("rgba hard", "outline")]["error_pct"] == by[("rgba hard", "none")]["error_pct"]
@@ -109,6 +121,10 @@ assert "## Shadow volumes as the silhouette grows" in md and "| 128 | 16128 |" i
 assert "## The defaults against the settings before issue 9" in md and "| rgba hard | 1024 |" in md
 assert "## The stencil effects and the post passes on course@0.60" in md and "| volumes auto | outline,mirror,portal | none |" in md
 assert "| rgba hard | none | shadow-blur:6 | - |" in md
+assert "## Forward against deferred shading on course@0.60" in md and "| 64 |" in md
+lsvg = ET.parse(d + "/lights.svg").getroot()
+assert "deferred" in [t.text for t in lsvg.iter("{http://www.w3.org/2000/svg}text")]
+assert open(d + "/lights.png", "rb").read()[:8] == b"\x89PNG\r\n\x1a\n"
 svg = ET.parse(d + "/tradeoff.svg").getroot()
 assert svg.tag.endswith("svg") and len(svg.findall(".//{http://www.w3.org/2000/svg}polyline")) > 0
 texts = [t.text for t in svg.iter("{http://www.w3.org/2000/svg}text")]
@@ -128,6 +144,8 @@ if "$penumbra" bench --from-csv "$work/bench/results.csv" --out-dir "$work/again
    cmp -s <(sed -n '/^## The stencil effects/,/^$/p' "$work/bench/results.md") \
           <(sed -n '/^## The stencil effects/,/^$/p' "$work/again/results.md") &&
    grep -q "^| rgba hard | mirror |" "$work/again/results.md" &&
+   cmp -s <(sed -n '/^## Forward against deferred/,/^$/p' "$work/bench/results.md") \
+          <(sed -n '/^## Forward against deferred/,/^$/p' "$work/again/results.md") &&
    cmp -s <(sed -n '/^| segments/,/^$/p' "$work/bench/results.md" | awk -F'|' 'NF > 4 {print $2 $3 $(NF-3) $(NF-2) $(NF-1)}') \
           <(sed -n '/^| segments/,/^$/p' "$work/again/results.md" | awk -F'|' 'NF > 4 {print $2 $3 $(NF-3) $(NF-2) $(NF-1)}'); then ok
 else bad "bench --from-csv lost the volumes' or the effects' tables: $(cat "$work/again.err")"; fi

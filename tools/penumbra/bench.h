@@ -17,6 +17,7 @@
 #include <glm/glm.hpp>
 
 #include "measure.h"
+#include "plot.h"
 #include "measure/image_io.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
@@ -91,10 +92,14 @@ struct Row {
     // --post rows of the effects section ("" or "none": none): timed, not scored (score.valid 0);
     // bytes then counts the post passes' targets beside the map.
     std::string post;
+    // The lights section's rows: --shading and --lights.
+    std::string shading;
+    int lights = 0;
 };
 
 inline constexpr const char* kSilhouetteSection = "silhouette";
 inline constexpr const char* kEffectsSection = "effects";
+inline constexpr const char* kLightsSection = "lights";
 // The silhouette sweep's spheres: slices around, half as many stacks.
 inline constexpr int kSphereSegments[] = {8, 16, 32, 64, 128};
 
@@ -112,6 +117,7 @@ struct Sweep {
     std::vector<Row> silhouette;  // the silhouette sweep's rows (section kSilhouetteSection)
     std::vector<Row> effects;     // the effects' rows (section kEffectsSection)
     std::string effects_frame;    // the scene frame they were measured on ("course@0.60")
+    std::vector<Row> lights;      // forward against deferred (section kLightsSection)
     std::vector<std::string> notes;
     std::string command_line;
     std::string from_csv;  // rows read back from this file instead of measured
@@ -184,6 +190,19 @@ Timing time_frames(render::Renderer& r, const render::Settings& s, const render:
 // first course frame of --scenes: the error against the effects' truth (the frame, and the mirror's
 // and the opening's pixels alone) and ms/frame, into w.effects. No course frame: a note, no rows.
 void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in);
+// The first course frame of --scenes: the one at t 0.6 if there is one (the pictures' frame); null
+// when no teapot frame is listed.
+const SceneSpec* course_frame(const Sweep& w);
+
+// ---- lights_bench.cpp: forward against deferred shading ------------------------------------------
+
+// --lights 0 and 1 to 256 (quick: 0, 8, 64) under forward and deferred shading, the default
+// technique, on the first course frame: ms/frame, the bytes of every target, and the visibility
+// scored against the hard truth, into w.lights.
+void lights_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in);
+// N lights at which deferred becomes cheaper than forward, interpolated in log N between the two
+// rows that bracket it; < 0 when it does not happen in the rows.
+double lights_crossing(const Sweep& w);
 
 // ---- soft_bench.cpp: penumbra bench --soft ------------------------------------------------------
 
@@ -203,6 +222,9 @@ Report write_report(const Sweep& w, const std::filesystem::path& dir, Clock::tim
 // its rows: the silhouette sweep's (Sweep::silhouette) and the stencil effects' (Sweep::effects).
 std::string silhouette_table(const Sweep& w);
 std::string effects_table(const Sweep& w);
+std::string lights_table(const Sweep& w);
+// ms/frame against --lights, forward and deferred, the crossing called out (lights.svg).
+Plot lights_plot(const Sweep& w);
 
 // Reads rows written by the CSV writer (or by another harness with the same columns, e.g. three.js
 // runs scored with `penumbra truth --score`): the scenes, sizes and map sizes follow from the rows.

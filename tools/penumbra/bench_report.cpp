@@ -48,11 +48,12 @@ std::string csv(const Sweep& w) {
       << ",ms_moving,ms_still,ms_shadow_pass,ms_camera_pass,frames,redrawn_moving,redrawn_still,shadow_map_bytes,texel_use_pct,"
          "silhouette_edges,volume_triangles,fill_per_pixel,zpass_casters,zfail_casters,section,segments,"
          "effects,effect_error_pct,effect_false_shadow_pct,effect_false_lit_pct,effect_valid_pixels,not_modelled_pixels,"
-         "post,settings\n";
+         "post,shading,lights,settings\n";
     std::vector<const Row*> rows;
     for (const Row& r : w.rows) rows.push_back(&r);
     for (const Row& r : w.silhouette) rows.push_back(&r);
     for (const Row& r : w.effects) rows.push_back(&r);
+    for (const Row& r : w.lights) rows.push_back(&r);
     for (const Row* rp : rows) {
         const Row& r = *rp;
         const bool vol = r.silhouette_edges >= 0;
@@ -72,6 +73,8 @@ std::string csv(const Sweep& w) {
         } else {
             o << ",,,,,,,";
         }
+        if (r.section == kLightsSection) o << r.shading << "," << r.lights << ",";
+        else o << ",,";
         o << "\"" << r.settings << "\"\n";
     }
     return o.str();
@@ -434,6 +437,7 @@ std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& fro
     }
     o << silhouette_table(w);
     o << effects_table(w);
+    o << lights_table(w);
     if (!w.notes.empty()) {
         o << "\n## Notes\n\n";
         for (const auto& n : w.notes) o << "- " << n << "\n";
@@ -480,6 +484,11 @@ Report write_report(const Sweep& w, const fs::path& dir, Clock::time_point t0) {
     write_text(dir / "tradeoff_mae.svg", plot_svg(mae_plot, 1100, 700));
     write_or_throw((dir / "tradeoff_mae.png").string(), plot_png(mae_plot, 1100, 700));
     out.elapsed = seconds_since(t0);
+    if (!w.lights.empty()) {
+        const Plot lp = lights_plot(w);
+        write_text(dir / "lights.svg", plot_svg(lp, 900, 560));
+        write_or_throw((dir / "lights.png").string(), plot_png(lp, 900, 560));
+    }
     write_text(dir / "results.md", markdown(w, out.elapsed, out.front));
     return out;
 }
@@ -555,6 +564,13 @@ void read_csv(Sweep& w, const std::string& path) {
         if (get("section") == kSilhouetteSection) {
             r.section = kSilhouetteSection;
             w.silhouette.push_back(r);
+            continue;
+        }
+        if (get("section") == kLightsSection) {
+            r.section = kLightsSection;
+            r.shading = get("shading");
+            r.lights = static_cast<int>(num("lights", 0));
+            w.lights.push_back(r);
             continue;
         }
         if (get("section") == kEffectsSection) {

@@ -54,6 +54,8 @@ bool has(const std::string& list, const char* effect) {
     return padded.find("," + std::string(effect) + ",") != std::string::npos;
 }
 
+}  // namespace
+
 // The first course frame of --scenes: the one at t 0.6 if there is one (the pictures' frame).
 const SceneSpec* course_frame(const Sweep& w) {
     const SceneSpec* first = nullptr;
@@ -64,8 +66,6 @@ const SceneSpec* course_frame(const Sweep& w) {
     }
     return first;
 }
-
-}  // namespace
 
 void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) {
     const BenchOptions& o = w.o;

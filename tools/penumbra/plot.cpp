@@ -342,9 +342,11 @@ private:
             y += 17;
         }
         y += 8;
-        line(x, y - 4, x + 14, y - 4, "#c0392b", 2.0, true);
-        text(x + 18, y, "Pareto front", 11.5, "#222222");
-        y += 22;
+        if (!p_.front.empty()) {  // a plot without a front (lines of one measure against another) names none
+            line(x, y - 4, x + 14, y - 4, "#c0392b", 2.0, true);
+            text(x + 18, y, "Pareto front", 11.5, "#222222");
+            y += 22;
+        }
         for (const auto& n : p_.notes) {
             text(x, y, n, 10.5, "#555555");
             y += 15;
