@@ -139,7 +139,8 @@ TEST(Options, BadValuesAreNamedAndLeaveTheOptionsAlone) {
         {"bias", "2", "--bias: must lie in [0, 1], got '2'"},
         {"frames", "0", "--frames: must lie in [1, 10000], got '0'"},
         {"frames", "10001", "--frames: must lie in [1, 10000], got '10001'"},
-        {"aov", "normal", "--aov: unknown value 'normal' (color, visibility, light-depth, stencil-count)"},
+        {"aov", "normal", "--aov: unknown value 'normal' (color, visibility, light-depth, stencil-count, gbuffer-color, gbuffer-normal, "
+         "gbuffer-position, gbuffer-depth)"},
         {"technique", "volume", "--technique: unknown value 'volume' (shadowmap, planar, volumes, gooch, none)"},
         {"volume-method", "zmid", "--volume-method: unknown value 'zmid' (auto, zpass, zfail)"},
         {"show-volumes", "yes", "--show-volumes: unknown value 'yes' (off, on)"},
@@ -165,13 +166,13 @@ TEST(Options, ArgsLabelTheResult) {
               "--map-size 1024 --bias auto --map-faces auto --light-fit tight --precision highp --volume-method auto "
               "--show-volumes off --light-radius scene --pcss-search 16 --pcss-taps 16 --area-samples 1 --area-per-frame 0 "
               "--gooch-planes 8 --gooch-method planes --blend-shadows off --effects none --outline-color ff8c00 "
-              "--outline-width 3 --reflectivity 0.5 --post none --aov color --technique shadowmap --eye scene --frames 1");
+              "--outline-width 3 --reflectivity 0.5 --post none --shading forward --lights 0 --aov color --technique shadowmap --eye scene --frames 1");
     EXPECT_EQ(to_args(o.settings),
               "--encoding r8 --filter hard --pcf-kernel early-exit --map-size 1024 --bias auto --map-faces auto "
               "--light-fit tight --precision highp --volume-method auto --show-volumes off --light-radius scene "
               "--pcss-search 16 --pcss-taps 16 --area-samples 1 --area-per-frame 0 --gooch-planes 8 --gooch-method planes "
               "--blend-shadows off "
-              "--effects none --outline-color ff8c00 --outline-width 3 --reflectivity 0.5 --post none --aov color --technique shadowmap");
+              "--effects none --outline-color ff8c00 --outline-width 3 --reflectivity 0.5 --post none --shading forward --lights 0 --aov color --technique shadowmap");
 }
 
 TEST(Options, AcceptedValuesAndListsComeFromTheTable) {
