@@ -189,7 +189,7 @@ std::vector<ExerciseInfo> make_list() {
           {"technique", "Shadows", K::Select, {"shadowmap", "planar", "volumes", "none"}, {},
            "planar and volumes keep their shadows in the stencil too"}},
          {{"effects", "outline"}}},
-        {Exercise::Multipass, "multipass", "Multipass: blur, bloom and a blurred shadow by ping-pong",
+        {Exercise::Multipass, "multipass", "Multipass: blur, bloom, a blurred shadow, and deferred shading",
          "A frame object (FBO) lets a pass draw into a texture that a later pass reads: the whole image drawn into "
          "one, then a triangle over the screen that reads it and writes into a second, and back. A Gaussian blur is "
          "two such passes, because it is separable: each pixel the weighted sum of its row's neighbours, then of its "
@@ -199,19 +199,33 @@ std::vector<ExerciseInfo> make_list() {
          "shadow's visibility alone, white lit and black shadowed, blurs that, and lights the scene with it: a soft "
          "edge for two cheap passes, but one that knows nothing of depth, so it is as wide by the teapot's foot as "
          "far from it, and it bleeds across the teapot's outline. The passes' targets are half floats where the "
-         "context can draw into them (OES_texture_half_float with EXT_color_buffer_half_float), else 8-bit.",
+         "context can draw into them (OES_texture_half_float with EXT_color_buffer_half_float), else 8-bit. "
+         "Deferred shading turns the frame around: the objects are drawn once into a G-buffer, three textures "
+         "holding each pixel's colour, normal and depth (at once where the context has WEBGL_draw_buffers, else one "
+         "pass per texture), and only then lit, the main light and its shadow map over every pixel, each point "
+         "light over the square of the screen its range covers. Forward shading pays for every light on every "
+         "object it draws; deferred pays once for the objects and then per lit pixel.",
          "Render to a texture, then draw from it: a separable Gaussian blur by ping-pong between two targets, bloom at "
-         "half and quarter size, and the shadow's visibility blurred on its own as a cheap soft shadow.",
+         "half and quarter size, the shadow's visibility blurred on its own as a cheap soft shadow, and deferred "
+         "shading from a G-buffer with up to 256 point lights.",
          "The teapot on the table, the image passed through a blur, a bloom or a blurred shadow",
          "Blur the shadow alone, then look at the teapot's foot: the edge is as soft there as far away, where a light "
-         "with a size (the soft exercise) keeps it sharp. Add bloom: the bright marble glows into the dark.",
+         "with a size (the soft exercise) keeps it sharp. Add bloom: the bright marble glows into the dark. Set the "
+         "post passes to none, add 64 lights and switch forward to deferred: the image stays, the time falls. Then "
+         "look inside the G-buffer: its normals, positions and depth.",
          render::Technique::ShadowMap,
          {light, jump,
           {"post", "Post-processing", K::Select, {"shadow-blur:6", "none", "blur:4", "bloom:0.6", "shadow-blur:6,bloom:0.6"},
            {}, "passes over the finished image, each reading the last one's target"},
           {"technique", "Shadows", K::Select, {"shadowmap", "planar", "volumes"}, {},
            "the shadow blur blurs any of them"},
-          {"aov", "View", K::Select, {"color", "visibility"}, {}, "visibility: the (blurred) shadow alone"}},
+          {"aov", "View", K::Select,
+           {"color", "visibility", "gbuffer-color", "gbuffer-normal", "gbuffer-position", "gbuffer-depth"}, {},
+           "visibility: the (blurred) shadow alone; gbuffer-*: what deferred shading stored"},
+          {"shading", "Deferred shading", K::Select, {"forward", "deferred"}, {},
+           "deferred: a G-buffer first, then the lights (not with the shadow blur)"},
+          {"lights", "Deferred shading", K::Slider, {"0", "8", "32", "64", "128", "256"}, {},
+           "point lights beside the main light", 0.0, 256.0}},
          {{"post", "shadow-blur:6"}}},
     };
 }
@@ -278,6 +292,8 @@ const std::vector<KeyBinding>& key_bindings() {
         {'D', "outline-color", "stencil: next outline colour (orange, yellow, cyan, magenta)"},
         {'Q', "reflectivity", "stencil: mirror reflectivity 0.25 / 0.5 / 0.75 / 1, Shift+Q backwards"},
         {'0', "post", "multipass: post-processing shadow blur / none / blur / bloom / shadow blur and bloom"},
+        {'9', "shading", "multipass: forward / deferred shading"},
+        {',', "lights", "multipass: point lights 0 / 8 / 32 / 64 / 128 / 256, Shift+, backwards"},
     };
     return keys;
 }

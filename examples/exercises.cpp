@@ -277,6 +277,8 @@ render::Settings CourseApp::frame_settings() const {
     render::Settings s = settings_;
     if (!offers(exercise_info(exercise_), "technique")) s.technique = exercise_info(exercise_).technique;
     if (!offers(exercise_info(exercise_), "post")) s.post.clear();  // the multipass exercise's alone
+    if (!offers(exercise_info(exercise_), "shading")) s.shading = render::Shading::Forward;
+    if (!offers(exercise_info(exercise_), "lights")) s.lights = 0;
     if (exercise_ == Exercise::Soft && toggles_.reference) {
         s.filter = shadow::Filter::Hard;
         s.area_samples = kReferenceSamples;
