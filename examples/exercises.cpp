@@ -370,8 +370,8 @@ void CourseApp::draw(int width, int height) {
             s.aov = render::Aov::Color;
             render(s, in);
             break;
-        case Exercise::Multipass:  // colour or visibility, through the post passes
-            if (s.aov != render::Aov::Visibility) s.aov = render::Aov::Color;
+        case Exercise::Multipass:  // colour, visibility or a G-buffer view, through the post passes
+            if (s.aov != render::Aov::Visibility && !render::gbuffer_aov(s.aov)) s.aov = render::Aov::Color;
             render(s, in);
             break;
     }

@@ -5,7 +5,11 @@
 // shows grey levels the hard one has not); the choice reaches the URL and survives a reload; the
 // browser's frame matches `penumbra render --post ...` (headless EGL) within web.egl_match's
 // tolerance for each choice; the page says which target format the post passes used; no console
-// or GL error.
+// or GL error. Deferred shading: with 32 point lights the deferred frame equals the forward one
+// within 2 levels but on 0.1% of the pixels (where the shadow test flips between the two
+// programs), the lights show, the plan names the G-buffer's passes, the G-buffer views show the
+// table's normal and differ from one another, and the deferred frame matches `penumbra render
+// --shading deferred --lights 32`.
 // usage: multipass.mjs PENUMBRA_CLI OUT_DIR
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
@@ -45,8 +49,9 @@ await runTest('web.multipass', async ({ server, browser }) => {
   const { page, problems } = await openPage(browser, `${server.url}/multipass.html`);
   let s = await page.evaluate(() => window.penumbra.state());
   check(s.exercise === 'multipass' && s.status === 'running', `state: ${s.exercise}, '${s.status}'`);
-  check(s.query === 'light=on&jump=on&post=shadow-blur%3A6&technique=shadowmap&aov=color' ||
-        s.query === 'light=on&jump=on&post=shadow-blur:6&technique=shadowmap&aov=color', `defaults: ${s.query}`);
+  check(s.query === 'light=on&jump=on&post=shadow-blur%3A6&technique=shadowmap&aov=color&shading=forward&lights=0' ||
+        s.query === 'light=on&jump=on&post=shadow-blur:6&technique=shadowmap&aov=color&shading=forward&lights=0',
+        `defaults: ${s.query}`);
   check((await page.inputValue('#post')) === 'shadow-blur:6', 'the post select does not show shadow-blur:6 on opening');
   // The plan the page shows names the post passes and the format they drew into.
   const said = await page.evaluate(() => window.penumbra.plan());
@@ -132,6 +137,53 @@ await runTest('web.multipass', async ({ server, browser }) => {
     check(d.mean <= MAX_MEAN && d.fraction <= MAX_FRACTION,
           `${post} ${technique}: the browser's frame differs from penumbra render's (mean ${d.mean.toFixed(3)}, ` +
           `${(100 * d.fraction).toFixed(3)}% > ${LEVELS} levels; images in ${outDir})`);
+  }
+
+  // Deferred shading against forward, with 32 lights.
+  check((await page.$('#lights')) !== null && (await page.$('#shading')) !== null, 'no lights or shading control');
+  await setOptions(page, { post: 'none', technique: 'shadowmap', aov: 'color', shading: 'forward', lights: '32' });
+  const fwd = await frameAt(page, T);
+  await setOptions(page, { shading: 'deferred' });
+  const def = await frameAt(page, T);
+  savePng(fwd, path.join(outDir, 'forward-32.browser.png'));
+  savePng(def, path.join(outDir, 'deferred-32.browser.png'));
+  const deferredPlan = await page.evaluate(() => window.penumbra.plan());
+  const mrt = /\bgbuffer\b(?!-)/.test(deferredPlan), split = /\bgbuffer-normal\b/.test(deferredPlan);
+  check(mrt !== split && /deferred-points/.test(deferredPlan), `the plan does not show the G-buffer's passes: ${deferredPlan}`);
+  console.log(`G-buffer on this context: ${mrt ? 'one pass (WEBGL_draw_buffers)' : 'one pass per target'}`);
+  const same = compare(def, fwd, 2);
+  check(same.fraction <= 0.001, `deferred differs from forward by more than 2 levels on ${(100 * same.fraction).toFixed(3)}%`);
+  await setOptions(page, { lights: '0' });
+  const shown = compare(def, await frameAt(page, T), 8);
+  check(shown.fraction > 0.02, `32 lights change only ${(100 * shown.fraction).toFixed(2)}% of the pixels by > 8 levels`);
+  console.log(`deferred against forward: ${(100 * same.fraction).toFixed(3)}% > 2 levels; the lights change ` +
+              `${(100 * shown.fraction).toFixed(1)}%`);
+  const views = {};
+  for (const aov of ['gbuffer-color', 'gbuffer-normal', 'gbuffer-position', 'gbuffer-depth']) {
+    await setOptions(page, { aov });
+    views[aov] = await frameAt(page, T);
+    savePng(views[aov], path.join(outDir, `${aov}.browser.png`));
+  }
+  const nv = views['gbuffer-normal'];
+  const at = 4 * ((nv.height - 40) * nv.width + nv.width / 2);  // the table, near the bottom middle
+  check(Math.abs(nv.data[at] - 128) <= 3 && nv.data[at + 1] >= 252 && Math.abs(nv.data[at + 2] - 128) <= 3,
+        `the table's normal shows as ${nv.data[at]}, ${nv.data[at + 1]}, ${nv.data[at + 2]}, not 128, 255, 128`);
+  const names = Object.keys(views);
+  for (let i = 0; i < names.length; ++i)
+    for (let j = i + 1; j < names.length; ++j)
+      check(compare(views[names[i]], views[names[j]], 8).fraction > 0.05, `${names[i]} and ${names[j]} look alike`);
+  await setOptions(page, { aov: 'color', lights: '32' });
+  {
+    const px = await frameAt(page, T);
+    const file = path.join(outDir, 'deferred-32-match.egl.png');
+    execFileSync(cli, ['render', '--shading', 'deferred', '--lights', '32', '--time', String(T), '--size',
+                       `${px.width}x${px.height}`, '--out', file]);
+    const ref = PNG.sync.read(readFileSync(file));
+    const d = compare(px, { width: ref.width, height: ref.height, data: ref.data }, LEVELS);
+    console.log(`deferred 32 lights against penumbra render: mean ${d.mean.toFixed(3)}, ` +
+                `${(100 * d.fraction).toFixed(3)}% differ by more than ${LEVELS}`);
+    check(d.mean <= MAX_MEAN && d.fraction <= MAX_FRACTION,
+          `deferred: the browser's frame differs from penumbra render's (mean ${d.mean.toFixed(3)})`);
   }
 
   const errs = (await glErrors(page)).concat(await glErrors(bad));
