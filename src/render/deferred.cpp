@@ -56,17 +56,6 @@ Binding gbuffer_binding(const PlanContext& c, const int (&targets)[3], bool mrt,
     return b;
 }
 
-Pass screen_pass(std::string name, const TargetRef& target) {
-    Pass p;
-    p.name = std::move(name);
-    p.module = "deferred";
-    p.target = target;
-    p.state.depth_test = p.state.depth_write = false;
-    p.state.cull = gl::Cull::None;
-    p.object_uniforms = ObjectUniforms::None;
-    return p;
-}
-
 std::vector<Uniform> light_uniforms(const std::vector<PointLight>& lights, size_t first, size_t count) {
     std::vector<Uniform> u;
     for (size_t k = 0; k < count; ++k) {
@@ -80,7 +69,7 @@ std::vector<Uniform> light_uniforms(const std::vector<PointLight>& lights, size_
 // --aov gbuffer-*: one target decoded into the camera's target.
 void add_view_pass(PlanContext& c, const Binding& gbuffer) {
     const Settings& s = c.settings;
-    Pass v = screen_pass("gbuffer-view", c.camera_target);
+    Pass v = screen_pass("gbuffer-view", "deferred", c.camera_target);
     v.clear = Clear{kBackground, true, false};
     scene::Bounds b = shadowed_bounds(c.scene);
     if (b.empty()) b = scene::Bounds::around(glm::vec3(-1.0f), glm::vec3(1.0f));
@@ -271,7 +260,7 @@ void plan_deferred(PlanContext& c, const Module& module) {
         lit = {sum, w, h, 0, 0, false};
     }
     const Binding gbuffer = gbuffer_binding(c, targets, mrt, lit);
-    Pass main = screen_pass("deferred-light", lit);
+    Pass main = screen_pass("deferred-light", "deferred", lit);
     main.clear = Clear{s.aov == Aov::Visibility ? kWhite : kBackground, true, false};
     main.bindings = c.lit_bindings();
     main.bindings.push_back(gbuffer);
@@ -290,7 +279,7 @@ void plan_deferred(PlanContext& c, const Module& module) {
     c.add_pass(std::move(main));
 
     if (points) {
-        Pass p = screen_pass("deferred-points", lit);
+        Pass p = screen_pass("deferred-points", "deferred", lit);
         p.state.blend = gl::Blend::Add;
         p.bindings = {gbuffer};
         LitFeatures pf;

@@ -106,6 +106,17 @@ std::string post_format(const gl::Caps& caps) {
                                   : "rgba8 (this context renders into no half-float texture)";
 }
 
+Pass screen_pass(std::string name, std::string module, const TargetRef& target) {
+    Pass p;
+    p.name = std::move(name);
+    p.module = std::move(module);
+    p.target = target;
+    p.state.depth_test = p.state.depth_write = false;
+    p.state.cull = gl::Cull::None;
+    p.object_uniforms = ObjectUniforms::None;
+    return p;
+}
+
 int add_post_target(PlanContext& c, const std::string& name, int width, int height, const std::string& purpose) {
     ResourceDesc d;
     d.name = c.named(name);
@@ -118,16 +129,7 @@ int add_post_target(PlanContext& c, const std::string& name, int width, int heig
 
 namespace {
 
-Pass post_pass(std::string name, const TargetRef& target) {
-    Pass p;
-    p.name = std::move(name);
-    p.module = "post";
-    p.target = target;
-    p.state.depth_test = p.state.depth_write = false;
-    p.state.cull = gl::Cull::None;
-    p.object_uniforms = ObjectUniforms::None;
-    return p;
-}
+Pass post_pass(std::string name, const TargetRef& target) { return screen_pass(std::move(name), "post", target); }
 
 Draw fullscreen(Variant v) {
     Draw d;

@@ -45,6 +45,8 @@ std::string post_format(const gl::Caps& caps);
 // The separable blur of resource `src` (sampled) into `dst`, through resource `tmp` (the
 // horizontal pass's target, the size of dst): two passes named NAME-h and NAME-v.
 void add_blur_passes(PlanContext& c, const std::string& name, int src, int tmp, const TargetRef& dst, int radius);
+// A pass of full-screen draws (no depth test or writes, no culling, no object uniforms) into `target`.
+Pass screen_pass(std::string name, std::string module, const TargetRef& target);
 // A pass of one full-screen draw reading resource `src` at unit 0 as u_image, with `more`
 // uniforms, into `dst` (the bloom's bright pass with u_threshold 0 is a copy).
 Pass image_pass(const PlanContext& c, std::string name, int src, const TargetRef& dst, Variant v,

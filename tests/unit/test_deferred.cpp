@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "full_caps.h"
+#include "plan_names.h"
 #include "render/deferred.h"
 #include "render/lights.h"
 #include "render/options.h"
@@ -36,17 +37,8 @@ render::Settings settings(const char* shading, int lights, const char* technique
     return s;
 }
 
-std::vector<std::string> pass_names(const FramePlan& p) {
-    std::vector<std::string> names;
-    for (const auto& pass : p.passes) names.push_back(pass.name);
-    return names;
-}
-
-const render::Pass& pass_named(const FramePlan& p, const std::string& name) {
-    for (const auto& pass : p.passes)
-        if (pass.name == name) return pass;
-    throw std::runtime_error("no pass " + name);
-}
+using penumbra::testing::pass_named;
+using penumbra::testing::pass_names;
 
 bool has_define(const render::Variant& v, const std::string& d) {
     return std::find(v.defines.begin(), v.defines.end(), d) != v.defines.end();

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "full_caps.h"
+#include "plan_names.h"
 #include "render/options.h"
 #include "render/plan.h"
 #include "render/post.h"
@@ -28,17 +29,8 @@ render::Settings with_post(const char* post) {
     return s;
 }
 
-std::vector<std::string> pass_names(const FramePlan& p) {
-    std::vector<std::string> names;
-    for (const auto& pass : p.passes) names.push_back(pass.name);
-    return names;
-}
-
-const render::Pass& pass_named(const FramePlan& p, const std::string& name) {
-    for (const auto& pass : p.passes)
-        if (pass.name == name) return pass;
-    throw std::runtime_error("no pass " + name);
-}
+using penumbra::testing::pass_named;
+using penumbra::testing::pass_names;
 
 std::string target_name(const FramePlan& p, const render::Pass& pass) {
     return pass.target.resource < 0 ? "window" : p.resources[static_cast<size_t>(pass.target.resource)].desc.name;

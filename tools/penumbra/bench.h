@@ -25,6 +25,7 @@
 #include "render/options.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
+#include "scene/scene_source.h"
 
 namespace penumbra::tools::bench {
 
@@ -193,6 +194,19 @@ void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in)
 // The first course frame of --scenes: the one at t 0.6 if there is one (the pictures' frame); null
 // when no teapot frame is listed.
 const SceneSpec* course_frame(const Sweep& w);
+
+// A row of a section on the course frame waiting for its times (effects_bench.cpp, lights_bench.cpp).
+struct PendingRow {
+    Row row;
+    render::Settings s;
+    std::vector<double> moving, still;
+};
+// Times every pending row in w.o.rounds interleaved rounds of w.o.frames frames, moving (the
+// course animated 1/60 s a frame from `time`) and still (`still` again), and appends the rows,
+// their medians filled in, to `out`. `what` names the section in a GL error.
+void time_course_rows(const Sweep& w, render::Renderer& r, const render::FrameInputs& in, scene::SceneSource& src,
+                      const scene::Scene& still, double time, std::vector<PendingRow>& pending, std::vector<Row>& out,
+                      const char* what);
 
 // ---- lights_bench.cpp: forward against deferred shading ------------------------------------------
 

@@ -67,6 +67,31 @@ const SceneSpec* course_frame(const Sweep& w) {
     return first;
 }
 
+void time_course_rows(const Sweep& w, render::Renderer& r, const render::FrameInputs& in, scene::SceneSource& src,
+                      const scene::Scene& still, double time, std::vector<PendingRow>& pending, std::vector<Row>& out,
+                      const char* what) {
+    const BenchOptions& o = w.o;
+    const auto moving_at = [&](int i) -> const scene::Scene& { return src.at(time + static_cast<double>(i + 1) / 60.0); };
+    const auto still_at = [&](int) -> const scene::Scene& { return still; };
+    for (int round = 0; round < o.rounds; ++round) {
+        r.load(still);
+        for (PendingRow& p : pending) {
+            p.moving.push_back(time_frames(r, p.s, in, 2, o.frames, moving_at).median_ms);
+            p.still.push_back(time_frames(r, p.s, in, 1, o.frames, still_at).median_ms);
+        }
+        gl::check_errors(what);
+    }
+    for (PendingRow& p : pending) {
+        Row& row = p.row;
+        row.ms_moving = measure::median(p.moving);
+        row.ms_still = measure::median(p.still);
+        row.ms_camera = row.ms_still;
+        row.ms_shadow = row.map ? std::max(0.0, row.ms_moving - row.ms_still) : 0.0;
+        row.frames = o.frames * o.rounds;
+        out.push_back(row);
+    }
+}
+
 void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) {
     const BenchOptions& o = w.o;
     const SceneSpec* spec = course_frame(w);
@@ -119,12 +144,7 @@ void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in)
         return t;
     };
 
-    struct Pending {
-        Row row;
-        render::Settings s;
-        std::vector<double> moving, still;
-    };
-    std::vector<Pending> pending;
+    std::vector<PendingRow> pending;
     for (const Planned& planned : techniques)
         for (const EffectSet& set : kEffectSets) {
             const char* effects = set.effects;
@@ -186,25 +206,7 @@ void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in)
         }
     gl::check_errors("the effects' accuracy pass");
 
-    const auto moving_at = [&](int i) -> const scene::Scene& { return src.at(spec->time + static_cast<double>(i + 1) / 60.0); };
-    const auto still_at = [&](int) -> const scene::Scene& { return still; };
-    for (int round = 0; round < o.rounds; ++round) {
-        r.load(still);
-        for (Pending& p : pending) {
-            p.moving.push_back(time_frames(r, p.s, in, 2, o.frames, moving_at).median_ms);
-            p.still.push_back(time_frames(r, p.s, in, 1, o.frames, still_at).median_ms);
-        }
-        gl::check_errors("the effects' timing pass");
-    }
-    for (Pending& p : pending) {
-        Row& row = p.row;
-        row.ms_moving = measure::median(p.moving);
-        row.ms_still = measure::median(p.still);
-        row.ms_camera = row.ms_still;
-        row.ms_shadow = row.map ? std::max(0.0, row.ms_moving - row.ms_still) : 0.0;
-        row.frames = o.frames * o.rounds;
-        w.effects.push_back(row);
-    }
+    time_course_rows(w, r, in, src, still, spec->time, pending, w.effects, "the effects' timing pass");
     std::fprintf(stderr, "effects: %zu sets x %zu techniques on %s in %s\n", std::size(kEffectSets), techniques.size(),
                  spec->label.c_str(), duration_str(seconds_since(t0)).c_str());
 }

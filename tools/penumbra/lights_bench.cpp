@@ -57,12 +57,7 @@ void lights_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) 
     const measure::EffectTruth truth = measure::trace_effects(still, false, false, to);
     const auto valid = truth.image.valid_mask();
 
-    struct Pending {
-        Row row;
-        render::Settings s;
-        std::vector<double> moving, still;
-    };
-    std::vector<Pending> pending;
+    std::vector<PendingRow> pending;
     const std::vector<int> counts = o.quick ? std::vector<int>(std::begin(kQuickLights), std::end(kQuickLights))
                                             : std::vector<int>(std::begin(kLights), std::end(kLights));
     for (int n : counts)
@@ -98,27 +93,7 @@ void lights_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) 
         }
     gl::check_errors("the lights' accuracy pass");
 
-    const auto moving_at = [&](int i) -> const scene::Scene& { return src.at(spec->time + static_cast<double>(i + 1) / 60.0); };
-    const auto still_at = [&](int) -> const scene::Scene& { return still; };
-    for (int round = 0; round < o.rounds; ++round) {
-        r.load(still);
-        for (Pending& p : pending) {
-            p.moving.push_back(time_frames(r, p.s, in, 2, o.frames, moving_at).median_ms);
-            p.still.push_back(time_frames(r, p.s, in, 1, o.frames, still_at).median_ms);
-        }
-        gl::check_errors("the lights' timing pass");
-        std::fprintf(stderr, "lights: round %d of %d timed (%s)\n", round + 1, o.rounds,
-                     duration_str(seconds_since(t0)).c_str());
-    }
-    for (Pending& p : pending) {
-        Row& row = p.row;
-        row.ms_moving = measure::median(p.moving);
-        row.ms_still = measure::median(p.still);
-        row.ms_camera = row.ms_still;
-        row.ms_shadow = row.map ? std::max(0.0, row.ms_moving - row.ms_still) : 0.0;
-        row.frames = o.frames * o.rounds;
-        w.lights.push_back(row);
-    }
+    time_course_rows(w, r, in, src, still, spec->time, pending, w.lights, "the lights' timing pass");
     std::fprintf(stderr, "lights: %zu rows on %s in %s\n", w.lights.size(), spec->label.c_str(),
                  duration_str(seconds_since(t0)).c_str());
 }
