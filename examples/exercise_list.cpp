@@ -210,22 +210,18 @@ std::vector<ExerciseInfo> make_list() {
          "shading from a G-buffer with up to 256 point lights.",
          "The teapot on the table, the image passed through a blur, a bloom or a blurred shadow",
          "Blur the shadow alone, then look at the teapot's foot: the edge is as soft there as far away, where a light "
-         "with a size (the soft exercise) keeps it sharp. Add bloom: the bright marble glows into the dark. Set the "
-         "post passes to none, add 64 lights and switch forward to deferred: the image stays, the time falls. Then "
-         "look inside the G-buffer: its normals, positions and depth.",
+         "with a size (the soft exercise) keeps it sharp. Add bloom. With no post pass, add 64 lights and switch to "
+         "deferred: the same image, faster.",
          render::Technique::ShadowMap,
          {light, jump,
           {"post", "Post-processing", K::Select, {"shadow-blur:6", "none", "blur:4", "bloom:0.6", "shadow-blur:6,bloom:0.6"},
-           {}, "passes over the finished image, each reading the last one's target"},
-          {"technique", "Shadows", K::Select, {"shadowmap", "planar", "volumes"}, {},
-           "the shadow blur blurs any of them"},
+           {}, "each pass reads the last one's target"},
+          {"technique", "Shadows", K::Select, {"shadowmap", "planar", "volumes"}, {}, "any of them blurred"},
           {"aov", "View", K::Select,
            {"color", "visibility", "gbuffer-color", "gbuffer-normal", "gbuffer-position", "gbuffer-depth"}, {},
-           "visibility: the (blurred) shadow alone; gbuffer-*: what deferred shading stored"},
-          {"shading", "Deferred shading", K::Select, {"forward", "deferred"}, {},
-           "deferred: a G-buffer first, then the lights (not with the shadow blur)"},
-          {"lights", "Deferred shading", K::Slider, {"0", "8", "32", "64", "128", "256"}, {},
-           "point lights beside the main light", 0.0, 256.0}},
+           "the shadow alone, or the G-buffer"},
+          {"shading", "Shading", K::Select, {"forward", "deferred"}, {}, "deferred: a G-buffer, then the lights"},
+          {"lights", "Shading", K::Slider, {"0", "8", "32", "64", "128", "256"}, {}, "unshadowed", 0.0, 256.0}},
          {{"post", "shadow-blur:6"}}},
     };
 }
