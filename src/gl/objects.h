@@ -173,7 +173,8 @@ public:
     void set(const char* name, const glm::mat4& v) const;
     // Declared in the source's active blocks (whether or not the compiler kept it); debug builds
     // only (release builds do not scan the source and answer false).
-    bool declares(const std::string& name) const { return declared_.count(name) > 0; }
+    // An array's element ("u_point_lights[3]") is declared with its array.
+    bool declares(const std::string& name) const { return declared_.count(name.substr(0, name.find('['))) > 0; }
 
 private:
     int location(const char* name) const;

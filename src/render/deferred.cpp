@@ -263,6 +263,9 @@ void plan_deferred(PlanContext& c, const Module& module) {
     Pass main = screen_pass("deferred-light", "deferred", lit);
     main.clear = Clear{s.aov == Aov::Visibility ? kWhite : kBackground, true, false};
     main.bindings = c.lit_bindings();
+    // screen.vert places the triangle itself: the camera's matrix is the g-buffer binding's inverse.
+    std::vector<Uniform>& cam = main.bindings.front().uniforms;
+    cam.erase(std::remove_if(cam.begin(), cam.end(), [](const Uniform& u) { return u.name == "u_view_proj"; }), cam.end());
     main.bindings.push_back(gbuffer);
     Draw full;
     full.fullscreen = true;
