@@ -191,7 +191,7 @@ int main(int argc, char** argv) {
     }
     int status = 0;
     try {
-        app.create_gl(window->api());
+        app.create_gl(*window);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "penumbra-desktop: error: %s\n", e.what());
         return 1;

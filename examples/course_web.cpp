@@ -97,7 +97,7 @@ void on_context(platform::ContextEvent e) {
     while (gl::take_error() != 0) {
     }
     try {
-        g->app->create_gl(g->platform->api());
+        g->app->create_gl(*g->platform);
         g->lost = false;
         g->restored = true;
         g->restored_at = -1.0;
@@ -254,7 +254,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     try {
-        g->app->create_gl(g->platform->api());
+        g->app->create_gl(*g->platform);
     } catch (const std::exception& e) {
         g->status = std::string("error: ") + e.what();
         std::fprintf(stderr, "penumbra: %s\n", e.what());

@@ -237,9 +237,9 @@ float CourseApp::sheet_bias() const { return shadow::sheet_bias(settings_.encodi
 
 // ---- GL lifetime ----------------------------------------------------------------------------
 
-void CourseApp::create_gl(platform::Api api) {
+void CourseApp::create_gl(const platform::Platform& context) {
     renderer_.reset();
-    renderer_ = std::make_unique<render::Renderer>(gl::probe_caps(api));
+    renderer_ = std::make_unique<render::Renderer>(gl::probe_caps(context));
     renderer_->load(course_.scene);
     ++generation_;
     ms_.clear();  // frame times of the old context say nothing about this one

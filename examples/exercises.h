@@ -80,7 +80,7 @@ public:
     // The GL side's life. create_gl: the context is current and new (first made, or restored
     // after a loss): make the renderer and every GL object. drop_gl: the context is gone; forget
     // what was made on it.
-    void create_gl(platform::Api api);
+    void create_gl(const platform::Platform& context);
     void drop_gl();
     bool has_gl() const { return renderer_ != nullptr; }
     const gl::Caps* caps() const;

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "gl/check.h"
+#include "gl/entry_points.h"
 #include "gl/gl_headers.h"
 
 namespace penumbra::gl {
@@ -30,9 +31,14 @@ PrecisionFormat precision(GLenum shader, GLenum type) {
 
 }  // namespace
 
-Caps probe_caps(Api api) {
+EntryPoints& entry_points() {
+    static EntryPoints e;
+    return e;
+}
+
+Caps probe_caps(const platform::Platform& context) {
     Caps c;
-    c.api = api;
+    const Api api = c.api = context.api();
     c.vendor = get_string(GL_VENDOR);
     c.renderer = get_string(GL_RENDERER);
     c.version = get_string(GL_VERSION);
@@ -54,6 +60,11 @@ Caps probe_caps(Api api) {
     c.half_float_target = either("OES_texture_half_float") && either("OES_texture_half_float_linear") &&
                           either("EXT_color_buffer_half_float");
     c.draw_buffers = either("EXT_draw_buffers") || either("WEBGL_draw_buffers");
+#ifndef __EMSCRIPTEN__
+    entry_points().draw_buffers =
+        c.draw_buffers ? reinterpret_cast<PFNGLDRAWBUFFERSEXTPROC>(context.proc_address("glDrawBuffersEXT")) : nullptr;
+    c.draw_buffers = entry_points().draw_buffers != nullptr;
+#endif
     c.render_mipmap = c.has("GL_OES_fbo_render_mipmap");
 
     c.max_texture_size = get_int(GL_MAX_TEXTURE_SIZE);

@@ -75,7 +75,8 @@ struct Caps {
     std::string summary() const;
 };
 
-// Probe the context that is current on this thread; `api` is what the platform says it made.
-Caps probe_caps(Api api);
+// Probe the context that is current on this thread, which `context` made (its API, and where its
+// extension entry points are: gl/entry_points.h).
+Caps probe_caps(const platform::Platform& context);
 
 }  // namespace penumbra::gl

@@ -5,12 +5,9 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gl/check.h"
+#include "gl/entry_points.h"
 #include "gl/gl_headers.h"
 #include "gl/uniforms.h"
-
-#ifndef __EMSCRIPTEN__
-#include <EGL/egl.h>  // both native platforms (headless, GLFW) make their GLES 2 contexts through EGL
-#endif
 
 namespace penumbra::gl {
 
@@ -151,14 +148,14 @@ std::string attachments(const FramebufferDesc& d) {
     return out.empty() ? "nothing" : out;
 }
 
-// glDrawBuffersEXT: an extension's entry point, looked up where the platform is EGL (Emscripten
-// exports it, and routes it to WEBGL_draw_buffers).
+// glDrawBuffersEXT: found through the platform (entry_points); Emscripten exports it and routes it
+// to WEBGL_draw_buffers.
 void draw_buffers(GLsizei n, const GLenum* buffers, const char* label) {
 #ifdef __EMSCRIPTEN__
     (void)label;
     glDrawBuffersEXT(n, buffers);
 #else
-    static const auto fn = reinterpret_cast<PFNGLDRAWBUFFERSEXTPROC>(eglGetProcAddress("glDrawBuffersEXT"));
+    const auto fn = entry_points().draw_buffers;
     if (!fn) throw Error(std::string(label) + ": several colour attachments, but no glDrawBuffersEXT on this context");
     fn(n, buffers);
 #endif

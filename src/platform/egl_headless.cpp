@@ -72,6 +72,7 @@ public:
 
     std::string description() const override { return description_; }
     Api api() const override { return Api::GLES2; }
+    Proc proc_address(const char* name) const override { return eglGetProcAddress(name); }
     bool has_default_framebuffer() const override { return false; }
     void run(const FrameCallback& frame) override {
         for (long i = 0;; ++i)

@@ -76,6 +76,7 @@ public:
 
     std::string description() const override { return description_; }
     Api api() const override { return Api::GLES2; }
+    Proc proc_address(const char* name) const override { return glfwGetProcAddress(name); }
     bool has_default_framebuffer() const override { return true; }
 
     void run(const FrameCallback& frame) override {

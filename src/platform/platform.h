@@ -50,6 +50,13 @@ public:
     virtual std::string description() const = 0;
     // Which API the context speaks (the gl layer's capability probe needs it).
     virtual Api api() const = 0;
+    // An extension's entry point in this context ("glDrawBuffersEXT"), or null: the gl layer looks
+    // them up here when it probes the context (EGL's or GLFW's lookup; Emscripten links them).
+    using Proc = void (*)();
+    virtual Proc proc_address(const char* name) const {
+        (void)name;
+        return nullptr;
+    }
     // True for a window or a canvas: draw to framebuffer 0 and it is shown. False headless.
     virtual bool has_default_framebuffer() const = 0;
     // Runs frames until the callback returns false (a browser returns at once and keeps calling).

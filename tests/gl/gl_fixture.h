@@ -24,7 +24,7 @@ platform::Platform& context();
 struct GlTest : ::testing::Test {
     void SetUp() override {
         context();
-        renderer = std::make_unique<render::Renderer>(gl::probe_caps(context().api()));
+        renderer = std::make_unique<render::Renderer>(gl::probe_caps(context()));
     }
     void TearDown() override {
         renderer.reset();

@@ -28,7 +28,7 @@ protected:
 
     // A renderer on the same context that believes it has no draw buffers: one pass per target.
     std::unique_ptr<render::Renderer> without_draw_buffers() {
-        gl::Caps caps = gl::probe_caps(test::context().api());
+        gl::Caps caps = gl::probe_caps(test::context());
         caps.draw_buffers = false;
         return std::make_unique<render::Renderer>(caps);
     }

@@ -355,7 +355,7 @@ void run_sweep(Sweep& w) {
                  o.quick ? " (quick: timings are not meaningful)" : "");
 
     // One renderer for everything (one context, one state cache); load() switches scenes.
-    render::Renderer r(gl::probe_caps(ctx->api()));
+    render::Renderer r(gl::probe_caps(*ctx));
     w.gl_renderer = r.caps().renderer;
     const render::FrameInputs in = render::offscreen(w.width, w.height);
 

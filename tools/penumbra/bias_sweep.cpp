@@ -132,7 +132,7 @@ int run_bias_sweep(const BiasSweepOptions& o) {
     std::string error;
     auto ctx = platform::create_headless(error);
     if (!ctx) throw std::runtime_error(error);
-    render::Renderer renderer(gl::probe_caps(ctx->api()));
+    render::Renderer renderer(gl::probe_caps(*ctx));
     const render::FrameInputs in = render::offscreen(o.size, o.size);
 
     const std::vector<std::string> scenes = {"box-on-plane", "course"};

@@ -72,7 +72,7 @@ int run_render(const render::Options& o, bool verbose, const std::vector<std::st
     scene::SceneSource src =
         open_scene(job.scene, job.eye_in_shadow ? scene::Eye::InShadow : scene::Eye::Scene, allow_outside);
     auto ctx = make_context();
-    render::Renderer r(gl::probe_caps(ctx->api()));
+    render::Renderer r(gl::probe_caps(*ctx));
     const render::FrameInputs in = render::offscreen(job.width, job.height);
     if (verbose)
         std::cerr << ctx->description() << "\n"
@@ -115,7 +115,7 @@ int run_plan(const render::Options& o, bool json, const std::vector<std::string>
     scene::SceneSource src =
         open_scene(job.scene, job.eye_in_shadow ? scene::Eye::InShadow : scene::Eye::Scene, allow_outside);
     auto ctx = make_context();
-    render::Renderer r(gl::probe_caps(ctx->api()));
+    render::Renderer r(gl::probe_caps(*ctx));
     const render::FrameInputs in = render::offscreen(job.width, job.height);
     if (const std::string problem = r.check(src.at(job.time), o.settings, in); !problem.empty()) throw Failure{problem, 2};
     for (int i = 0; i + 1 < job.frames; ++i) r.render(src.at(job.time + static_cast<double>(i) / 60.0), o.settings, in);
@@ -133,7 +133,7 @@ int run_gallery(const std::string& dir, const render::Options& base, const std::
     const scene::Scene& frame = src.at(base.job.time);
     const render::FrameInputs in = render::offscreen(base.job.width, base.job.height);
     auto ctx = make_context();
-    render::Renderer r(gl::probe_caps(ctx->api()));
+    render::Renderer r(gl::probe_caps(*ctx));
 
     struct Row {
         std::string label;
@@ -220,7 +220,7 @@ int run_shaders(const std::string& dir) {
 
 int run_caps() {
     auto ctx = make_context();
-    std::printf("%s\n%s\n", ctx->description().c_str(), gl::probe_caps(ctx->api()).summary().c_str());
+    std::printf("%s\n%s\n", ctx->description().c_str(), gl::probe_caps(*ctx).summary().c_str());
     return 0;
 }
 

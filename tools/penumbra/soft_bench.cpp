@@ -211,7 +211,7 @@ void run_soft(SoftRun& w) {
     auto ctx = make_context();
     w.context = ctx->description();
     w.load_before = load_average();
-    render::Renderer r(gl::probe_caps(ctx->api()));
+    render::Renderer r(gl::probe_caps(*ctx));
     w.gl_renderer = r.caps().renderer;
     const render::FrameInputs in = render::offscreen(w.width, w.height);
     const size_t total = w.scenes.size() * w.fractions.size() * w.methods.size();
