@@ -60,19 +60,49 @@ Texture::Texture(const TextureDesc& d) : width_(d.width), height_(d.height), for
         // Rows of 4 bytes are always aligned; the default unpack alignment of 4 is right.
         PENUMBRA_GL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, d.width, d.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, d.rgba));
     }
-    const GLint wrap = d.wrap == Wrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
-    GLint min_filter = GL_NEAREST, mag_filter = GL_NEAREST;
-    if (d.sampling == Sampling::Linear) min_filter = mag_filter = GL_LINEAR;
-    if (d.sampling == Sampling::LinearMipmap) {
-        min_filter = GL_LINEAR_MIPMAP_LINEAR;
-        mag_filter = GL_LINEAR;
+    if (d.sampling == Sampling::LinearMipmap || d.sampling == Sampling::NearestMipmap)
         PENUMBRA_GL(glGenerateMipmap(GL_TEXTURE_2D));
-    }
-    PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min_filter));
-    PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, mag_filter));
+    set_sampling(d.sampling);
+    const GLint wrap = d.wrap == Wrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
     PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap));
     PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap));
     check_errors(d.label, __FILE__, __LINE__);
+}
+
+void Texture::set_sampling(Sampling sampling) {
+    GLint min_filter = GL_NEAREST, mag_filter = GL_NEAREST;
+    switch (sampling) {
+        case Sampling::Nearest: break;
+        case Sampling::Linear: min_filter = mag_filter = GL_LINEAR; break;
+        case Sampling::LinearMipmap: min_filter = GL_LINEAR_MIPMAP_LINEAR, mag_filter = GL_LINEAR; break;
+        case Sampling::NearestMipmap: min_filter = GL_NEAREST_MIPMAP_NEAREST; break;
+    }
+    PENUMBRA_GL(glBindTexture(GL_TEXTURE_2D, id()));
+    PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min_filter));
+    PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, mag_filter));
+}
+
+void Texture::set_level(int level, int width, int height, const std::uint8_t* rgba) {
+    if (format_ != TextureFormat::RGBA8) throw Error("Texture::set_level: only RGBA8 textures have levels set here");
+    PENUMBRA_GL(glBindTexture(GL_TEXTURE_2D, id()));
+    PENUMBRA_GL(glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba));
+    check_errors("Texture::set_level", __FILE__, __LINE__);
+}
+
+void Texture::generate_mipmap() {
+    PENUMBRA_GL(glBindTexture(GL_TEXTURE_2D, id()));
+    PENUMBRA_GL(glGenerateMipmap(GL_TEXTURE_2D));
+    check_errors("glGenerateMipmap", __FILE__, __LINE__);
+}
+
+void Texture::copy_framebuffer(int level, int x, int y, int width, int height, bool alpha) {
+    PENUMBRA_GL(glBindTexture(GL_TEXTURE_2D, id()));
+    PENUMBRA_GL(glCopyTexImage2D(GL_TEXTURE_2D, level, alpha ? GL_RGBA : GL_RGB, x, y, width, height, 0));
+    check_errors("glCopyTexImage2D", __FILE__, __LINE__);
+    if (level == 0) {
+        width_ = width;
+        height_ = height;
+    }
 }
 
 std::size_t Texture::bytes() const {
@@ -133,7 +163,10 @@ std::string attachments(const FramebufferDesc& d) {
     std::string out;
     const auto add = [&](const std::string& s) { out += (out.empty() ? "" : ", ") + s; };
     const auto size = [](int w, int h) { return std::to_string(w) + "x" + std::to_string(h); };
-    if (d.color) add(std::string("colour texture ") + texture_format_name(d.color->format()) + " " + size(d.color->width(), d.color->height()));
+    if (d.color)
+        add(std::string("colour texture ") + texture_format_name(d.color->format()) + " " +
+            size(d.color->width(), d.color->height()) +
+            (d.color_level ? " level " + std::to_string(d.color_level) : std::string()));
     for (const Texture* t : d.more_colors)
         if (t) add(std::string("colour texture ") + texture_format_name(t->format()) + " " + size(t->width(), t->height()));
     if (d.depth_texture)
@@ -169,7 +202,8 @@ Framebuffer::Framebuffer(const FramebufferDesc& d) {
     h_ = Handle<FramebufferDeleter>(id);
     PENUMBRA_GL(glBindFramebuffer(GL_FRAMEBUFFER, id));
     if (d.color)
-        PENUMBRA_GL(glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, d.color->id(), 0));
+        PENUMBRA_GL(
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, d.color->id(), d.color_level));
     GLenum buffers[1 + kMaxExtraColors] = {GL_COLOR_ATTACHMENT0};
     GLsizei count = 1;
     for (const Texture* t : d.more_colors) {

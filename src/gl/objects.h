@@ -89,6 +89,18 @@ public:
     TextureFormat format() const { return format_; }
     std::size_t bytes() const;  // estimated GPU memory of level 0
 
+    // Mip levels (RGBA8 textures): level `level` (>= 1) defined as width x height RGBA8 pixels
+    // (rows bottom first), or undefined contents with null; and glGenerateMipmap over level 0.
+    // Each binds the texture on the active unit (tell the Device: forget_textures()).
+    void set_level(int level, int width, int height, const std::uint8_t* rgba);
+    void generate_mipmap();
+    // How it is sampled from now on (NearestMipmap, LinearMipmap: every level must be defined).
+    void set_sampling(Sampling sampling);
+    // glCopyTexImage2D: level `level` becomes the width x height region of the bound framebuffer
+    // whose lower-left corner is (x, y): RGBA, or RGB (a framebuffer without alpha, e.g. a window's,
+    // can only give that). Any level, in GLES 2 and WebGL 1 alike; level 0 takes the region's size.
+    void copy_framebuffer(int level, int x, int y, int width, int height, bool alpha);
+
 private:
     Handle<TextureDeleter> h_;
     int width_ = 0, height_ = 0;
@@ -119,6 +131,9 @@ inline constexpr int kMaxExtraColors = 3;
 
 struct FramebufferDesc {
     const Texture* color = nullptr;
+    // The level of `color` rendered into: 0, or any other with OES_fbo_render_mipmap
+    // (Caps::render_mipmap; GLES 2 and WebGL 1 render into level 0 only).
+    int color_level = 0;
     // COLOR_ATTACHMENT1.. in order (null: none): with any, the framebuffer's draw buffers are all
     // of its colour attachments, gl_FragData[i] into attachment i.
     const Texture* more_colors[kMaxExtraColors] = {nullptr, nullptr, nullptr};

@@ -111,6 +111,7 @@ std::string to_string(Sampling s) {
         case Sampling::Nearest: return "nearest";
         case Sampling::Linear: return "linear";
         case Sampling::LinearMipmap: return "linear-mipmap";
+        case Sampling::NearestMipmap: return "nearest-mipmap";
     }
     return "?";
 }

@@ -89,7 +89,8 @@ enum class TextureFormat {
     RGBA16F,  // GL_RGBA / GL_HALF_FLOAT_OES (OES_texture_half_float; a target with EXT_color_buffer_half_float)
     Depth   // GL_DEPTH_COMPONENT / GL_UNSIGNED_INT (OES_depth_texture)
 };
-enum class Sampling { Nearest, Linear, LinearMipmap };
+// NearestMipmap: the nearest texel of the nearest level (a level read back exactly by drawing).
+enum class Sampling { Nearest, Linear, LinearMipmap, NearestMipmap };
 enum class Wrap { Clamp, Repeat };
 
 enum class RenderbufferFormat {

@@ -56,6 +56,8 @@ public:
     void finish() { device_.finish(); }
 
     ShaderLibrary& shaders() { return shaders_; }
+    // For work outside a frame plan on the same context (render/mipmaps.h): its state cache.
+    gl::Device& device() { return device_; }
     const ResourcePool& pool() const { return pool_; }
     // How this context converts float to unorm8, found by a probe when the renderer was made;
     // the packing shaders are compiled for it (PACK_FLOOR when it truncates).
