@@ -9,6 +9,8 @@ data=$(cd "$(dirname "${BASH_SOURCE[0]}")/data" && pwd) || exit 1
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 printf '{ "asset": {"version": "2.0"}, "meshes": [ ' > broken.gltf
 touch afile                  # a regular file: a path under it fails with ENOTDIR
+printf 'not a png' > broken.png
+"$penumbra" render --size 32x16 --out wide.png >/dev/null 2>&1 || { echo "setup: cannot render wide.png"; exit 1; }
 mkdir adir.png adir.gltf     # existing folders named like the outputs
 nonutf8=$(printf 'a\xff.gltf')
 cp "$data/sphere_over_plane.gltf" "$nonutf8"
@@ -111,6 +113,14 @@ expect 2 "unknown subcommand"    "unknown subcommand 'frobnicate' (expected one 
 expect 2 "no subcommand"         "a subcommand is required" 
 expect 2 "export time nan"       "--time: must be a finite number" export --time nan --out x.gltf
 expect 2 "export size"           "--size: width and height must be at most 16384" export --size 100000x10 --out x.gltf
+expect 2 "mipmaps size"          "--size: 96 is not a power of two" mipmaps --size 96 --out-dir newdir
+expect 2 "mipmaps size 0"        "--size: 0 is not a power of two" mipmaps --size 0 --out-dir newdir
+expect 2 "mipmaps missing png"   "--source: nothere.png"  mipmaps --source nothere.png --out-dir newdir
+expect 2 "mipmaps not a png"     "expected marble, normals or a FILE.png" mipmaps --source "$data/textured_quad.gltf" --out-dir newdir
+expect 2 "mipmaps broken png"    "--source: broken.png"   mipmaps --source broken.png --out-dir newdir
+expect 2 "mipmaps not square"    "wide.png is 32x16: a mip chain here is square" mipmaps --source wide.png --out-dir newdir
+expect 2 "mipmaps filter"        "--filter: blur not in {box,normal,auto}" mipmaps --filter blur --out-dir newdir
+expect 2 "mipmaps out-dir"       "--out-dir afile/m: cannot create" mipmaps --size 16 --out-dir afile/m
 
 if [ "$have_truth" -eq 1 ]; then
   # truth checks every option before it creates its folder or does any work.

@@ -191,6 +191,12 @@ Variant blur_variant(int radius) {
     return {"light_depth.vert", "post_blur.frag", {"BLUR_RADIUS " + std::to_string(radius), sum + ")"}};
 }
 
+Variant mip_down_variant(bool normal_map) {
+    return {"light_depth.vert", "mip_down.frag", normal_map ? std::vector<std::string>{"MIP_NORMAL"} : std::vector<std::string>{}};
+}
+
+Variant mip_read_variant() { return {"light_depth.vert", "mip_down.frag", {"MIP_READ"}}; }
+
 Variant bright_variant() { return {"light_depth.vert", "post_bright.frag", {}}; }
 Variant bloom_add_variant() { return {"light_depth.vert", "post_bloom.frag", {}}; }
 
@@ -288,6 +294,9 @@ std::vector<Variant> all_variants() {
     for (int r = 1; r <= kMaxBlurRadius; ++r) out.push_back(blur_variant(r));
     out.push_back(bright_variant());
     out.push_back(bloom_add_variant());
+    out.push_back(mip_down_variant(false));
+    out.push_back(mip_down_variant(true));
+    out.push_back(mip_read_variant());
     out.push_back(flat_variant());
     out.push_back(flat_variant({true, false}));
     out.push_back(flat_variant({true, true}));

@@ -133,6 +133,11 @@ Variant bloom_add_variant();
 // --aov gbuffer-*: a G-buffer target decoded for people (gbuffer_view.frag through screen.vert).
 Variant gbuffer_view_variant(Aov aov);
 
+// penumbra mipmaps (render/mipmaps.h): one level from the level above, the box filter or the
+// normal map's (MIP_NORMAL: renormalised); and a level read back by drawing (MIP_READ).
+Variant mip_down_variant(bool normal_map);
+Variant mip_read_variant();
+
 // Every variant the renderer can build.
 std::vector<Variant> all_variants();
 

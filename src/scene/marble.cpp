@@ -131,4 +131,31 @@ Image make_marble(int size, std::uint32_t seed) {
     return img;
 }
 
+Image make_tile_normal_map(int size) {
+    Image img;
+    img.width = img.height = size;
+    img.rgba.resize(static_cast<size_t>(size) * static_cast<size_t>(size) * 4u);
+    // Height |sin(8 pi u)| * |sin(8 pi v)| (u, v in 0..1): domes meeting in creases along the grid
+    // lines. Its slope along each axis (per unit of the sine's argument, times kSlope) tilts the
+    // normal: up to about 50 degrees at a crease.
+    constexpr float kTiles = 8.0f, kSlope = 1.2f;
+    const float w = kTiles * 0.5f * kTwoPi;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const float u = (static_cast<float>(x) + 0.5f) / static_cast<float>(size);
+            const float v = (static_cast<float>(y) + 0.5f) / static_cast<float>(size);
+            const float su = std::sin(w * u), sv = std::sin(w * v);
+            const float cu = std::cos(w * u), cv = std::cos(w * v);
+            // d|sin t| / dt = sign(sin t) cos t
+            const float du = (su < 0.0f ? -cu : cu) * std::fabs(sv), dv = (sv < 0.0f ? -cv : cv) * std::fabs(su);
+            const glm::vec3 n = glm::normalize(glm::vec3(-kSlope * du, -kSlope * dv, 1.0f));
+            std::uint8_t* px = &img.rgba[(static_cast<size_t>(y) * static_cast<size_t>(size) + static_cast<size_t>(x)) * 4u];
+            px[0] = to_byte(n.x * 0.5f + 0.5f);
+            px[1] = to_byte(n.y * 0.5f + 0.5f);
+            px[2] = to_byte(n.z * 0.5f + 0.5f);
+            px[3] = 255;
+        }
+    return img;
+}
+
 }  // namespace penumbra::scene

@@ -10,4 +10,9 @@ namespace penumbra::scene {
 
 Image make_marble(int size, std::uint32_t seed = 1);
 
+// A tangent-space normal map (xyz = n * 0.5 + 0.5, alpha 255) of a grid of 8 x 8 rounded tiles
+// with sharp creases between them: where the normals on either side of a crease differ most, a
+// box-filtered mip level shortens them (penumbra mipmaps). Tiles for any size.
+Image make_tile_normal_map(int size);
+
 }  // namespace penumbra::scene

@@ -4,6 +4,7 @@
 //   gallery  the course scene in every encoding x filter, colour + visibility + light depth
 //   shaders  write every shader variant's GLSL ES 1.00 source (for glslangValidator)
 //   caps     what the headless context can do
+//   mipmaps  a texture's mip chain rendered level by level, against glGenerateMipmap and the CPU
 // Their options come from the option table (render/options.h) through cli_options.h.
 // Bad input (an unwritable output included) gets one line naming the problem, exit status 2, and
 // no output file; a failure while rendering exit status 1; never a signal (out of memory is a line too).
@@ -39,6 +40,7 @@
 #include "scene/scene_source.h"
 #include "measure.h"
 #include "measure_commands.h"
+#include "mipmaps_command.h"
 
 namespace fs = std::filesystem;
 using namespace penumbra;
@@ -278,6 +280,8 @@ int run(int argc, char** argv) {
     shaders_cmd->add_option("--out", shader_dir, "folder")->required();
 
     auto* caps_cmd = app.add_subcommand("caps", "print what the headless context supports");
+    tools::MipmapsOptions mipmaps;
+    auto* mipmaps_cmd = tools::add_mipmaps_command(app, mipmaps);
     // export, truth, bench: measuring the trade (tools/penumbra/measure_commands.h).
     const auto measure = tools::add_measure_commands(app);
 
@@ -328,6 +332,7 @@ int run(int argc, char** argv) {
         if (*gallery_cmd) return run_gallery(gallery_dir, gallery_options.parse(), gallery_allow);
         if (*shaders_cmd) return run_shaders(shader_dir);
         if (*caps_cmd) return run_caps();
+        if (*mipmaps_cmd) return tools::run_mipmaps(mipmaps);
         if (const int rc = tools::run_measure_commands(*measure); rc >= 0) return rc;
 #ifdef PENUMBRA_HAVE_TRUTH
         if (*sweep_cmd) return tools::run_bias_sweep(sweep);
