@@ -29,10 +29,27 @@ ResourceDesc texture_desc(const Output& o, const gl::Caps& caps, bool stencil) {
     d.name = o.name;
     d.width = o.width;
     d.height = o.height;
-    d.depth_buffer = stencil ? caps.depth_stencil_format() : caps.depth_format();
+    if (!o.copied) d.depth_buffer = stencil ? caps.depth_stencil_format() : caps.depth_format();
     d.sampling = o.sampling;
     d.wrap = o.wrap;
     return d;
+}
+
+// Output::copy_to: the image's region copied into a texture after everything else drew into it.
+void add_copy_pass(PlanContext& c, const Output& out, const TargetRef& output) {
+    if (out.copy_to.empty()) return;
+    const int r = c.add_resource(
+        texture_desc(Output::copied_texture(out.copy_to, out.width, out.height, out.sampling, out.wrap), c.caps, false),
+        "", "filled by glCopyTexImage2D from the frame's image");
+    Pass p;
+    p.name = "copy-to-texture";
+    p.module = "frame";
+    p.target = output;
+    p.object_uniforms = ObjectUniforms::None;
+    p.copy_to = r;
+    p.detail = "the " + std::to_string(out.width) + "x" + std::to_string(out.height) + " image copied into texture " +
+               out.copy_to + " (glCopyTexImage2D, RGB)";
+    c.add_pass(std::move(p));
 }
 
 }  // namespace
@@ -603,6 +620,7 @@ FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& cap
     if (s.shading == Shading::Deferred) {
         plan_deferred(c, p.module);
         if (image_post(s)) add_post_passes(c, c.camera_target.resource, output);
+        add_copy_pass(c, out, output);
         return std::move(p.plan);
     }
     std::string why;
@@ -619,6 +637,7 @@ FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& cap
     }
     if (!blur_why.empty()) p.plan.notes.push_back(blur_why);
     if (image_post(s)) add_post_passes(c, c.camera_target.resource, output);
+    add_copy_pass(c, out, output);
     return std::move(p.plan);
 }
 

@@ -39,13 +39,21 @@ struct Output {
     int width = 512, height = 512;
     int x = 0, y = 0;   // window: the region's lower-left corner
     bool clip = false;  // window: keep clears inside the region
-    gl::Sampling sampling = gl::Sampling::Nearest;  // texture: how a later pass samples it
+    gl::Sampling sampling = gl::Sampling::Nearest;  // texture, copy_to: how a later pass samples it
     gl::Wrap wrap = gl::Wrap::Clamp;
+    // After the frame, the image drawn (the window's region, or the offscreen image) is copied into
+    // the pool's texture of this name with glCopyTexImage2D: the course notes' first way to render
+    // to a texture (W09P2b's rtt=copy). A later plan samples it as Output::copied(name, ...).
+    std::string copy_to;
+    // A texture that a copy fills (copy_to): colour only, no depth buffer of its own.
+    bool copied = false;
 
     static Output offscreen(int width, int height);  // the texture "camera", read back by read_image()
     static Output to_window(int width, int height);
     static Output window_region(int x, int y, int width, int height);  // clipped
     static Output texture(std::string name, int width, int height, gl::Sampling sampling, gl::Wrap wrap);
+    // The texture an earlier plan's copy_to filled, as a later plan's ImageOverride names it.
+    static Output copied_texture(std::string name, int width, int height, gl::Sampling sampling, gl::Wrap wrap);
     // "offscreen 512x512", "window 800x600 at (0, 0)", "texture w09p2b 1024x1024"
     std::string describe() const;
 };
@@ -185,6 +193,9 @@ struct Pass {
     std::vector<Binding> bindings;
     std::vector<Draw> draws;
     bool skipped = false;  // its target's content is reused: nothing is drawn
+    // After its draws (a copy pass has none): its target's region copied into this resource's
+    // texture with glCopyTexImage2D (Output::copy_to); -1: none.
+    int copy_to = -1;
     std::string detail;    // one line for people: "1024x1024 rgba, perspective light, 2 caster(s)"
     std::vector<int> reads() const;  // the resources its draws sample
 };

@@ -50,6 +50,12 @@ Output Output::texture(std::string name, int width, int height, gl::Sampling sam
     return o;
 }
 
+Output Output::copied_texture(std::string name, int width, int height, gl::Sampling sampling, gl::Wrap wrap) {
+    Output o = texture(std::move(name), width, height, sampling, wrap);
+    o.copied = true;
+    return o;
+}
+
 FrameInputs offscreen(int width, int height) {
     FrameInputs in;
     in.output = Output::offscreen(width, height);
@@ -230,11 +236,12 @@ std::string allocate_stencil(std::vector<StencilUse>& uses, int available) {
 }
 
 std::string Output::describe() const {
+    const std::string copy = copy_to.empty() ? "" : ", copied into texture " + copy_to;
     if (window)
         return "window " + size_str(width, height) +
-               (x || y || clip ? " at (" + std::to_string(x) + ", " + std::to_string(y) + ")" : "");
-    if (name == "camera") return "offscreen " + size_str(width, height);
-    return "texture " + name + " " + size_str(width, height);
+               (x || y || clip ? " at (" + std::to_string(x) + ", " + std::to_string(y) + ")" : "") + copy;
+    if (name == "camera") return "offscreen " + size_str(width, height) + copy;
+    return "texture " + name + " " + size_str(width, height) + (copied ? " (filled by a copy)" : "");
 }
 
 }  // namespace penumbra::render

@@ -153,7 +153,9 @@ std::string json_pass(const FramePlan& p, const Pass& pass) {
     }
     std::vector<std::string> reads;
     for (int r : pass.reads()) reads.push_back(resource_name(p, r));
-    j += "],\"reads\":" + json_strings(reads) + ",\"skipped\":" + json_bool(pass.skipped) +
+    j += "],\"reads\":" + json_strings(reads) +
+         ",\"copy_to\":" + (pass.copy_to >= 0 ? json_quote(resource_name(p, pass.copy_to)) : std::string("null")) +
+         ",\"skipped\":" + json_bool(pass.skipped) +
          ",\"detail\":" + json_quote(pass.detail) + "}";
     return j;
 }

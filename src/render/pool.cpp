@@ -94,6 +94,11 @@ const gl::Texture& ResourcePool::texture(const std::string& name, int attachment
     return e.desc.color ? e.color : e.depth_texture;
 }
 
+void ResourcePool::copy_into(const std::string& name, int x, int y, int width, int height) {
+    entry(name);  // throws, naming it, when no plan declared it
+    entries_.at(name)->color.copy_framebuffer(0, x, y, width, height, false);
+}
+
 void ResourcePool::clear() { entries_.clear(); }
 
 std::size_t ResourcePool::bytes() const {

@@ -30,6 +30,10 @@ public:
     // The texture a pass samples: the colour texture, or the depth texture of a depth-only target.
     // `attachment`: which colour texture of a target with several (ResourceDesc::colors).
     const gl::Texture& texture(const std::string& name, int attachment = 0) const;
+    // A resource's colour texture filled from the bound framebuffer's region (x, y, width, height)
+    // by glCopyTexImage2D, RGB (a window may have no alpha to copy). The caller's Device must
+    // forget its texture bindings (the copy binds it).
+    void copy_into(const std::string& name, int x, int y, int width, int height);
     bool has(const std::string& name) const { return entries_.count(name) > 0; }
     std::size_t count() const { return entries_.size(); }
     std::size_t bytes() const;  // the GPU memory of every resource held

@@ -213,6 +213,11 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
         else if (d.triangles) device_.draw_points(*d.triangles);
         else device_.draw(up.meshes[static_cast<size_t>(d.mesh)]);
     }
+    if (pass.copy_to >= 0) {
+        const gl::Target t = pool_.target(plan, pass.target);
+        pool_.copy_into(plan.resources[static_cast<size_t>(pass.copy_to)].desc.name, t.x, t.y, t.width, t.height);
+        device_.forget_textures();
+    }
     gl::check_errors(("the " + pass.name + " pass").c_str());
 }
 

@@ -361,6 +361,60 @@ TEST_F(RendererGl, ATextureOutputIsSampledByTheNextPlan) {
     EXPECT_EQ(sc.objects[static_cast<size_t>(course.table)].material, table_material);  // the scene is not edited
 }
 
+// W09P2b's rtt=copy: the first plan draws into its image and copies it into a texture
+// (glCopyTexImage2D, the copy-to-texture pass), the next samples that texture: the same frame as
+// through a texture output (an FBO), and the copy holds the image byte for byte (RGB).
+TEST_F(RendererGl, ACopiedImageIsSampledLikeARenderedTexture) {
+    auto course = scene::make_course_scene(4);
+    scene::Scene& sc = course.scene;
+    const int image = static_cast<int>(sc.images.size());
+    sc.images.push_back(scene::Image{1, 1, {0, 0, 0, 255}});
+    scene::Material m;
+    m.base_color_texture = image;
+    sc.materials.push_back(m);
+    const int material = static_cast<int>(sc.materials.size()) - 1;
+    render::Settings s;
+    s.technique = render::Technique::None;
+    s.aov = render::Aov::Color;
+    const auto frame_with = [&](const render::Output& picture) {
+        render::FrameInputs in = kSmall;
+        in.objects.push_back({course.table, -1, material});
+        in.images.push_back({image, picture});
+        renderer->render(sc, s, in);
+        return renderer->read_image();
+    };
+    const render::Output fbo = render::Output::texture("picture", 64, 64, gl::Sampling::Linear, gl::Wrap::Clamp);
+    render::FrameInputs into;
+    into.output = fbo;
+    renderer->render(sc, s, into);
+    const auto through_fbo = frame_with(fbo);
+
+    render::FrameInputs copy;
+    copy.output = render::Output::offscreen(64, 64);
+    copy.output.copy_to = "copied";
+    copy.output.sampling = gl::Sampling::Linear;
+    const auto& plan = renderer->render(sc, s, copy);
+    ASSERT_EQ(plan.passes.back().name, "copy-to-texture");
+    const render::PlannedResource* copied = plan.resource("copied");
+    ASSERT_NE(copied, nullptr);
+    EXPECT_FALSE(copied->desc.depth_buffer.has_value());  // colour only: the copy brings no depth
+    const auto camera = renderer->read_image("camera");
+    const auto in_texture = renderer->read_image("copied");
+    ASSERT_EQ(camera.size(), in_texture.size());
+    for (size_t i = 0; i < camera.size(); ++i) {
+        if (i % 4 == 3) continue;  // alpha: the copy is RGB (a window may have no alpha)
+        ASSERT_EQ(camera[i], in_texture[i]) << "byte " << i;
+    }
+    const auto through_copy =
+        frame_with(render::Output::copied_texture("copied", 64, 64, gl::Sampling::Linear, gl::Wrap::Clamp));
+    EXPECT_EQ(through_copy, through_fbo);
+    // ...and it shows the picture: the table with the black placeholder differs.
+    render::FrameInputs plain = kSmall;
+    plain.objects.push_back({course.table, -1, material});
+    renderer->render(sc, s, plain);
+    EXPECT_NE(renderer->read_image(), through_copy);
+}
+
 TEST_F(RendererGl, AMisspeltUniformFailsInDebugBuilds) {
     if (!gl::kStrictUniforms) GTEST_SKIP() << "release build: unknown uniforms are ignored";
     gl::Device device;
