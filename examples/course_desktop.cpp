@@ -65,11 +65,11 @@ std::string title_controls(const examples::CourseApp& app) {
 }
 
 // A --keys character as a key press: letters as typed (upper case: with Shift), digits and
-// [ ] - = , and space as themselves. 0 for any other character.
+// [ ] - = , . and space as themselves. 0 for any other character.
 platform::KeyEvent key_of(char c) {
     if (c >= 'a' && c <= 'z') return {c - 'a' + 'A', false};
     if (c >= 'A' && c <= 'Z') return {c, true};
-    if ((c >= '0' && c <= '9') || c == '[' || c == ']' || c == '-' || c == '=' || c == ',' || c == ' ') return {c, false};
+    if ((c >= '0' && c <= '9') || c == '[' || c == ']' || c == '-' || c == '=' || c == ',' || c == '.' || c == ' ') return {c, false};
     return {0, false};
 }
 
@@ -101,7 +101,7 @@ void print_help() {
         "  -v, --verbose       print each frame's passes at the end\n"
         "  --time T            both clocks at T seconds, paused\n"
         "  --keys KEYS         press these keys, one a frame from the second (letters as typed:\n"
-        "                      upper case with Shift; digits, [ ] - = , and space)\n"
+        "                      upper case with Shift; digits, [ ] - = , . and space)\n"
         "  --print-title       print the window title when its controls change, and at the end\n\n"
         "as the web pages' controls and URL:\n%s\n%s",
         examples::exercise_names().c_str(), options.c_str(), examples::CourseApp::key_help().c_str());
@@ -152,7 +152,7 @@ Args parse_args(int argc, char** argv) {
                     char shown[8];
                     if (c > ' ' && c < 127) std::snprintf(shown, sizeof shown, "'%c'", c);
                     else std::snprintf(shown, sizeof shown, "\\x%02X", static_cast<unsigned char>(c));
-                    usage_error("--keys: " + std::string(shown) + " is not a key here (letters, digits, [ ] - = , and space)");
+                    usage_error("--keys: " + std::string(shown) + " is not a key here (letters, digits, [ ] - = , . and space)");
                 }
             a.keys = value;
         } else {
@@ -223,6 +223,7 @@ int main(int argc, char** argv) {
     double last_t = -1.0, last_ms_shown = -1.0;
     std::string shown_controls, title;
     int last_w = 0, last_h = 0;
+    std::string shown_frame_note;
     window->run([&](const platform::FrameInfo& f) {
         if (f.frame_index >= 1 && f.frame_index <= static_cast<long>(args.keys.size()))  // the first frame as started
             on_key(key_of(args.keys[static_cast<size_t>(f.frame_index - 1)]));
@@ -236,6 +237,12 @@ int main(int argc, char** argv) {
         }
         try {
             app.draw(f.width, f.height);
+            // What the frame had to change for this window (W09P2b's copy larger than it): said
+            // once each time it changes.
+            if (app.frame_note() != shown_frame_note) {
+                shown_frame_note = app.frame_note();
+                if (!shown_frame_note.empty()) std::fprintf(stderr, "penumbra-desktop: note: %s\n", shown_frame_note.c_str());
+            }
         } catch (const gl::Error& e) {
             std::fprintf(stderr, "penumbra-desktop: error: GL: %s\n", e.what());
             status = 1;

@@ -195,6 +195,8 @@ const char* penumbra_state() {
     j += ",\"status\":" + json_quote(g->status);
     // What the last option set changed in its value ("" when it took it as it was).
     j += ",\"note\":" + json_quote(a.note());
+    // What the last frame had to change for the canvas (W09P2b's copy larger than it).
+    j += ",\"frameNote\":" + json_quote(a.frame_note());
     j += ",\"width\":" + std::to_string(g->width) + ",\"height\":" + std::to_string(g->height);
     j += "}";
     return hand(j);

@@ -35,6 +35,11 @@ std::vector<render::Option<Toggles>> make_toggles() {
                         {{"light", "the view from the light"}, {"camera", "the camera's view"}}),
                  [](Toggles& g, std::string_view v) { g.fbo_light = v == "light"; },
                  [](const Toggles& g) { return std::string(g.fbo_light ? "light" : "camera"); }});
+    t.push_back({toggle("rtt", "W09P2b: how the picture gets into the texture", "Render to texture",
+                        {{"fbo", "a framebuffer object"},
+                         {"copy", "drawn in the window, then copied (glCopyTexImage2D)"}}),
+                 [](Toggles& g, std::string_view v) { g.rtt_copy = v == "copy"; },
+                 [](const Toggles& g) { return std::string(g.rtt_copy ? "copy" : "fbo"); }});
     t.push_back({toggle("map-view", "W09P2c: the shadow map, scaled for viewing, in the top right corner",
                         "the shadow map, scaled for viewing", kOnOff),
                  [](Toggles& g, std::string_view v) { g.map_view = v == "on"; },
@@ -84,6 +89,7 @@ std::vector<ExerciseInfo> make_list() {
          "blocky.",
          render::Technique::None,
          {light, jump, {"fbo-view", "Off-screen buffer", K::Select},
+          {"rtt", "Off-screen buffer", K::Radio, {}, {}, "a copy is no larger than the window"},
           {"map-size", "Off-screen buffer", K::Select, {"256", "512", "1024", "2048"}, "Texture size"}}},
         {Exercise::W09P2c, "w09p2c", "W09P2c: Shadow mapping in the fragment shader",
          "Two passes: the depth seen from the light into a shadow map, then the scene from the camera, each fragment "
@@ -290,6 +296,7 @@ const std::vector<KeyBinding>& key_bindings() {
         {'0', "post", "multipass: post-processing shadow blur / none / blur / bloom / shadow blur and bloom"},
         {'9', "shading", "multipass: forward / deferred shading"},
         {',', "lights", "multipass: point lights 0 / 8 / 32 / 64 / 128 / 256, Shift+, backwards"},
+        {'.', "rtt", "W09P2b: render to texture through an FBO / in the window, then glCopyTexImage2D"},
     };
     return keys;
 }

@@ -24,6 +24,7 @@ struct Toggles {
     bool jump = true;       // jump=on|off: the teapot jumps
     bool ortho = false;     // projection=persp|ortho (W09P2a): ortho makes the light directional
     bool fbo_light = true;  // fbo-view=light|camera (W09P2b): what is rendered into the FBO
+    bool rtt_copy = false;  // rtt=fbo|copy (W09P2b): into the FBO, or into the window then glCopyTexImage2D
     bool map_view = true;   // map-view=on|off (W09P2c): the shadow map in the top right corner
     bool reference = false; // reference=on|off (soft): Heckbert-Herf with kReferenceSamples, converging
 };

@@ -316,6 +316,7 @@ void CourseApp::draw(int width, int height) {
     const render::Output window = render::Output::to_window(width, height);
     render::Settings s = frame_settings();
     plan_text_.clear();
+    frame_note_.clear();
     area_.reset();
     render::FrameInputs in;
     in.output = window;
@@ -332,16 +333,38 @@ void CourseApp::draw(int width, int height) {
             s.aov = render::Aov::Color;
             // 1. The scene into a texture (the ground with its marble), 2. the scene from the
             // camera with that texture where the table's material has its placeholder.
-            const int size = std::clamp(settings_.map_size, 1, renderer_->caps().max_target_size());
+            int size = std::clamp(settings_.map_size, 1, renderer_->caps().max_target_size());
+            if (toggles_.rtt_copy) {
+                // glCopyTexImage2D copies what the window holds: the texture is no larger than the
+                // window. The largest power of two that fits (WebGL 1 repeats only those).
+                const int fit = std::min(width, height);
+                if (size > fit) {
+                    int p = 1;
+                    while (p * 2 <= fit) p *= 2;
+                    frame_note_ = "rtt=copy: the texture is copied from the window, so it can be no larger than the "
+                                  "window's " + std::to_string(fit) + " pixels: " + std::to_string(p) + "x" +
+                                  std::to_string(p) + " instead of " + std::to_string(size) + "x" + std::to_string(size);
+                    size = p;
+                }
+            }
             const bool pot = (size & (size - 1)) == 0;  // WebGL 1 repeats only power-of-two textures
-            const render::Output fbo =
-                render::Output::texture(kFboTexture, size, size, gl::Sampling::Linear, pot ? gl::Wrap::Repeat : gl::Wrap::Clamp);
+            const gl::Wrap wrap = pot ? gl::Wrap::Repeat : gl::Wrap::Clamp;
+            const render::Output texture =
+                toggles_.rtt_copy ? render::Output::copied_texture(kFboTexture, size, size, gl::Sampling::Linear, wrap)
+                                  : render::Output::texture(kFboTexture, size, size, gl::Sampling::Linear, wrap);
+            render::Output into_output = texture;
+            if (toggles_.rtt_copy) {  // drawn in the window's corner, copied, then drawn over
+                into_output = render::Output::window_region(0, 0, size, size);
+                into_output.copy_to = kFboTexture;
+                into_output.sampling = texture.sampling;
+                into_output.wrap = texture.wrap;
+            }
             render::FrameInputs into;
-            if (toggles_.fbo_light) into = light_view(fbo, false, window);
-            else into.output = fbo;
+            if (toggles_.fbo_light) into = light_view(into_output, false, window);
+            else into.output = into_output;
             render(s, into);
             in.objects.push_back({course_.table, fbo_mesh_, fbo_material_});
-            in.images.push_back({fbo_image_, fbo});
+            in.images.push_back({fbo_image_, texture});
             render(s, in);
             break;
         }

@@ -4,7 +4,8 @@
 //           switch the light's circulation and the teapot's jump on and off;
 //   W09P2a  the scene from the light: its own view and projection fitted tightly around the
 //           scene, perspective for the point light, orthographic for a directional light;
-//   W09P2b  the scene rendered into a framebuffer object, and that texture on the ground quad;
+//   W09P2b  the scene rendered into a framebuffer object (or into the window and copied out with
+//           glCopyTexImage2D: rtt=copy), and that texture on the ground quad;
 //   W09P2c  shadow mapping: depth encoding, 4x4 PCF, bias (fixed, the encoding's default or auto),
 //           precision (highp or emulated mediump), map size, and the shadow map shown scaled for
 //           viewing in a corner;
@@ -106,6 +107,9 @@ public:
     long frames_drawn() const { return frames_drawn_; }
     // The passes of the last frame (each plan's), for --verbose and the pages.
     std::string last_plan() const;
+    // What the last frame had to change in the options for the window it was drawn in ("" when
+    // nothing): W09P2b's rtt=copy texture larger than the window.
+    const std::string& frame_note() const { return frame_note_; }
 
     // Desktop keys: the help text, and one key's action. Returns a line saying what changed,
     // or "" when the key means nothing here.
@@ -142,6 +146,7 @@ private:
     long frames_drawn_ = 0;
     std::string note_;  // of the last set_option
     std::string plan_text_;  // this frame's passes, for --verbose
+    std::string frame_note_;  // the last frame's (frame_note())
     std::optional<render::AreaStats> area_;  // the last frame's light samples
 };
 

@@ -26,6 +26,7 @@
   const firstEl = document.getElementById('first-frame');
   const pictureEl = document.getElementById('picture');
   const lostEl = document.getElementById('lost');
+  const frameNoteEl = document.getElementById('frame-note');
   const MAX_SIDE = 2048; // the backing store's cap, a side
   const samplesRow = document.getElementById('samples-row');
   const samplesEl = document.getElementById('samples');
@@ -221,6 +222,9 @@
     const s = state();
     msEl.textContent = s.lost ? '– (no context)' : s.ms > 0 ? s.ms.toFixed(2) + ' ms/frame' : '–';
     lostEl.hidden = !s.lost;
+    // What the frame had to change for this canvas (W09P2b: a copy no larger than the canvas).
+    if (frameNoteEl.textContent !== s.frameNote) frameNoteEl.textContent = s.frameNote;
+    frameNoteEl.hidden = !s.frameNote;
     if (samplesRow) {
       samplesRow.hidden = !s.area;
       samplesEl.textContent = samplesText(s) || '–';

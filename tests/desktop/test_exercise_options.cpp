@@ -12,7 +12,7 @@ using penumbra::examples::exercise_list;
 TEST(ExerciseOptions, DefaultsOfEachPage) {
     EXPECT_EQ(CourseApp(Exercise::W09P1).query(), "light=on&jump=on");
     EXPECT_EQ(CourseApp(Exercise::W09P2a).query(), "light=on&jump=on&projection=persp");
-    EXPECT_EQ(CourseApp(Exercise::W09P2b).query(), "light=on&jump=on&fbo-view=light&map-size=1024");
+    EXPECT_EQ(CourseApp(Exercise::W09P2b).query(), "light=on&jump=on&fbo-view=light&rtt=fbo&map-size=1024");
     EXPECT_EQ(CourseApp(Exercise::W09P2c).query(),
               "light=on&jump=on&encoding=rgba&filter=hard&bias=auto&map-faces=auto&precision=highp&map-size=1024&aov=color&"
               "map-view=on");
@@ -29,7 +29,7 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
 
 TEST(ExerciseOptions, EveryChangeReadsBack) {
     const std::vector<std::pair<std::string, std::string>> changes = {
-        {"light", "off"}, {"jump", "off"},   {"projection", "ortho"}, {"fbo-view", "camera"}, {"map-view", "off"},
+        {"light", "off"}, {"jump", "off"},   {"projection", "ortho"}, {"fbo-view", "camera"}, {"rtt", "copy"}, {"map-view", "off"},
         {"encoding", "r8"}, {"filter", "pcf4x4"}, {"bias", "0.003"},   {"map-size", "2048"},     {"aov", "visibility"},
         {"precision", "mediump"}, {"volume-method", "zfail"}, {"show-volumes", "on"}, {"eye", "in-shadow"},
         {"light-radius", "0.45"}, {"pcss-search", "32"}, {"pcss-taps", "8"}, {"area-samples", "64"},
@@ -310,6 +310,19 @@ TEST(ExerciseOptions, ClocksFollowTheToggles) {
     EXPECT_DOUBLE_EQ(a.jump_time(), 0.1);
     a.advance(5.0);  // a long pause (a hidden tab) moves at most a quarter second
     EXPECT_DOUBLE_EQ(a.jump_time(), 0.35);
+}
+
+TEST(ExerciseOptions, RenderToTextureByCopy) {
+    CourseApp a(Exercise::W09P2b);
+    EXPECT_EQ(a.value_of("rtt"), "fbo");
+    EXPECT_EQ(a.on_key('.', false), "rtt = copy");
+    EXPECT_TRUE(a.toggles().rtt_copy);
+    EXPECT_NE(a.query().find("rtt=copy"), std::string::npos) << a.query();
+    EXPECT_NE(a.set_option("rtt", "blit"), "");
+    EXPECT_TRUE(a.toggles().rtt_copy);  // a bad value changes nothing
+    EXPECT_EQ(a.set_option("rtt", "fbo"), "");
+    EXPECT_FALSE(a.toggles().rtt_copy);
+    EXPECT_EQ(a.frame_note(), "");  // no frame drawn
 }
 
 TEST(ExerciseOptions, Keys) {
