@@ -37,7 +37,7 @@ std::vector<render::Option<Toggles>> make_toggles() {
                  [](const Toggles& g) { return std::string(g.fbo_light ? "light" : "camera"); }});
     t.push_back({toggle("rtt", "W09P2b: how the picture gets into the texture", "Render to texture",
                         {{"fbo", "a framebuffer object"},
-                         {"copy", "drawn in the window, then copied (glCopyTexImage2D)"}}),
+                         {"copy", "copied from the window (glCopyTexImage2D)"}}),
                  [](Toggles& g, std::string_view v) { g.rtt_copy = v == "copy"; },
                  [](const Toggles& g) { return std::string(g.rtt_copy ? "copy" : "fbo"); }});
     t.push_back({toggle("map-view", "W09P2c: the shadow map, scaled for viewing, in the top right corner",
