@@ -53,6 +53,12 @@ def read_png(path):
     return width, height, channels, rows
 
 
+def read_rgb(path):
+    """width, height and the pixels' R, G, B in one flat list, rows top first."""
+    w, h, c, rows = read_png(path)
+    return w, h, [v for row in rows for x in range(w) for v in row[x * c:x * c + 3]]
+
+
 def main():
     path = sys.argv[1]
     width, height, channels, rows = read_png(path)

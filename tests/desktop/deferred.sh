@@ -34,11 +34,10 @@ render dark --lights 0
 python3 - "$here" "$out" <<'PY'
 import sys
 sys.path.insert(0, sys.argv[1])
-from check_png import read_png
+from check_png import read_rgb
 out = sys.argv[2]
 def load(name):
-    w, h, c, rows = read_png(f"{out}/{name}.png")
-    return w, h, [v for row in rows for x in range(w) for v in row[x * c:x * c + 3]]
+    return read_rgb(f"{out}/{name}.png")
 w, h, win = load("desktop")
 cw, ch, cli = load("cli")
 _, _, fwd = load("forward")
