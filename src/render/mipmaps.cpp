@@ -229,6 +229,8 @@ void GpuMipChain::generate() {
 std::vector<MipImage> GpuMipChain::read(MipPath path) {
     gl::Device& dev = r_.device();
     std::vector<MipImage> out;
+    const bool by_drawing = path != MipPath::Levels && s_->levels > 1;
+    if (by_drawing) s_->chain.set_sampling(gl::Sampling::NearestMipmap);
     for (int l = 0; l < s_->levels; ++l) {
         const int n = level_size(s_->size, l);
         MipImage img;
@@ -247,15 +249,14 @@ std::vector<MipImage> GpuMipChain::read(MipPath path) {
             fd.color = &own;
             fd.label = "mip read";
             const gl::Framebuffer fb(fd);
-            s_->chain.set_sampling(gl::Sampling::NearestMipmap);
             dev.forget_textures();
             draw_from(dev, r_.shaders().get(mip_read_variant()), s_->chain, s_->size, {&fb, n, n}, false);
             img.rgba = dev.read_rgba(n, n);
-            s_->chain.set_sampling(gl::Sampling::Nearest);
-            dev.forget_textures();
         }
         out.push_back(std::move(img));
     }
+    if (by_drawing) s_->chain.set_sampling(gl::Sampling::Nearest);
+    dev.forget_textures();
     dev.bind_target({nullptr, 1, 1});
     return out;
 }

@@ -192,8 +192,9 @@ Timing time_frames(render::Renderer& r, const render::Settings& s, const render:
 // and the opening's pixels alone) and ms/frame, into w.effects. No course frame: a note, no rows.
 void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in);
 // The first course frame of --scenes: the one at t 0.6 if there is one (the pictures' frame); null
-// when no teapot frame is listed.
-const SceneSpec* course_frame(const Sweep& w);
+// when no teapot frame is listed, with a note that what is `measured` ("the stencil effects are")
+// was not.
+const SceneSpec* course_frame(Sweep& w, const std::string& measured);
 
 // A row of a section on the course frame waiting for its times (effects_bench.cpp, lights_bench.cpp).
 struct PendingRow {

@@ -57,13 +57,14 @@ bool has(const std::string& list, const char* effect) {
 }  // namespace
 
 // The first course frame of --scenes: the one at t 0.6 if there is one (the pictures' frame).
-const SceneSpec* course_frame(const Sweep& w) {
+const SceneSpec* course_frame(Sweep& w, const std::string& measured) {
     const SceneSpec* first = nullptr;
     for (const SceneSpec& s : w.scenes) {
         if (s.name != "teapot") continue;
         if (!first) first = &s;
         if (std::abs(s.time - 0.6) < 1e-9) return &s;
     }
+    if (!first) w.notes.push_back(measured + " measured on the course scene (teapot@T in --scenes): none was listed");
     return first;
 }
 
@@ -94,11 +95,8 @@ void time_course_rows(const Sweep& w, render::Renderer& r, const render::FrameIn
 
 void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) {
     const BenchOptions& o = w.o;
-    const SceneSpec* spec = course_frame(w);
-    if (!spec) {
-        w.notes.push_back("the stencil effects are measured on the course scene (teapot@T in --scenes): none was listed");
-        return;
-    }
+    const SceneSpec* spec = course_frame(w, "the stencil effects are");
+    if (!spec) return;
     w.effects_frame = spec->label;
     const auto t0 = Clock::now();
     scene::SceneSource src = open_scene(spec->name, scene::Eye::Scene, o.allow_outside);

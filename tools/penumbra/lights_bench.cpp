@@ -41,11 +41,8 @@ const Row* find(const Sweep& w, const std::string& shading, int lights) {
 
 void lights_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) {
     const BenchOptions& o = w.o;
-    const SceneSpec* spec = course_frame(w);
-    if (!spec) {
-        w.notes.push_back("forward against deferred is measured on the course scene (teapot@T in --scenes): none was listed");
-        return;
-    }
+    const SceneSpec* spec = course_frame(w, "forward against deferred is");
+    if (!spec) return;
     const auto t0 = Clock::now();
     scene::SceneSource src = open_scene(spec->name, scene::Eye::Scene, o.allow_outside);
     const scene::Scene still = src.at(spec->time);

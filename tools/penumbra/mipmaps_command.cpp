@@ -27,10 +27,6 @@ namespace {
 
 constexpr int kMaxSize = 4096;
 
-CLI::Validator one_of(std::vector<std::string> names) {
-    return CLI::IsMember(std::move(names));
-}
-
 render::MipImage load_source(const MipmapsOptions& o, bool& normal_map) {
     render::MipImage img;
     normal_map = o.source == "normals";
@@ -94,11 +90,11 @@ CLI::App* add_mipmaps_command(CLI::App& app, MipmapsOptions& o) {
     cmd->add_option("--source", o.source, "marble, normals (a tiled normal map) or FILE.png, square, a power of two (default normals)");
     cmd->add_option("--size", o.size, "the built-in sources' size, a power of two 1..4096 (default 256)");
     cmd->add_option("--filter", o.filter, "box, normal (renormalised normals) or auto: normal for the normal map (default auto)")
-        ->check(one_of({"box", "normal", "auto"}));
+        ->check(CLI::IsMember({"box", "normal", "auto"}));
     cmd->add_option("--path", o.path,
                     "levels (render into each level: OES_fbo_render_mipmap), textures (WebGL 1's way: a texture per "
                     "level, copied into the level) or auto (default auto)")
-        ->check(one_of({"levels", "textures", "auto"}));
+        ->check(CLI::IsMember({"levels", "textures", "auto"}));
     cmd->add_option("--out-dir", o.out_dir, "folder for the levels' PNGs, index.html and mipmaps.csv (default out/mipmaps)");
     cmd->add_option("--repeat", o.repeat, "timed builds of each kind, the median printed (default 9)")->check(CLI::Range(1, 1000));
     return cmd;
