@@ -1,6 +1,8 @@
 #version 100
 // Camera pass: Phong lighting from one light, scaled by the light's visibility. Variants:
-// SHADOW_MAP (with ENC_*, FILTER_*, and BIAS_AUTO with LIGHT_PERSPECTIVE or not; EMULATE_MEDIUMP), IN_SHADOW (planar shadow region: visibility 0),
+// SHADOW_MAP (with ENC_*, FILTER_*, and BIAS_AUTO with LIGHT_PERSPECTIVE or not; EMULATE_MEDIUMP;
+// CASCADES N: N maps in one atlas, the one for the fragment's view depth looked up; AOV_CASCADES:
+// the image tinted by that cascade's colour), IN_SHADOW (planar shadow region: visibility 0),
 // AREA_LOOKUP (Heckbert-Herf: the visibility averaged over light samples, from a target; --post
 // shadow-blur: the visibility AOV blurred, from a target),
 // GOOCH_TEXTURE (Gooch's shadow texture, black casters on white, sampled linearly at GOOCH_TAPS
@@ -68,7 +70,8 @@ uniform vec4 u_depth_map;  // the ray position s = dot(xyz, world) + w: 0 on the
 
 #ifdef SHADOW_MAP
 #include "shadow.glsl"
-#ifdef GBUFFER_READ
+#if defined(CASCADES)
+#elif defined(GBUFFER_READ)
 uniform mat4 u_light_matrix;
 #else
 varying vec4 v_shadow_coord;
@@ -163,7 +166,9 @@ void main() {
 #else
     vec3 l = normalize(u_light.xyz - world * u_light.w);
     float visibility = 1.0;
-#if defined(SHADOW_MAP) && defined(GBUFFER_READ)
+#if defined(SHADOW_MAP) && defined(CASCADES)
+    if (receives) visibility = shadowCascades(world, n);
+#elif defined(SHADOW_MAP) && defined(GBUFFER_READ)
     if (receives) visibility = shadowVisibility(u_light_matrix * vec4(world, 1.0), n);
 #elif defined(SHADOW_MAP)
     visibility = shadowVisibility(v_shadow_coord, n);
@@ -215,6 +220,11 @@ void main() {
 #endif
 #ifdef REFLECTED
     gl_FragColor = vec4(gl_FragColor.rgb * u_reflectivity, u_reflectivity);
+#endif
+#if defined(AOV_CASCADES) && defined(CASCADES)
+    gl_FragColor.rgb = mix(gl_FragColor.rgb, g_cascade_tint, 0.5);
+#elif defined(AOV_CASCADES)
+    gl_FragColor.rgb = mix(gl_FragColor.rgb, vec3(1.0, 0.2, 0.2), 0.5);
 #endif
 #endif
 #endif

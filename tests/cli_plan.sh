@@ -39,6 +39,22 @@ check gltf --scene "$data/sphere_over_plane.gltf" --size 64x64 --filter pcf4x4 -
 check volumes --technique volumes --size 64x64
 check volumes-eye-in-shadow --technique volumes --eye in-shadow --show-volumes on --size 64x64
 check volumes-count --technique volumes --aov stencil-count --volume-method zfail --size 64x64
+check cascades --scene "$data/terrain_km.gltf" --cascades 4 --map-size 256 --size 64x64
+check cascades-aov --scene "$data/terrain_km.gltf" --cascades auto --aov cascades --map-size 256 --size 64x64
+# Cascades: one pass per tile of one atlas, auto's reason printed; a point light gets one map and a note.
+"$penumbra" plan --scene "$data/terrain_km.gltf" --cascades auto --map-size 256 --size 64x64 --json > auto.json &&
+python3 -c '
+import json
+p = json.load(open("auto.json"))
+c = p["cascades"]
+assert c["why"].startswith("auto: 4 cascades: the receivers in view span view depths"), c["why"]
+assert [q["name"] for q in p["passes"]][:4] == ["shadow-map cascade %d" % i for i in range(4)]
+assert [l["tile"] for l in c["list"]] == [[0, 0], [256, 0], [0, 256], [256, 256]], c["list"]
+m = [r for r in p["resources"] if r["name"] == "shadow-map"][0]
+assert (m["width"], m["height"]) == (512, 512), m' && echo "ok cascades auto: 4 tiles, the reason" \
+  || { echo "FAIL cascades auto"; fail=1; }
+"$penumbra" plan --cascades 4 --size 64x64 | grep -q "note: --cascades 4: one map instead, cascades need a directional light" \
+  && echo "ok cascades point light: one map, a note" || { echo "FAIL cascades with the course's point light"; fail=1; }
 
 # Shadow volumes: the plan says what they cost and which method each caster got.
 "$penumbra" plan --technique volumes --eye in-shadow --size 64x64 --json > volumes.json &&

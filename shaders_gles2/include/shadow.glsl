@@ -7,9 +7,18 @@
 uniform sampler2D u_shadow_map;
 uniform vec2 u_texmapscale;  // 1/width, 1/height of the shadow map: one texel in texture space
 uniform float u_bias;        // the fragment is in shadow if z_l > depth + bias (auto: the constant part)
-#if defined(BIAS_AUTO) || defined(FILTER_PCSS)
+#ifdef CASCADES
+// Cascaded shadow maps: CASCADES maps, tiles of one atlas. A lookup works in the coordinates of
+// the cascade's own map, [0, 1] (u_texmapscale: one texel of a tile), and reads the atlas through
+// shadowDepth, clamped to the tile's texel centres (each tile acts as a map with clamped edges).
+// The cascade's tile and its u_bias_slope are copied here before its lookup (cascadeLookup).
+vec4 g_cascade_tile;   // xy: the tile's lower-left corner in the atlas, zw: its size (texture units)
+vec4 g_cascade_slope;
+#define SHADOW_SLOPE g_cascade_slope
+#elif defined(BIAS_AUTO) || defined(FILTER_PCSS)
 uniform vec4 u_bias_slope;      // x, y: tan of the half-angles (perspective) or half-extents
                                 // (orthographic); z, w: the light's near and far
+#define SHADOW_SLOPE u_bias_slope
 #endif
 
 #ifdef BIAS_AUTO
@@ -29,11 +38,11 @@ uniform vec2 u_bias_center;     // tan at the middle of the window (an asymmetri
 // reach: how far the kernel reaches, in texels per axis.
 float shadowBiasReach(vec3 normal, vec3 c, float reach) {
     vec3 nl = u_light_rotation * normal;
-    float n = u_bias_slope.z;
-    float f = u_bias_slope.w;
-    float across = (abs(nl.x) * u_bias_slope.x + abs(nl.y) * u_bias_slope.y) * u_bias_kernel.x * reach;
+    float n = SHADOW_SLOPE.z;
+    float f = SHADOW_SLOPE.w;
+    float across = (abs(nl.x) * SHADOW_SLOPE.x + abs(nl.y) * SHADOW_SLOPE.y) * u_bias_kernel.x * reach;
 #ifdef LIGHT_PERSPECTIVE
-    vec3 ray = vec3((2.0 * c.x - 1.0) * u_bias_slope.x + u_bias_center.x, (2.0 * c.y - 1.0) * u_bias_slope.y + u_bias_center.y, -1.0);
+    vec3 ray = vec3((2.0 * c.x - 1.0) * SHADOW_SLOPE.x + u_bias_center.x, (2.0 * c.y - 1.0) * SHADOW_SLOPE.y + u_bias_center.y, -1.0);
     float facing = max(abs(dot(nl, ray)), 0.05 * length(ray));
     float zEye = 2.0 * n * f / (f + n - (2.0 * c.z - 1.0) * (f - n));
     float dz = zEye * across / facing;
@@ -50,6 +59,9 @@ float shadowBias(vec3 normal, vec3 c) { return u_bias; }
 #endif
 
 float shadowDepth(vec2 uv) {
+#ifdef CASCADES
+    uv = g_cascade_tile.xy + clamp(uv, 0.5 * u_texmapscale, 1.0 - 0.5 * u_texmapscale) * g_cascade_tile.zw;
+#endif
 #ifdef ENC_RGBA
     return unpackDepth(texture2D(u_shadow_map, uv));
 #else
@@ -108,8 +120,8 @@ uniform vec2 u_pcss;  // x: the light's size (perspective: radius in world units
 
 // Depth along the light's axis (eye space) of a window depth.
 float lightEyeDepth(float z) {
-    float n = u_bias_slope.z;
-    float f = u_bias_slope.w;
+    float n = SHADOW_SLOPE.z;
+    float f = SHADOW_SLOPE.w;
 #ifdef LIGHT_PERSPECTIVE
     return 2.0 * n * f / (f + n - (2.0 * z - 1.0) * (f - n));
 #else
@@ -125,7 +137,7 @@ vec2 coneTexels(float zr, float d) {
 #else
     float k = u_pcss.x * max(zr - d, 0.0);
 #endif
-    vec2 r = k / (2.0 * u_bias_slope.xy) / u_texmapscale;
+    vec2 r = k / (2.0 * SHADOW_SLOPE.xy) / u_texmapscale;
     return min(r, vec2(u_pcss.y));
 }
 
@@ -142,7 +154,7 @@ float shadowVisibility(vec4 shadowCoord, vec3 normal) {
     vec2 start = vec2(cos(angle), sin(angle));
 
     // (1) Blockers: taps nearer the light than the receiver (by the bias of a small kernel).
-    vec2 search = coneTexels(zr, u_bias_slope.z);
+    vec2 search = coneTexels(zr, SHADOW_SLOPE.z);
     float bias = shadowBias(normal, c);
     float blockers = 0.0;
     float sum = 0.0;
@@ -169,5 +181,64 @@ float shadowVisibility(vec4 shadowCoord, vec3 normal) {
         dir = turnGolden(dir);
     }
     return lit / float(PCSS_FILTER_TAPS);
+}
+#endif
+
+#ifdef CASCADES
+// Every cascade looks along the light with the same axes: one matrix takes a world point into the
+// light's eye space, and each cascade's map is that scaled and offset per axis (its orthographic
+// window and depth range, then clip to texture space).
+uniform mat4 u_cascade_light;             // world -> the light's eye space
+uniform vec3 u_cascade_scale[CASCADES];   // light eye space -> the cascade's own map, (u, v, z) in [0, 1] inside
+uniform vec3 u_cascade_offset[CASCADES];
+uniform vec4 u_cascade_tile[CASCADES];    // its tile (g_cascade_tile)
+uniform vec4 u_cascade_slope[CASCADES];   // its half-extents, near and far (u_bias_slope)
+uniform vec4 u_cascade_end;    // each cascade's far end in camera view depth (x: the first's)
+uniform vec4 u_cascade_band;   // the band before each far end blended into the next cascade (0: none)
+uniform vec4 u_cascade_depth;  // camera view depth of a world point p: dot(xyz, p) + w
+vec3 g_cascade_tint;           // --aov cascades: the colour of the cascade(s) used
+
+vec3 cascadeTint(int k) {
+    if (k == 0) return vec3(1.0, 0.2, 0.2);
+    if (k == 1) return vec3(0.2, 0.9, 0.2);
+    if (k == 2) return vec3(0.25, 0.4, 1.0);
+    return vec3(1.0, 0.9, 0.1);
+}
+
+// Cascade k's visibility. A uniform array is indexed by a loop index only (GLSL ES 1.00,
+// appendix A: fragment shaders need constant-index-expressions).
+float cascadeLookup(int k, vec3 eye, vec3 normal) {
+    vec4 coord = vec4(0.0, 0.0, 0.0, -1.0);
+    for (int i = 0; i < CASCADES; ++i) {
+        if (i == k) {
+            coord = vec4(eye * u_cascade_scale[i] + u_cascade_offset[i], 1.0);
+            g_cascade_tile = u_cascade_tile[i];
+            g_cascade_slope = u_cascade_slope[i];
+        }
+    }
+    return shadowVisibility(coord, normal);
+}
+
+// The first cascade whose slice reaches the point's view depth (the last beyond them all); in the
+// band before its far end, blended linearly into the next one's.
+float shadowCascades(vec3 world, vec3 normal) {
+    float depth = dot(u_cascade_depth.xyz, world) + u_cascade_depth.w;
+    int k = CASCADES - 1;
+    float t = 0.0;
+    for (int i = CASCADES - 1; i >= 0; --i) {
+        if (depth <= u_cascade_end[i]) {
+            k = i;
+            float band = u_cascade_band[i];
+            t = band > 0.0 ? clamp((depth - u_cascade_end[i]) / band + 1.0, 0.0, 1.0) : 0.0;
+        }
+    }
+    g_cascade_tint = cascadeTint(k);
+    vec3 eye = (u_cascade_light * vec4(world, 1.0)).xyz;
+    float visibility = cascadeLookup(k, eye, normal);
+    if (t > 0.0) {
+        visibility = mix(visibility, cascadeLookup(k + 1, eye, normal), t);
+        g_cascade_tint = mix(g_cascade_tint, cascadeTint(k + 1), t);
+    }
+    return visibility;
 }
 #endif

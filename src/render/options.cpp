@@ -287,6 +287,39 @@ std::vector<Option<Options>> make_table() {
     add(map_size, [](Options& o, std::string_view v) { o.settings.map_size = int_of(v); },
         [](const Options& o) { return std::to_string(o.settings.map_size); });
 
+    OptionInfo cascades = make_option_info("cascades", P::Technique, T::Choice,
+                         "cascaded shadow maps for a directional light: the camera's depth range split into N maps "
+                         "of --map-size each, side by side in one atlas (near slices get the finer texels); auto = "
+                         "from the depth range the camera sees (one map per factor of 8); 1 = one map",
+                         "Cascades", {{"1", "1 (one map)"}, {"2", "2"}, {"3", "3"}, {"4", "4"}, {"auto", "auto"}});
+    add(cascades, [](Options& o, std::string_view v) { o.settings.cascades = v == "auto" ? 0 : int_of(v); },
+        [](const Options& o) { return o.settings.cascades == 0 ? std::string("auto") : std::to_string(o.settings.cascades); });
+
+    OptionInfo cascade_split = make_option_info("cascade-split", P::Technique, T::Number,
+                         "--cascades: where the slices end, a blend of logarithmic (1: equal depth ratios) and uniform "
+                         "(0: equal lengths) splits", "Cascade split");
+    cascade_split.min = 0.0;
+    cascade_split.max = 1.0;
+    cascade_split.step = 0.05;
+    add(cascade_split, [](Options& o, std::string_view v) { o.settings.cascade_split = static_cast<float>(number_of(v)); },
+        [](const Options& o) { return shortest_float(o.settings.cascade_split); });
+
+    OptionInfo cascade_snap = make_option_info("cascade-snap", P::Technique, T::Choice,
+                         "--cascades: each cascade's window moved by whole texels only, so the shadow's edges do not "
+                         "shimmer as the camera moves (off: shown for contrast)", "Snap to texels",
+                         {{"on", "on"}, {"off", "off"}});
+    add(cascade_snap, [](Options& o, std::string_view v) { o.settings.cascade_snap = v == "on"; },
+        [](const Options& o) { return std::string(o.settings.cascade_snap ? "on" : "off"); });
+
+    OptionInfo cascade_blend = make_option_info("cascade-blend", P::Technique, T::Number,
+                         "--cascades: the share of each slice, at its far end, where its shadow fades into the next "
+                         "cascade's (0: a hard seam)", "Cascade blend");
+    cascade_blend.min = 0.0;
+    cascade_blend.max = 0.5;
+    cascade_blend.step = 0.05;
+    add(cascade_blend, [](Options& o, std::string_view v) { o.settings.cascade_blend = static_cast<float>(number_of(v)); },
+        [](const Options& o) { return shortest_float(o.settings.cascade_blend); });
+
     OptionInfo bias = make_option_info("bias", P::Technique, T::NumberOrWord,
                     "depth offset: 'auto' (the encoding's quantum + the receiver's slope), 'sheet' (the exercise sheet's constant: r8 0.005, rgba and depthtex 0.0015) or a number",
                     "Bias", {{"auto", "auto: from the packing's precision and the surface's slope"}, {"sheet", "the sheet's constant"}});
@@ -527,7 +560,8 @@ std::vector<Option<Options>> make_table() {
                     {"gbuffer-color", "G-buffer: colour (--shading deferred)"},
                     {"gbuffer-normal", "G-buffer: normal"},
                     {"gbuffer-position", "G-buffer: position"},
-                    {"gbuffer-depth", "G-buffer: depth"}});
+                    {"gbuffer-depth", "G-buffer: depth"},
+                    {"cascades", "the cascade of each pixel (--cascades), tinted"}});
     add(aov, [](Options& o, std::string_view v) { o.settings.aov = enum_of(v, kAllAovs); },
         [](const Options& o) { return std::string(to_string(o.settings.aov)); });
 
@@ -547,7 +581,9 @@ std::vector<Option<Options>> make_table() {
 
     OptionInfo out = make_option_info("out", P::Job, T::Text, "FILE.png (top row first); none: write nothing", "Output");
     out.may_be_empty = true;
-    add(out, [](Options& o, std::string_view v) { o.job.out = std::string(v); }, [](const Options& o) { return o.job.out; });
+    // "none" is stored as no file, as the help says ("" reads back the same).
+    add(out, [](Options& o, std::string_view v) { o.job.out = v == "none" ? std::string() : std::string(v); },
+        [](const Options& o) { return o.job.out; });
 
     OptionInfo frames = make_option_info("frames", P::Job, T::Integer, "render N frames, t advancing 1/60 s, and print the median ms/frame",
                       "Frames");

@@ -586,6 +586,8 @@ std::string check(const scene::Scene& scene, const Settings& s, const gl::Caps& 
         return "--aov light-depth: needs --technique shadowmap";
     if (s.aov == Aov::StencilCount && s.technique != Technique::Volumes)
         return "--aov stencil-count: needs --technique volumes";
+    if (s.aov == Aov::Cascades && s.technique != Technique::ShadowMap)
+        return "--aov cascades: needs --technique shadowmap";
     Planning p(scene, s, caps, in, nullptr);
     if (std::string why = shading_problem(p.ctx); !why.empty()) return why;
     if (std::string why = p.module.check(p.ctx); !why.empty()) return why;

@@ -25,6 +25,7 @@
 #include "render/settings.h"
 #include "render/variants.h"
 #include "scene/scene.h"
+#include "shadow/cascades.h"
 #include "shadow/light_frustum.h"
 
 namespace penumbra::render {
@@ -285,9 +286,13 @@ struct FramePlan {
     std::vector<Pass> passes;
     std::vector<std::string> notes;  // e.g. a clamped map size
     CameraView camera;
-    std::optional<shadow::LightFrustum> light_frustum;  // when a shadow map is drawn or read
+    std::optional<shadow::LightFrustum> light_frustum;  // when a shadow map is drawn or read (cascades: the first's)
     // With it: the share of the map (0..1) covered by the receivers the camera sees.
     std::optional<float> texel_use;
+    // --cascades: the cascades of the shadow map, tiles of its atlas (empty: one map), and how
+    // their count was chosen ("--cascades 4", or auto's reason).
+    std::vector<shadow::Cascade> cascades;
+    std::string cascades_why;
     std::optional<VolumeStats> volumes;  // with technique volumes
     std::optional<AreaStats> area;       // with --area-samples > 1 and a light with a radius
     // The frame's stencil uses with their bits (empty: the frame uses no stencil) out of

@@ -183,6 +183,18 @@ std::string FramePlan::to_text() const {
                       static_cast<double>(light_frustum->zfar), 100.0 * static_cast<double>(texel_use.value_or(0.0f)));
         o << buf;
     }
+    if (!cascades_why.empty()) o << "cascades: " << cascades_why << "\n";
+    for (size_t i = 0; i < cascades.size(); ++i) {
+        const shadow::Cascade& c = cascades[i];
+        char line[320];
+        std::snprintf(line, sizeof line,
+                      "  cascade %zu: view depth %.4g..%.4g (blend band %.3g), sphere radius %.4g, texel %.4g "
+                      "(%.3g texels per unit), tile at (%d, %d), %zu caster(s)\n",
+                      i, static_cast<double>(c.begin), static_cast<double>(c.end), static_cast<double>(c.band),
+                      static_cast<double>(c.radius), static_cast<double>(c.texel), 1.0 / static_cast<double>(c.texel),
+                      c.tile_x, c.tile_y, c.casters.size());
+        o << line;
+    }
     if (volumes) {
         std::snprintf(buf, sizeof buf,
                       "shadow volumes: %d caster(s) depth-pass, %d depth-fail; %d silhouette edge(s), %d triangle(s), "
@@ -267,6 +279,17 @@ std::string FramePlan::to_json() const {
              ",\"view_proj\":" + json_floats(light_frustum->view_proj()) + "}";
     else
         j += ",\"light_frustum\":null";
+    j += ",\"cascades\":{\"why\":" + json_quote(cascades_why) + ",\"list\":[";
+    for (size_t i = 0; i < cascades.size(); ++i) {
+        const shadow::Cascade& c = cascades[i];
+        j += std::string(i ? "," : "") + "{\"begin\":" + json_number(static_cast<double>(c.begin)) +
+             ",\"end\":" + json_number(static_cast<double>(c.end)) + ",\"band\":" + json_number(static_cast<double>(c.band)) +
+             ",\"radius\":" + json_number(static_cast<double>(c.radius)) +
+             ",\"texel\":" + json_number(static_cast<double>(c.texel)) + ",\"tile\":[" + std::to_string(c.tile_x) + "," +
+             std::to_string(c.tile_y) + "],\"casters\":" + std::to_string(c.casters.size()) +
+             ",\"view_proj\":" + json_floats(c.frustum.view_proj()) + "}";
+    }
+    j += "]}";
     if (volumes)
         j += ",\"volumes\":{\"zpass_casters\":" + std::to_string(volumes->zpass_casters) +
              ",\"zfail_casters\":" + std::to_string(volumes->zfail_casters) +

@@ -30,7 +30,8 @@ enum class Aov {
     GbufferColor,     // the base colour
     GbufferNormal,    // the world normal, n * 0.5 + 0.5
     GbufferPosition,  // the world position, over the shadowed objects' bounds (0..1 per axis)
-    GbufferDepth      // the camera's linear depth, near white, far black
+    GbufferDepth,     // the camera's linear depth, near white, far black
+    Cascades          // --cascades: the image tinted by the cascade that shades each pixel (red, green, blue, yellow)
 };
 // --shading: how the camera's image is lit. Forward draws every object once per batch of lights;
 // deferred draws the objects once into a G-buffer (colour, normal, depth) and then lights its
@@ -87,7 +88,8 @@ std::string_view to_string(PostKind k);
 // --outline-width: pixels on the screen, whatever the object's depth.
 inline constexpr float kMinOutlineWidth = 0.5f, kMaxOutlineWidth = 32.0f;
 inline constexpr Aov kAllAovs[] = {Aov::Color,        Aov::Visibility,    Aov::LightDepth,      Aov::StencilCount,
-                                   Aov::GbufferColor, Aov::GbufferNormal, Aov::GbufferPosition, Aov::GbufferDepth};
+                                   Aov::GbufferColor, Aov::GbufferNormal, Aov::GbufferPosition, Aov::GbufferDepth,
+                                   Aov::Cascades};
 // The AOVs that show the G-buffer (--shading deferred).
 inline bool gbuffer_aov(Aov a) {
     return a == Aov::GbufferColor || a == Aov::GbufferNormal || a == Aov::GbufferPosition || a == Aov::GbufferDepth;
@@ -112,7 +114,13 @@ struct Settings {
     shadow::Filter filter = shadow::Filter::Hard;
     // PCF 4x4's corners-first early exit, or every tap (the course's kernel); shadow/pcf.h.
     shadow::PcfKernel pcf_kernel = shadow::PcfKernel::EarlyExit;
-    int map_size = 1024;
+    int map_size = 1024;  // with cascades: each cascade's map (the atlas holds them side by side)
+    // --cascades: the camera's depth range split into this many shadow maps, 1..4 (1: one map);
+    // 0 = auto (shadow::auto_cascade_count: from the scene, the camera and the light).
+    int cascades = 1;
+    float cascade_split = 0.9f;  // --cascade-split: 0 uniform splits, 1 logarithmic
+    bool cascade_snap = true;    // --cascade-snap: each cascade's window on whole texels (no shimmer)
+    float cascade_blend = 0.1f;  // --cascade-blend: the share of a slice blended into the next, 0..0.5
     std::optional<float> bias;  // a constant offset; absent (and not auto): the sheet's (shadow::sheet_bias)
     bool bias_auto = true;      // --bias auto (the default): the encoding's quantum plus a receiver slope term
     MapFaces map_faces = MapFaces::Auto;

@@ -4,6 +4,7 @@
 
 #include "render/post.h"
 #include "render/settings.h"
+#include "shadow/cascades.h"
 #include "shadow/gooch.h"
 #include "shadow/pcf.h"
 
@@ -91,6 +92,7 @@ Variant lit_variant(const LitFeatures& f) {
         if (f.bias_auto) v.defines.emplace_back("BIAS_AUTO");
         if (f.light_perspective && (f.bias_auto || pcss)) v.defines.emplace_back("LIGHT_PERSPECTIVE");
         if (f.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
+        if (f.cascades > 1) v.defines.push_back("CASCADES " + std::to_string(f.cascades));
     } else if (f.in_shadow) {
         v.defines = {"IN_SHADOW"};
     } else if (f.area_lookup) {
@@ -104,6 +106,7 @@ Variant lit_variant(const LitFeatures& f) {
     if (f.textured) v.defines.emplace_back("TEXTURED");
     if (f.spot) v.defines.emplace_back("LIGHT_SPOT");
     if (f.visibility_aov) v.defines.emplace_back("AOV_VISIBILITY");
+    if (f.cascades_aov) v.defines.emplace_back("AOV_CASCADES");
     if (f.alpha_test) v.defines.emplace_back("ALPHA_TEST");
     if (f.alpha_blend) v.defines.emplace_back("ALPHA_BLEND");
     if (f.double_sided) v.defines.emplace_back("DOUBLE_SIDED");
@@ -374,6 +377,26 @@ std::vector<Variant> all_variants() {
     out.push_back(lit_variant(square));
     for (Aov a : {Aov::GbufferColor, Aov::GbufferNormal, Aov::GbufferPosition, Aov::GbufferDepth})
         out.push_back(gbuffer_view_variant(a));
+    // --cascades 2..4: each encoding with the hard, PCF 4x4 and PCSS lookups, auto bias, either
+    // precision; plain, textured, the visibility and cascades AOVs, and deferred's lighting pass.
+    for (int n = 2; n <= shadow::kMaxCascades; ++n)
+        for (auto e : shadow::kAllEncodings)
+            for (auto f : {shadow::Filter::Hard, shadow::Filter::PCF4x4, shadow::Filter::PCSS})
+                for (bool mediump : {false, true})
+                    for (int bits = 0; bits < 5; ++bits) {
+                        LitFeatures c;
+                        c.shadow_map = c.bias_auto = true;
+                        c.encoding = e;
+                        c.filter = f;
+                        c.pcf_kernel = shadow::PcfKernel::EarlyExit;
+                        c.mediump = mediump;
+                        c.cascades = n;
+                        c.textured = bits == 1;
+                        c.visibility_aov = bits == 2;
+                        c.cascades_aov = bits == 3;
+                        if (bits == 4) c.gbuffer = Gbuffer::Read;
+                        out.push_back(lit_variant(c));
+                    }
     // PCSS's tap counts, each once (the loops' bounds).
     for (int n : {1, 8, 32, 64}) {
         LitFeatures p;

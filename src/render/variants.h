@@ -49,6 +49,8 @@ struct LitFeatures {
     bool bias_auto = false;          // receiver slope bias (with shadow_map)
     bool light_perspective = false;  // the light's projection, for bias_auto's depth slope
     bool mediump = false;            // emulate fp16 along the depth path
+    int cascades = 0;                // with shadow_map, more than 1: that many cascades in one atlas
+    bool cascades_aov = false;       // --aov cascades: the colour tinted by the cascade used
     int pcss_search = 16, pcss_taps = 16;  // filter PCSS: taps of the blocker search and the filter
     bool area_lookup = false;        // Heckbert-Herf: visibility from the accumulated light samples
     // Gooch: which terms the pass writes (planes: the ground ambient-only first, then the direct

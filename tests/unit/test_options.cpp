@@ -140,7 +140,7 @@ TEST(Options, BadValuesAreNamedAndLeaveTheOptionsAlone) {
         {"frames", "0", "--frames: must lie in [1, 10000], got '0'"},
         {"frames", "10001", "--frames: must lie in [1, 10000], got '10001'"},
         {"aov", "normal", "--aov: unknown value 'normal' (color, visibility, light-depth, stencil-count, gbuffer-color, gbuffer-normal, "
-         "gbuffer-position, gbuffer-depth)"},
+         "gbuffer-position, gbuffer-depth, cascades)"},
         {"technique", "volume", "--technique: unknown value 'volume' (shadowmap, planar, volumes, gooch, none)"},
         {"volume-method", "zmid", "--volume-method: unknown value 'zmid' (auto, zpass, zfail)"},
         {"show-volumes", "yes", "--show-volumes: unknown value 'yes' (off, on)"},
@@ -163,12 +163,12 @@ TEST(Options, ArgsLabelTheResult) {
     o.settings.encoding = Encoding::R8;
     EXPECT_EQ(to_args(o),
               "--scene teapot --time 0 --size 512x512 --encoding r8 --filter hard --pcf-kernel early-exit "
-              "--map-size 1024 --bias auto --map-faces auto --light-fit tight --precision highp --volume-method auto "
+              "--map-size 1024 --cascades 1 --cascade-split 0.9 --cascade-snap on --cascade-blend 0.1 --bias auto --map-faces auto --light-fit tight --precision highp --volume-method auto "
               "--show-volumes off --light-radius scene --pcss-search 16 --pcss-taps 16 --area-samples 1 --area-per-frame 0 "
               "--gooch-planes 8 --gooch-method planes --blend-shadows off --effects none --outline-color ff8c00 "
               "--outline-width 3 --reflectivity 0.5 --post none --shading forward --lights 0 --aov color --technique shadowmap --eye scene --frames 1");
     EXPECT_EQ(to_args(o.settings),
-              "--encoding r8 --filter hard --pcf-kernel early-exit --map-size 1024 --bias auto --map-faces auto "
+              "--encoding r8 --filter hard --pcf-kernel early-exit --map-size 1024 --cascades 1 --cascade-split 0.9 --cascade-snap on --cascade-blend 0.1 --bias auto --map-faces auto "
               "--light-fit tight --precision highp --volume-method auto --show-volumes off --light-radius scene "
               "--pcss-search 16 --pcss-taps 16 --area-samples 1 --area-per-frame 0 --gooch-planes 8 --gooch-method planes "
               "--blend-shadows off "
@@ -204,4 +204,14 @@ TEST(Options, TheSharedNumberParsers) {
     EXPECT_EQ(shortest_float(0.003f), "0.003");
 }
 
+}  // namespace
+
+namespace {
+// --out none writes nothing, as its help says: stored as no file.
+TEST(Options, OutNoneWritesNothing) {
+    penumbra::render::Options o;
+    o.job.out = "x.png";
+    EXPECT_EQ(penumbra::render::parse_option(o, "out", "none"), "");
+    EXPECT_EQ(o.job.out, "");
+}
 }  // namespace

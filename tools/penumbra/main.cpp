@@ -58,7 +58,10 @@ std::unique_ptr<platform::Platform> make_context() {
     return p;
 }
 
-int channels_for(render::Aov aov) { return aov == render::Aov::Color || aov == render::Aov::StencilCount ? 3 : 1; }
+// Grey where the image is one value per pixel (visibility, depths), colour elsewhere.
+int channels_for(render::Aov aov) {
+    return aov == render::Aov::Visibility || aov == render::Aov::LightDepth || aov == render::Aov::GbufferDepth ? 1 : 3;
+}
 
 void write_image(render::Renderer& r, const render::Options& o, const std::string& path) {
     const auto px = measure::from_rgba(r.read_image(), o.job.width, o.job.height, channels_for(o.settings.aov));

@@ -74,6 +74,107 @@ shadow::TightFit fit_to_view(const PlanContext& c) {
                : shadow::fit_light_frustum_scene(c.light, b.receivers, b.casters, c.plan.camera.view_proj);
 }
 
+// A pass drawing `casters` (scene objects) into a map from the light: depth in the encoding, each
+// caster's faces as --map-faces says, cut-outs alpha-tested; its target, matrix and detail are the
+// caller's. `cut_outs` counts the alpha-tested casters.
+Pass map_pass(const PlanContext& c, const std::vector<int>& casters, int& cut_outs) {
+    const Settings& s = c.settings;
+    const bool depthtex = s.encoding == shadow::Encoding::DepthTex;
+    Pass p;
+    p.module = "shadowmap";
+    // White is the farthest depth in every encoding: nothing drawn there, nothing shadows.
+    p.clear = Clear{depthtex ? std::nullopt : std::optional<glm::vec4>(kWhite), true, false};
+    p.state.color_write = !depthtex;
+    p.object_uniforms = ObjectUniforms::Mvp;
+    cut_outs = 0;
+    for (int i : casters) {
+        p.draws.push_back(c.mesh_draw(i));
+        // A cut-out (MASK) leaves depth only where its alpha is kept: a leaf-shaped shadow.
+        const AlphaTest alpha = c.caster_alpha(p.draws.back());
+        cut_outs += alpha.on;
+        p.draws.back().variant = depth_variant(s.encoding, c.depth_path, alpha);
+        p.draws.back().cull = map_cull(s.map_faces, c.scene, p.draws.back());
+    }
+    // Grouped by culling (stable: scene order within a group), so the pass changes it at most
+    // twice; the pass's own state is its first group's.
+    std::stable_sort(p.draws.begin(), p.draws.end(), [](const Draw& a, const Draw& b) { return *a.cull < *b.cull; });
+    p.state.cull = p.draws.empty() ? gl::Cull::None : *p.draws.front().cull;
+    for (Draw& dr : p.draws)
+        if (dr.cull == p.state.cull) dr.cull.reset();
+    return p;
+}
+
+// The map's texture: packed colour with a depth buffer, or a depth texture; never interpolated
+// (blending two packed values is meaningless).
+ResourceDesc map_desc(const PlanContext& c, int width, int height) {
+    ResourceDesc d;
+    d.name = c.named(kMap);
+    d.width = width;
+    d.height = height;
+    d.sampling = gl::Sampling::Nearest;
+    d.wrap = gl::Wrap::Clamp;
+    const bool depthtex = c.settings.encoding == shadow::Encoding::DepthTex;
+    d.color = !depthtex;
+    d.depth_texture = depthtex;
+    if (!depthtex) d.depth_buffer = c.caps.depth_format();
+    return d;
+}
+
+// What a map's content depends on beside its matrices and casters: how depth is packed.
+void add_packing(ContentKey& key, const PlanContext& c) {
+    key.add(c.settings.encoding);
+    key.add(c.settings.map_faces);
+    key.add(c.depth_path.mediump);
+    key.add(c.depth_path.pack_floor);
+}
+
+// --cascades: how many this frame has (0 asks auto) and why; c.plan.cascades_why says it.
+int cascade_count(PlanContext& c, const ShadowBounds& b) {
+    const int asked = c.settings.cascades;
+    if (asked == 1) return 1;
+    if (asked == 0) {
+        std::string why;
+        const int n = shadow::auto_cascade_count(c.light, b.receivers, c.plan.camera.view, c.plan.camera.proj, why);
+        c.plan.cascades_why = "auto: " + why;
+        return n;
+    }
+    c.plan.cascades_why = "--cascades " + std::to_string(asked);
+    return asked;
+}
+
+// The cascades' uniforms (shadow.glsl, CASCADES): the light's axes (the same view for every
+// cascade), per cascade the scale and offset from the light's eye space to its own map's [0, 1]
+// coordinates, its tile of the atlas and its extents for the slope bias; the slices' far ends and
+// blend bands; the camera's view depth.
+void add_cascade_uniforms(const PlanContext& c, Binding& b, const ResourceDesc& map) {
+    const auto& cascades = c.plan.cascades;
+    const float w = static_cast<float>(map.width), h = static_cast<float>(map.height);
+    const float tile = w / 2.0f;
+    glm::vec4 ends(0.0f), bands(0.0f);
+    for (size_t i = 0; i < cascades.size(); ++i) {
+        const shadow::Cascade& k = cascades[i];
+        const std::string at = "[" + std::to_string(i) + "]";
+        // Texture space = clip / 2 + 1/2, and an orthographic clip space is eye space scaled and
+        // offset per axis: P[i][i] and P[3][i].
+        const glm::mat4& P = k.frustum.proj;
+        b.uniforms.push_back({"u_cascade_scale" + at, 0.5f * glm::vec3(P[0][0], P[1][1], P[2][2])});
+        b.uniforms.push_back({"u_cascade_offset" + at, 0.5f * glm::vec3(P[3][0], P[3][1], P[3][2]) + glm::vec3(0.5f)});
+        b.uniforms.push_back({"u_cascade_tile" + at, glm::vec4(static_cast<float>(k.tile_x) / w,
+                                                               static_cast<float>(k.tile_y) / h, tile / w, tile / h)});
+        b.uniforms.push_back({"u_cascade_slope" + at, glm::vec4(1.0f / k.frustum.proj[0][0], 1.0f / k.frustum.proj[1][1],
+                                                                k.frustum.znear, k.frustum.zfar)});
+        ends[static_cast<int>(i)] = k.end;
+        bands[static_cast<int>(i)] = k.band;
+    }
+    // Beyond the last cascade: the last's end (the lookup there says lit outside its window).
+    for (size_t i = cascades.size(); i < 4; ++i) ends[static_cast<int>(i)] = cascades.back().end;
+    b.uniforms.push_back({"u_cascade_light", cascades.front().frustum.view});
+    b.uniforms.push_back({"u_cascade_end", ends});
+    b.uniforms.push_back({"u_cascade_band", bands});
+    const glm::mat4& v = c.plan.camera.view;
+    b.uniforms.push_back({"u_cascade_depth", -glm::vec4(v[0][2], v[1][2], v[2][2], v[3][2])});
+}
+
 class ShadowMapModule : public Module {
 public:
     std::string_view name() const override { return "shadowmap"; }
@@ -104,6 +205,7 @@ public:
                                    ", the smallest map that still resolves a shadow");
             size = kMinMap;
         }
+        if (cascaded(c, size)) return;
         // The light's frustum around the receivers the camera sees and the casters that can
         // shadow them; only those casters go into the map.
         const shadow::TightFit fit = fit_to_view(c);
@@ -113,58 +215,89 @@ public:
         std::vector<int> casters;
         for (int k : fit.casters) casters.push_back(c.casters[static_cast<size_t>(k)]);
 
-        ResourceDesc d;
-        d.name = c.named(kMap);
-        d.width = d.height = size;
-        // Packed depths must never be interpolated: blending two packed values is meaningless.
-        d.sampling = gl::Sampling::Nearest;
-        d.wrap = gl::Wrap::Clamp;
-        const bool depthtex = s.encoding == shadow::Encoding::DepthTex;
-        d.color = !depthtex;
-        d.depth_texture = depthtex;
-        if (!depthtex) d.depth_buffer = c.caps.depth_format();
-
         // The map depends on the light's matrix, the casters and how depth is packed.
         ContentKey key;
         key.add(f.view_proj());
         for (int i : casters) key.add_placement(c.scene, i);
-        key.add(s.encoding);
-        key.add(s.map_faces);
-        key.add(c.depth_path.mediump);
-        key.add(c.depth_path.pack_floor);
-        const int r = c.add_resource(d, key.str(), "the depth seen from the light");
+        add_packing(key, c);
+        const int r = c.add_resource(map_desc(c, size, size), key.str(), "the depth seen from the light");
 
-        Pass p;
-        p.name = c.named(kMap);
-        p.module = "shadowmap";
-        p.target = {r, size, size, 0, 0, false};
-        // White is the farthest depth in every encoding: nothing drawn there, nothing shadows.
-        p.clear = Clear{depthtex ? std::nullopt : std::optional<glm::vec4>(kWhite), true, false};
-        p.state.color_write = !depthtex;
-        p.object_uniforms = ObjectUniforms::Mvp;
-        p.view_proj = f.view_proj();
         int cut_outs = 0;
-        for (int i : casters) {
-            p.draws.push_back(c.mesh_draw(i));
-            // A cut-out (MASK) leaves depth only where its alpha is kept: a leaf-shaped shadow.
-            const AlphaTest alpha = c.caster_alpha(p.draws.back());
-            cut_outs += alpha.on;
-            p.draws.back().variant = depth_variant(s.encoding, c.depth_path, alpha);
-            p.draws.back().cull = map_cull(s.map_faces, c.scene, p.draws.back());
-        }
-        // Grouped by culling (stable: scene order within a group), so the pass changes it at most
-        // twice; the pass's own state is its first group's.
-        std::stable_sort(p.draws.begin(), p.draws.end(),
-                         [](const Draw& a, const Draw& b) { return *a.cull < *b.cull; });
-        p.state.cull = p.draws.empty() ? gl::Cull::None : *p.draws.front().cull;
-        for (Draw& dr : p.draws)
-            if (dr.cull == p.state.cull) dr.cull.reset();
+        Pass p = map_pass(c, casters, cut_outs);
+        p.name = c.named(kMap);
+        p.target = {r, size, size, 0, 0, false};
+        p.view_proj = f.view_proj();
         p.detail = std::to_string(size) + "x" + std::to_string(size) + " " + std::string(shadow::to_string(s.encoding)) +
                    ", " + (f.perspective ? "perspective" : "orthographic") + " light, " +
                    caster_count(casters.size(), c.casters.size()) + ", faces " + faces_summary(p) + ", texel use " +
                    percent(fit.texel_use) + (fit.tight ? "" : ", fitted around the whole scene") +
                    (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
         c.add_pass(std::move(p));
+    }
+
+    // --cascades N > 1 with a directional light: N maps, tiles of one atlas (2x1 or 2x2 tiles of
+    // `size`), one pass each into its tile. false: one map (the count is 1, or the cascades
+    // cannot be made here and a note says why).
+    bool cascaded(PlanContext& c, int& size) const {
+        const Settings& s = c.settings;
+        const ShadowBounds b = shadow_bounds(c.scene, s.blend_shadows);
+        const int n = cascade_count(c, b);
+        if (n <= 1) return false;
+        int columns = 1, rows = 1;
+        shadow::atlas_layout(n, columns, rows);
+        const int max = c.caps.max_target_size();
+        if (size * columns > max) {
+            c.plan.notes.push_back("--map-size " + std::to_string(size) + " with " + std::to_string(n) +
+                                   " cascades: each map cut to " + std::to_string(max / columns) +
+                                   " so the atlas fits this context's maximum of " + std::to_string(max));
+            size = max / columns;
+        }
+        shadow::CascadeOptions o;
+        o.count = n;
+        o.split = s.cascade_split;
+        o.snap = s.cascade_snap;
+        o.blend = s.cascade_blend;
+        o.tile = size;
+        std::string why;
+        shadow::CascadeFit fit =
+            shadow::fit_cascades(c.light, b.receivers, b.casters, c.plan.camera.view, c.plan.camera.proj, o, &why);
+        if (fit.cascades.empty()) {
+            c.plan.notes.push_back(c.plan.cascades_why + ": one map instead, " + why);
+            c.plan.cascades_why += " -> one map (" + why + ")";
+            return false;
+        }
+        c.plan.light_frustum = fit.cascades.front().frustum;
+        c.plan.texel_use = shadow::texel_use(fit.cascades.front().frustum, fit.visible);
+
+        ContentKey key;
+        for (const shadow::Cascade& k : fit.cascades) {
+            key.add(k.frustum.view_proj());
+            for (int i : k.casters) key.add_placement(c.scene, c.casters[static_cast<size_t>(i)]);
+        }
+        add_packing(key, c);
+        const int r = c.add_resource(map_desc(c, fit.atlas_width, fit.atlas_height), key.str(),
+                                     "the depth seen from the light, " + std::to_string(n) + " cascades side by side");
+        for (size_t i = 0; i < fit.cascades.size(); ++i) {
+            const shadow::Cascade& k = fit.cascades[i];
+            std::vector<int> casters;
+            for (int j : k.casters) casters.push_back(c.casters[static_cast<size_t>(j)]);
+            int cut_outs = 0;
+            Pass p = map_pass(c, casters, cut_outs);
+            p.name = c.named(kMap) + " cascade " + std::to_string(i);
+            p.target = {r, size, size, k.tile_x, k.tile_y, true};
+            p.view_proj = k.frustum.view_proj();
+            char depths[96];
+            std::snprintf(depths, sizeof depths, "view depth %.3g..%.3g, texel %.3g", static_cast<double>(k.begin),
+                          static_cast<double>(k.end), static_cast<double>(k.texel));
+            p.detail = std::to_string(size) + "x" + std::to_string(size) + " tile at (" + std::to_string(k.tile_x) +
+                       ", " + std::to_string(k.tile_y) + ") " + std::string(shadow::to_string(s.encoding)) + ", " +
+                       depths + ", " + caster_count(casters.size(), c.casters.size()) + ", faces " + faces_summary(p) +
+                       (s.cascade_snap ? ", snapped" : ", not snapped") +
+                       (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
+            c.add_pass(std::move(p));
+        }
+        c.plan.cascades = std::move(fit.cascades);
+        return true;
     }
 
     bool own_view(PlanContext& c) const override {
@@ -201,15 +334,17 @@ public:
         }
         const Settings& s = c.settings;
         const shadow::LightFrustum& f = *c.plan.light_frustum;
-        const float texel = 1.0f / static_cast<float>(c.plan.resources[static_cast<size_t>(r)].desc.width);
+        const auto& cascades = c.plan.cascades;
+        const ResourceDesc& map = c.plan.resources[static_cast<size_t>(r)].desc;
+        // One texel of the map, or of a cascade's tile (its lookups work in the tile's coordinates).
+        const float texel = 1.0f / static_cast<float>(cascades.empty() ? map.width : map.width / 2);
         Binding b{"shadow lookup",
-                  {{"u_shadow_map", kShadowUnit},
-                   {"u_light_matrix", shadow::clip_to_texture() * f.view_proj()},
-                   {"u_texmapscale", glm::vec2(texel, texel)},
-                   {"u_bias", s.effective_bias()}},
+                  {{"u_shadow_map", kShadowUnit}, {"u_texmapscale", glm::vec2(texel, texel)}, {"u_bias", s.effective_bias()}},
                   {{kShadowUnit, r}}};
+        if (cascades.empty()) b.uniforms.push_back({"u_light_matrix", shadow::clip_to_texture() * f.view_proj()});
+        else add_cascade_uniforms(c, b, map);
         const bool pcss = s.filter == shadow::Filter::PCSS;
-        if (s.bias_auto || pcss)
+        if (cascades.empty() && (s.bias_auto || pcss))
             // 1/P[0][0] and 1/P[1][1]: tan of the half-angles (perspective) or the half-extents
             // (orthographic) of the light's frustum.
             b.uniforms.push_back({"u_bias_slope", glm::vec4(1.0f / f.proj[0][0], 1.0f / f.proj[1][1], f.znear, f.zfar)});
@@ -241,6 +376,8 @@ public:
             lf.mediump = s.precision == shadow::Precision::Mediump;
             lf.pcss_search = s.pcss_search;
             lf.pcss_taps = s.pcss_taps;
+            lf.cascades = static_cast<int>(cascades.size());
+            lf.cascades_aov = s.aov == Aov::Cascades;
             it.bindings |= bit;
         }
         // The kernel is named where it makes a difference (PCF 4x4): "pcf4x4 early-exit", "pcf4x4 full".
@@ -249,6 +386,9 @@ public:
         if (pcss)
             kernel = " (" + std::to_string(s.pcss_search) + " search + " + std::to_string(s.pcss_taps) +
                      " filter taps, light radius " + number(static_cast<double>(c.light.radius)) + ")";
+        if (!cascades.empty())
+            cam.detail += ", " + std::to_string(cascades.size()) + " cascades" +
+                          (s.cascade_blend > 0.0f ? ", blended over " + percent(s.cascade_blend) + " of each slice" : "");
         cam.detail += ", shadow lookup " + std::string(shadow::to_string(s.filter)) + kernel + " " +
                       std::string(shadow::to_string(s.encoding)) + ", bias " +
                       (s.bias_auto ? "auto (" + number(static_cast<double>(s.effective_bias())) + " + slope)"
