@@ -51,6 +51,44 @@ Score score(const std::vector<std::uint8_t>& rendered, const std::vector<std::ui
     return s;
 }
 
+std::vector<BandScore> score_by_band(const std::vector<std::uint8_t>& rendered, const std::vector<std::uint8_t>& truth_lit,
+                                     const std::vector<std::uint8_t>& valid, const std::vector<float>& depth,
+                                     const std::vector<double>& edges) {
+    if (depth.size() != rendered.size()) throw std::invalid_argument("metrics: the depths differ in size from the image");
+    if (edges.size() < 2 || !std::is_sorted(edges.begin(), edges.end()))
+        throw std::invalid_argument("metrics: band edges must be at least two, ascending");
+    std::vector<BandScore> out;
+    for (size_t b = 0; b + 1 < edges.size(); ++b) {
+        std::vector<std::uint8_t> in(valid.size(), 0);
+        for (size_t i = 0; i < valid.size() && i < depth.size(); ++i) {
+            const double d = static_cast<double>(depth[i]);
+            in[i] = valid[i] && d >= edges[b] && d < edges[b + 1] ? 1 : 0;
+        }
+        out.push_back({edges[b], edges[b + 1], score(rendered, truth_lit, in)});
+    }
+    return out;
+}
+
+double flip_pct(const std::vector<std::uint8_t>& lit_a, const std::vector<std::uint8_t>& lit_b,
+                const std::vector<std::uint8_t>& valid_a, const std::vector<std::uint8_t>& valid_b) {
+    const size_t n = lit_a.size();
+    if (lit_b.size() != n || valid_a.size() != n || valid_b.size() != n)
+        throw std::invalid_argument("metrics: the two frames differ in size");
+    size_t both = 0, flips = 0;
+    for (size_t i = 0; i < n; ++i) {
+        if (!valid_a[i] || !valid_b[i]) continue;
+        ++both;
+        flips += (lit_a[i] != 0) != (lit_b[i] != 0);
+    }
+    return both ? 100.0 * static_cast<double>(flips) / static_cast<double>(both) : 0.0;
+}
+
+std::vector<std::uint8_t> lit_flags(const std::vector<std::uint8_t>& rendered) {
+    std::vector<std::uint8_t> out(rendered.size());
+    for (size_t i = 0; i < rendered.size(); ++i) out[i] = rendered[i] >= kDarkBelow ? 1 : 0;
+    return out;
+}
+
 std::vector<std::uint8_t> classify(const std::vector<std::uint8_t>& rendered, const std::vector<std::uint8_t>& truth_lit,
                                    const std::vector<std::uint8_t>& valid) {
     const size_t n = rendered.size();

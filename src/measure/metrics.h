@@ -50,6 +50,25 @@ inline constexpr std::uint8_t kDarkBelow = 128;
 Score score(const std::vector<std::uint8_t>& rendered, const std::vector<std::uint8_t>& truth_lit,
             const std::vector<std::uint8_t>& valid, const std::vector<float>* soft = nullptr);
 
+// The score of each distance band: the valid pixels whose depth (any per-pixel distance, e.g. the
+// camera's view depth of the surface hit) lies in [edges[i], edges[i + 1]). edges ascending, at
+// least two; `depth` as long as the images. A band with no valid pixel scores zero (valid 0).
+struct BandScore {
+    double from = 0.0, to = 0.0;
+    Score score;
+};
+std::vector<BandScore> score_by_band(const std::vector<std::uint8_t>& rendered, const std::vector<std::uint8_t>& truth_lit,
+                                     const std::vector<std::uint8_t>& valid, const std::vector<float>& depth,
+                                     const std::vector<double>& edges);
+
+// Temporal stability: the share (percent) of the pixels valid in both frames whose lit/shadowed
+// state differs between frame a and frame b. lit_a, lit_b: non-zero where lit (a rendered
+// visibility byte counts as lit from kDarkBelow up: see lit_flags).
+double flip_pct(const std::vector<std::uint8_t>& lit_a, const std::vector<std::uint8_t>& lit_b,
+                const std::vector<std::uint8_t>& valid_a, const std::vector<std::uint8_t>& valid_b);
+// 1 where a rendered visibility byte is lit (>= kDarkBelow), else 0.
+std::vector<std::uint8_t> lit_flags(const std::vector<std::uint8_t>& rendered);
+
 // Per-pixel classification for an error image: 0 agree, 1 false shadow, 2 false lit, 3 not valid.
 std::vector<std::uint8_t> classify(const std::vector<std::uint8_t>& rendered, const std::vector<std::uint8_t>& truth_lit,
                                    const std::vector<std::uint8_t>& valid);

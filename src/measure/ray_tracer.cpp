@@ -34,6 +34,13 @@ std::vector<std::uint8_t> TruthImage::valid_mask() const {
     return m;
 }
 
+std::vector<float> TruthImage::view_depth(const glm::mat4& view) const {
+    std::vector<float> d(position.size(), 0.0f);
+    for (size_t i = 0; i < d.size(); ++i)
+        if (object[i] >= 0) d[i] = -(view * glm::vec4(position[i], 1.0f)).z;
+    return d;
+}
+
 size_t TruthImage::count(PixelClass c) const {
     return static_cast<size_t>(std::count(pixel_class.begin(), pixel_class.end(), static_cast<std::uint8_t>(c)));
 }

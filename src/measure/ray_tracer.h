@@ -80,6 +80,9 @@ struct TruthImage {
 
     bool valid(size_t i) const { return pixel_class[i] == static_cast<std::uint8_t>(PixelClass::Valid); }
     std::vector<std::uint8_t> valid_mask() const;  // 1 where valid
+    // The camera's view depth of each hit (distance along its view axis; 0 for background), for
+    // the camera `view` the image was traced with.
+    std::vector<float> view_depth(const glm::mat4& view) const;
     size_t count(PixelClass c) const;
 };
 

@@ -519,6 +519,12 @@ void run_sweep(Sweep& w) {
 }  // namespace
 
 void run_bench(const BenchOptions& in) {
+    if (in.cascades) {
+        if (in.soft || in.truth_noise || !in.from_csv.empty())
+            throw CommandError{"--cascades: not with --soft, --truth-noise or --from-csv", 2};
+        run_cascades_bench(in);
+        return;
+    }
     if (in.soft || in.truth_noise) {
         run_soft_bench(in);
         return;

@@ -223,6 +223,10 @@ double lights_crossing(const Sweep& w);
 
 void run_soft_bench(const BenchOptions& o);
 
+// ---- cascades_bench.cpp: penumbra bench --cascades ------------------------------------------------
+
+void run_cascades_bench(const BenchOptions& o);
+
 // ---- bench_report.cpp ------------------------------------------------------------------------
 
 // Writes results.csv, results.md, tradeoff.svg/.png and tradeoff_mae.svg/.png into `dir`;

@@ -64,6 +64,8 @@ struct BenchOptions {
     std::vector<double> radii;
     // --truth-noise: only the area-light truth's own noise, mean |soft(N) - soft(4N)| (soft_bench.cpp).
     bool truth_noise = false;
+    // --cascades: cascaded shadow maps against one map on a large scene instead (cascades_bench.cpp).
+    bool cascades = false;
     std::vector<std::string> allow_outside;  // --allow-outside: for every scene of --scenes
 };
 void run_bench(const BenchOptions& o);

@@ -116,6 +116,10 @@ std::shared_ptr<MeasureCommands> add_measure_commands(CLI::App& app) {
     m->bench_cmd->add_option("--radii", b.radii,
                              "with --soft: light radii as fractions of the scene's size, comma separated (default "
                              "0.02,0.05,0.15; quick 0.15)")->delimiter(',');
+    m->bench_cmd->add_flag("--cascades", b.cascades,
+                           "cascaded shadow maps against one map instead, on --scenes FILE.gltf (default "
+                           "tests/data/terrain_km.gltf): error by band of view depth, ms/frame of a pan, shimmer against "
+                           "the truth's -> cascades.csv, cascades.md, cascades.svg/.png (docs/cascades.md)");
     m->bench_cmd->add_flag("--truth-noise", b.truth_noise,
                            "only the area-light truth's own noise: mean |soft(N) - soft(4N)| on the course scene, N = 64, "
                            "256, 1024 -> soft_truth_noise.csv (part of a full --soft run too)");

@@ -1,0 +1,178 @@
+// Cascaded shadow maps (--cascades) against the ray-traced truth on tests/data/terrain_km.gltf (a
+// sun over a kilometre of hills with 360 objects, the camera 1.9 m above the ground looking along
+// it; make_large_scenes.py): the error per band of view depth at equal map memory (one 4096 map
+// against four 2048 cascades), the shimmer of a slowly moving camera with and without snapping,
+// and every encoding and filter in the cascades.
+#include "gl_fixture.h"
+
+#include <cstdio>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gl/check.h"
+#include "measure/metrics.h"
+#include "measure/ray_tracer.h"
+#include "render/options.h"
+#include "scene/gltf_loader.h"
+
+using namespace penumbra;
+
+namespace {
+
+constexpr int kSize = 512;
+// Bands of the camera's view depth, metres: near (the objects a few metres ahead) to the horizon.
+const std::vector<double> kBands = {0.0, 10.0, 20.0, 50.0, 1e9};
+
+scene::Scene terrain() {
+    const scene::LoadResult r = scene::load_gltf(std::string(PENUMBRA_TEST_DATA) + "/terrain_km.gltf");
+    EXPECT_TRUE(r.ok) << r.error;
+    return r.scene;
+}
+
+render::Settings settings(const char* cascades, int map_size, const char* filter = "hard",
+                          const char* encoding = "rgba") {
+    render::Settings s;
+    EXPECT_EQ(render::parse_option(s, "cascades", cascades), "");
+    EXPECT_EQ(render::parse_option(s, "filter", filter), "");
+    EXPECT_EQ(render::parse_option(s, "encoding", encoding), "");
+    s.map_size = map_size;
+    s.aov = render::Aov::Visibility;
+    return s;
+}
+
+class Cascades : public test::GlTest {
+protected:
+    scene::Scene scene_ = terrain();
+
+    // The visibility AOV's red channel for the scene's camera, or `view` instead.
+    std::vector<std::uint8_t> visibility(const render::Settings& s, const glm::mat4* view = nullptr,
+                                         render::FramePlan* plan_out = nullptr) {
+        render::FrameInputs in = render::offscreen(kSize, kSize);
+        if (view) in.view = *view;
+        const auto& plan = renderer->render(scene_, s, in);
+        if (plan_out) *plan_out = plan;
+        const auto rgba = renderer->read_image();
+        std::vector<std::uint8_t> v(rgba.size() / 4);
+        for (size_t i = 0; i < v.size(); ++i) v[i] = rgba[i * 4];
+        gl::check_errors("the cascades frame");
+        return v;
+    }
+
+    measure::TruthImage truth(const glm::mat4& view_proj) {
+        measure::TruthOptions to;
+        to.width = kSize;
+        to.height = kSize;
+        to.view_proj = view_proj;
+        return measure::RayTracer(scene_).render(to);
+    }
+};
+
+TEST_F(Cascades, NearBandsBeatOneMapAtEqualMemory) {
+    render::FramePlan one_plan, four_plan;
+    const auto one = visibility(settings("1", 4096), nullptr, &one_plan);
+    const auto four = visibility(settings("4", 2048), nullptr, &four_plan);
+    ASSERT_TRUE(one_plan.cascades.empty());
+    ASSERT_EQ(four_plan.cascades.size(), 4u);
+    ASSERT_EQ(four_plan.resource("shadow-map")->desc.width, 4096);  // the same memory as the one map
+    ASSERT_EQ(four_plan.resource("shadow-map")->desc.height, 4096);
+    const measure::TruthImage t = truth(four_plan.camera.view_proj);
+    const std::vector<float> depth = t.view_depth(four_plan.camera.view);
+    const auto a = measure::score_by_band(one, t.lit, t.valid_mask(), depth, kBands);
+    const auto b = measure::score_by_band(four, t.lit, t.valid_mask(), depth, kBands);
+    double mean_a = 0.0, mean_b = 0.0;
+    std::printf("view depth      pixels  one 4096 map  4 x 2048 cascades\n");
+    for (size_t i = 0; i < a.size(); ++i) {
+        std::printf("%5.0f..%-7.0f %7zu  %10.3f %%  %10.3f %%\n", a[i].from, a[i].to, a[i].score.valid,
+                    a[i].score.error_pct, b[i].score.error_pct);
+        RecordProperty("band" + std::to_string(i) + "_one_error_pct", std::to_string(a[i].score.error_pct));
+        RecordProperty("band" + std::to_string(i) + "_cascades_error_pct", std::to_string(b[i].score.error_pct));
+        mean_a += a[i].score.error_pct / static_cast<double>(a.size());
+        mean_b += b[i].score.error_pct / static_cast<double>(a.size());
+        EXPECT_GT(a[i].score.valid, 1000u) << "band " << i << " has too few pixels to score";
+    }
+    std::printf("mean over bands: one map %.3f %%, cascades %.3f %%\n", mean_a, mean_b);
+    // The goal: the nearest band's error at most a third of the one map's; the mean lower.
+    EXPECT_LE(b[0].score.error_pct, a[0].score.error_pct / 3.0);
+    EXPECT_GT(a[0].score.error_pct, 0.5) << "the one map should visibly miss the near shadows";
+    EXPECT_LT(mean_b, mean_a);
+}
+
+// Shimmer: the share of pixels whose lit state flips between two frames of a slowly moving
+// camera, against the truth's share (the flips the moving view itself explains), for a slow pan
+// (0.05 degrees a frame) and a sideways walk (3 cm a frame). Snapped, the texel grid stays put on
+// the world; not snapped, it slides with the cascades' spheres and the shadows' edges crawl.
+struct Flips {
+    double truth = 0.0, snapped = 0.0, free = 0.0;  // percent per frame
+};
+
+class CascadeShimmer : public Cascades {
+protected:
+    Flips run(float turn_degrees, glm::vec3 step) {
+        render::Settings snap = settings("4", 1024);
+        render::Settings free = snap;
+        free.cascade_snap = false;
+        constexpr int kFrames = 6;
+        Flips sum;
+        std::vector<std::uint8_t> prev_snap, prev_free, prev_truth, prev_valid;
+        for (int f = 0; f < kFrames; ++f) {
+            const float k = static_cast<float>(f);
+            const glm::mat4 view = glm::rotate(glm::mat4(1.0f), glm::radians(turn_degrees * k), glm::vec3(0.0f, 1.0f, 0.0f)) *
+                                   glm::translate(glm::mat4(1.0f), -step * k) * scene_.camera.view;
+            render::FramePlan plan;
+            const auto s = measure::lit_flags(visibility(snap, &view, &plan));
+            const auto u = measure::lit_flags(visibility(free, &view));
+            const measure::TruthImage t = truth(plan.camera.view_proj);
+            const auto valid = t.valid_mask();
+            if (f > 0) {
+                sum.snapped += measure::flip_pct(prev_snap, s, prev_valid, valid) / (kFrames - 1);
+                sum.free += measure::flip_pct(prev_free, u, prev_valid, valid) / (kFrames - 1);
+                sum.truth += measure::flip_pct(prev_truth, t.lit, prev_valid, valid) / (kFrames - 1);
+            }
+            prev_snap = s;
+            prev_free = u;
+            prev_truth = t.lit;
+            prev_valid = valid;
+        }
+        std::printf("flips per frame: truth %.4f %%, snapped %.4f %% (%.2fx), not snapped %.4f %% (%.2fx)\n",
+                    sum.truth, sum.snapped, sum.snapped / sum.truth, sum.free, sum.free / sum.truth);
+        return sum;
+    }
+};
+
+TEST_F(CascadeShimmer, ASlowPanFlipsNoMoreThanTheTruthWhenSnapped) {
+    const Flips f = run(0.05f, glm::vec3(0.0f));
+    RecordProperty("pan_flips_truth_pct", std::to_string(f.truth));
+    RecordProperty("pan_flips_snapped_pct", std::to_string(f.snapped));
+    RecordProperty("pan_flips_free_pct", std::to_string(f.free));
+    ASSERT_GT(f.truth, 0.0);
+    EXPECT_LE(f.snapped, 1.2 * f.truth);
+    EXPECT_GT(f.free, 3.0 * f.truth) << "without snapping the texel grid slides over the world";
+}
+
+TEST_F(CascadeShimmer, ASidewaysWalkFlipsNoMoreThanTheTruthWhenSnapped) {
+    const Flips f = run(0.0f, glm::vec3(0.03f, 0.0f, 0.0f));
+    RecordProperty("walk_flips_truth_pct", std::to_string(f.truth));
+    RecordProperty("walk_flips_snapped_pct", std::to_string(f.snapped));
+    RecordProperty("walk_flips_free_pct", std::to_string(f.free));
+    ASSERT_GT(f.truth, 0.0);
+    EXPECT_LE(f.snapped, 1.2 * f.truth);
+    EXPECT_GT(f.free, 1.5 * f.truth);
+}
+
+// Every encoding with the hard, PCF 4x4 and PCSS lookups in four cascades: the shadows are there
+// (the error against the hard truth stays small) with zero GL errors.
+TEST_F(Cascades, EveryEncodingAndFilterLooksUpEachCascade) {
+    render::FramePlan plan;
+    visibility(settings("4", 1024), nullptr, &plan);
+    const measure::TruthImage t = truth(plan.camera.view_proj);
+    for (const char* e : {"r8", "rgba", "depthtex"})
+        for (const char* f : {"hard", "pcf4x4", "pcss"}) {
+            const auto v = visibility(settings("4", 1024, f, e));
+            const measure::Score sc = measure::score(v, t.lit, t.valid_mask());
+            std::printf("--encoding %-8s --filter %-6s error %.3f %%\n", e, f, sc.error_pct);
+            EXPECT_LT(sc.error_pct, 1.5) << e << " " << f;
+            EXPECT_GT(sc.truth_shadowed, 1000u);
+        }
+}
+
+}  // namespace
