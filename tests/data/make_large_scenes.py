@@ -28,8 +28,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import make_bench_gltf as bench  # noqa: E402
 from make_bench_gltf import box, cylinder, light_rotation, look_at_rotation  # noqa: E402
-from make_gltf import USHORT, Builder, quat_axis_angle, uv_sphere, write_json  # noqa: E402
+from make_gltf import USHORT, quat_axis_angle, uv_sphere, write_json  # noqa: E402
 
 
 def rounded(values, digits=3):
@@ -49,18 +50,9 @@ class Lcg:
         return lo + (hi - lo) * (self.state / 4294967296.0)
 
 
-class Scene:
-    """Meshes that many nodes instance, materials, then the camera and one light."""
-
-    def __init__(self):
-        self.b = Builder()
-        self.materials = []
-        self.nodes = []
-
-    def material(self, name, rgb):
-        self.materials.append({"name": name, "pbrMetallicRoughness": {
-            "baseColorFactor": [rgb[0], rgb[1], rgb[2], 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.6}})
-        return len(self.materials) - 1
+class Scene(bench.Scene):
+    """The bench scenes' builder (its materials), but meshes that many nodes instance (mesh() makes
+    no node; place() does), and the camera given."""
 
     def mesh(self, name, geometry, material):
         pos, nrm, idx = geometry
