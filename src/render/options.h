@@ -1,4 +1,4 @@
-// One option table. Every setting is declared once, here (or, for what only the course exercises
+// One option table. Every setting is declared once, in option_table.cpp (or, for what only the course exercises
 // have, in examples/exercise_list.cpp with the same types): its name, type, choices, default, help
 // and whether it belongs to the technique (render::Settings) or to the job (render::Job). The
 // command line (`penumbra`, `penumbra-desktop`), their --help, the -v printout, the pages' URL
@@ -141,6 +141,8 @@ bool parse_int(std::string_view text, int& out);
 bool parse_number(std::string_view text, double& out);
 // "640x360".
 bool parse_size(std::string_view text, int& width, int& height);
+// The items of a comma list ("outline,mirror"), empty ones included ("a,,b" has three).
+std::vector<std::string_view> list_items(std::string_view value);
 // "a,b,c" -> each checked as a value of `option`; "" or the first problem.
 std::string parse_list(const OptionInfo& option, std::string_view text, std::vector<std::string>& out);
 // The shortest text that reads back as the same float (a URL's 0.003, not 0.0030000000260770321).

@@ -22,7 +22,7 @@
 // the technique made of the image.
 //
 // Adding a technique: a file here with a Module subclass, its entry in techniques.cpp, its value in
-// render::Technique and the option table's choices (render/options.cpp). An effect: the same with
+// render::Technique and the option table's choices (render/option_table.cpp). An effect: the same with
 // render::Effect and effect_module.
 #pragma once
 
