@@ -103,6 +103,22 @@ std::vector<T> settings_list(const std::vector<std::string>& values, const char*
     return out;
 }
 
+}  // namespace
+
+void bench::apply_set(const std::vector<std::string>& set, const std::vector<std::string>& swept, render::Settings& s) {
+    for (const auto& kv : set) {
+        const auto eq = kv.find('=');
+        if (eq == std::string::npos) throw CommandError{"--set " + kv + ": expected NAME=VALUE", 2};
+        const std::string name = kv.substr(0, eq), value = kv.substr(eq + 1);
+        const auto* opt = render::find_option(render::option_table(), name);
+        if (opt && (opt->info.part == render::OptionPart::Job || std::count(swept.begin(), swept.end(), name)))
+            throw CommandError{"--set " + name + ": the bench sweeps or sets this one itself", 2};
+        if (const std::string err = render::parse_option(s, name, value); !err.empty()) throw CommandError{err, 2};
+    }
+}
+
+namespace {
+
 Sweep configure(const BenchOptions& in) {
     Sweep w;
     w.o = in;
@@ -135,18 +151,7 @@ Sweep configure(const BenchOptions& in) {
     if (const std::string err = render::parse_option(w.base, "size", o.size); !err.empty()) throw CommandError{err, 2};
     w.width = w.base.job.width;
     w.height = w.base.job.height;
-    // --set takes any technique option the sweep does not vary itself.
-    const std::vector<std::string> swept = {"encoding", "filter", "map-size", "aov", "technique", "volume-method"};
-    for (const auto& kv : o.set) {
-        const auto eq = kv.find('=');
-        if (eq == std::string::npos) throw CommandError{"--set " + kv + ": expected NAME=VALUE", 2};
-        const std::string name = kv.substr(0, eq), value = kv.substr(eq + 1);
-        const auto* opt = render::find_option(render::option_table(), name);
-        if (opt && (opt->info.part == render::OptionPart::Job || std::count(swept.begin(), swept.end(), name)))
-            throw CommandError{"--set " + name + ": the bench sweeps or sets this one itself", 2};
-        if (const std::string err = render::parse_option(w.base.settings, name, value); !err.empty())
-            throw CommandError{err, 2};
-    }
+    apply_set(o.set, {"encoding", "filter", "map-size", "aov", "technique", "volume-method"}, w.base.settings);
     return w;
 }
 

@@ -152,6 +152,10 @@ void set_technique(Row& row, const render::Settings& s, const std::string& label
 // "teapot@0.6" -> {teapot, 0.6, course@0.60}; "FILE.gltf" -> {FILE.gltf, 0, FILE's stem}.
 SceneSpec parse_scene_spec(const std::string& spec);
 
+// --set NAME=VALUE...: each a technique option into `s`; the job's options and those in `swept`
+// (the bench varies them itself) are refused, as is a bad value (CommandError).
+void apply_set(const std::vector<std::string>& set, const std::vector<std::string>& swept, render::Settings& s);
+
 // The red channel of an RGBA image: the visibility AOV, one byte per pixel.
 std::vector<std::uint8_t> red_channel(const std::vector<std::uint8_t>& rgba);
 

@@ -118,15 +118,8 @@ void run_cascades_bench(const BenchOptions& in) {
     if (o.scenes.size() > 1) throw CommandError{"bench --cascades: one scene (--scenes FILE.gltf)", 2};
     const std::string scene_name = o.scenes.empty() ? "tests/data/terrain_km.gltf" : o.scenes.front();
     render::Options base;
-    for (const auto& kv : o.set) {
-        const size_t eq = kv.find('=');
-        const std::string err = eq == std::string::npos ? "--set " + scene::printable(kv) + ": expected name=value"
-                                                        : render::parse_option(base, kv.substr(0, eq), kv.substr(eq + 1));
-        if (!err.empty()) throw CommandError{err, 2};
-    }
-    if (!render::parse_size(o.size, base.job.width, base.job.height) ||
-        !render::check_value(render::option_info("size"), o.size).empty())
-        throw CommandError{render::check_value(render::option_info("size"), o.size), 2};
+    apply_set(o.set, {"cascades", "map-size", "cascade-snap", "cascade-blend", "aov"}, base.settings);
+    if (const std::string err = render::parse_option(base, "size", o.size); !err.empty()) throw CommandError{err, 2};
     const int w = base.job.width, h = base.job.height;
     scene::SceneSource src = open_scene(scene_name, scene::Eye::Scene, o.allow_outside);
     prepare_output_dir("--out-dir", o.out_dir);
@@ -228,10 +221,12 @@ void run_cascades_bench(const BenchOptions& in) {
     }
     write_text(dir / "cascades.csv", csv.str());
 
+    std::string set_args;
+    for (const auto& kv : o.set) set_args += " --set " + scene::printable(kv);
     const CascadeRow& ref = rows.front();
     std::ostringstream md;
     md << "# Cascaded shadow maps against one map\n\n"
-       << "`penumbra bench --cascades" << (o.quick ? " --quick" : "") << "` on " << scene::printable(scene_name) << ", "
+       << "`penumbra bench --cascades" << (o.quick ? " --quick" : "") << set_args << "` on " << scene::printable(scene_name) << ", "
        << w << "x" << h << ", " << caps.renderer << ", one run (" << duration_str(seconds_since(t0)) << "). "
        << "Error: the visibility AOV against the ray-traced truth (false shadow + false lit, % of the valid pixels), "
           "over the whole frame and per band of the camera's view depth (world units; equal ratios over the valid "

@@ -128,10 +128,9 @@ void add_packing(ContentKey& key, const PlanContext& c) {
     key.add(c.depth_path.pack_floor);
 }
 
-// --cascades: how many this frame has (0 asks auto) and why; c.plan.cascades_why says it.
+// --cascades N > 1 or auto (0): how many this frame has and why; c.plan.cascades_why says it.
 int cascade_count(PlanContext& c, const ShadowBounds& b) {
     const int asked = c.settings.cascades;
-    if (asked == 1) return 1;
     if (asked == 0) {
         std::string why;
         const int n = shadow::auto_cascade_count(c.light, b.receivers, c.plan.camera.view, c.plan.camera.proj, why);
@@ -240,6 +239,7 @@ public:
     // cannot be made here and a note says why).
     bool cascaded(PlanContext& c, int& size) const {
         const Settings& s = c.settings;
+        if (s.cascades == 1) return false;  // one map: nothing to decide (the default's frame does no more work)
         const ShadowBounds b = shadow_bounds(c.scene, s.blend_shadows);
         const int n = cascade_count(c, b);
         if (n <= 1) return false;
