@@ -10,7 +10,10 @@
 #include "query.h"
 #include "scene/eye.h"
 #include "scene/primitives.h"
+#include "scene/terrain_scene.h"
 #include "shadow/encoding.h"
+
+#include <glm/gtc/matrix_transform.hpp>
 
 namespace penumbra::examples {
 
@@ -22,6 +25,45 @@ constexpr const char* kFboTexture = "w09p2b";
 
 // The job options the exercises take: time (both clocks, paused) and the eye.
 bool exercise_job_option(std::string_view name) { return name == "time" || name == "eye"; }
+
+constexpr double kPiD = 3.14159265358979323846;
+constexpr float kMaxPitch = 89.0f;       // the fly camera never looks straight up or down
+constexpr float kMinAboveGround = 0.3f;  // nor goes under the terrain
+constexpr float kMaxFromCentre = 2000.0f;
+
+glm::vec3 fly_forward(const FlyCamera& c) {
+    const double yaw = static_cast<double>(c.yaw) * kPiD / 180.0, pitch = static_cast<double>(c.pitch) * kPiD / 180.0;
+    return glm::vec3(static_cast<float>(std::sin(yaw) * std::cos(pitch)), static_cast<float>(std::sin(pitch)),
+                     static_cast<float>(-std::cos(yaw) * std::cos(pitch)));
+}
+
+// Yaw within (-180, 180].
+float wrap_degrees(double deg) {
+    double d = std::fmod(deg, 360.0);
+    if (d > 180.0) d -= 360.0;
+    if (d <= -180.0) d += 360.0;
+    return static_cast<float>(d);
+}
+
+// The fly camera where a view matrix puts the eye.
+FlyCamera fly_from_view(const glm::mat4& view) {
+    const glm::mat4 inv = glm::inverse(view);
+    const glm::vec3 f = -glm::normalize(glm::vec3(inv[2]));
+    FlyCamera c;
+    c.eye = glm::vec3(inv[3]);
+    c.yaw = wrap_degrees(std::atan2(static_cast<double>(f.x), static_cast<double>(-f.z)) * 180.0 / kPiD);
+    c.pitch = static_cast<float>(std::asin(std::clamp(static_cast<double>(f.y), -1.0, 1.0)) * 180.0 / kPiD);
+    return c;
+}
+
+// Kept over the ground and near the terrain.
+void keep_in_bounds(FlyCamera& c) {
+    c.eye.x = std::clamp(c.eye.x, -kMaxFromCentre, kMaxFromCentre);
+    c.eye.z = std::clamp(c.eye.z, -kMaxFromCentre, kMaxFromCentre);
+    c.eye.y = std::clamp(c.eye.y, scene::terrain_km_height(c.eye.x, c.eye.z) + kMinAboveGround, kMaxFromCentre);
+    c.pitch = std::clamp(c.pitch, -kMaxPitch, kMaxPitch);
+    c.yaw = wrap_degrees(static_cast<double>(c.yaw));
+}
 
 // Settings the pages and the desktop never take: the exercise picks the scene and the technique
 // (unless it offers a control for it), the canvas or the window its size, and nothing is written
@@ -53,6 +95,7 @@ std::string setting_value(const render::Settings& s, std::string_view name) {
 
 CourseApp::CourseApp(Exercise e) : exercise_(e), course_(scene::make_course_scene()) {
     scene_camera_ = course_.scene.camera;
+    if (exercise_info(e).terrain) ensure_terrain();
     apply_defaults(e);
     // W09P2b's ground: the table quad again with uvs 0..1, so the FBO's picture lies on the table
     // once, and a white material whose texture (a 1x1 placeholder) the FBO's texture replaces.
@@ -78,6 +121,64 @@ CourseApp::CourseApp(Exercise e) : exercise_(e), course_(scene::make_course_scen
 
 CourseApp::~CourseApp() = default;
 
+void CourseApp::ensure_terrain() {
+    if (terrain_) return;
+    terrain_ = std::make_unique<scene::Scene>(scene::make_terrain_km_scene());
+    terrain_camera_ = terrain_->camera;
+    fly_ = fly_start_ = fly_from_view(terrain_camera_.view);
+    camera_moved_ = false;
+}
+
+const scene::Scene& CourseApp::scene() const {
+    return exercise_info(exercise_).terrain && terrain_ ? *terrain_ : course_.scene;
+}
+
+bool CourseApp::fly(double forward, double right, double up, double yaw, double pitch) {
+    if (!exercise_info(exercise_).terrain || !terrain_) return false;
+    for (const double v : {forward, right, up, yaw, pitch})
+        if (!std::isfinite(v)) return false;
+    const glm::vec3 f = fly_forward(fly_);
+    const double yaw_rad = static_cast<double>(fly_.yaw) * kPiD / 180.0;
+    const glm::vec3 side(static_cast<float>(std::cos(yaw_rad)), 0.0f, static_cast<float>(std::sin(yaw_rad)));
+    fly_.eye += static_cast<float>(forward) * f + static_cast<float>(right) * side + glm::vec3(0.0f, static_cast<float>(up), 0.0f);
+    fly_.yaw = wrap_degrees(static_cast<double>(fly_.yaw) + yaw);
+    fly_.pitch = static_cast<float>(static_cast<double>(fly_.pitch) + pitch);
+    keep_in_bounds(fly_);
+    camera_moved_ = true;
+    return true;
+}
+
+void CourseApp::reset_camera() {
+    fly_ = fly_start_;
+    camera_moved_ = false;
+}
+
+std::string CourseApp::camera_value() const {
+    // Millimetres and hundredths of a degree: what a reload needs to show the same frame.
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "%.3f,%.3f,%.3f,%.2f,%.2f", static_cast<double>(fly_.eye.x),
+                  static_cast<double>(fly_.eye.y), static_cast<double>(fly_.eye.z), static_cast<double>(fly_.yaw),
+                  static_cast<double>(fly_.pitch));
+    std::string v = buf;
+    // Trailing zeros off each number ("-60.000" -> "-60").
+    std::string out, part;
+    const auto flush = [&] {
+        if (part.find('.') != std::string::npos) {
+            while (!part.empty() && part.back() == '0') part.pop_back();
+            if (!part.empty() && part.back() == '.') part.pop_back();
+        }
+        if (part == "-0") part = "0";
+        out += (out.empty() ? "" : ",") + part;
+        part.clear();
+    };
+    for (const char c : v) {
+        if (c == ',') flush();
+        else part += c;
+    }
+    flush();
+    return out;
+}
+
 void CourseApp::apply_defaults(Exercise e) {
     for (const auto& [name, value] : exercise_info(e).defaults)
         if (const std::string err = set_option(name, value); !err.empty())
@@ -95,6 +196,7 @@ void CourseApp::set_exercise(Exercise e) {
         set_option(name, v);
     }
     exercise_ = e;
+    if (exercise_info(e).terrain) ensure_terrain();
     apply_defaults(e);
 }
 
@@ -179,6 +281,34 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
         eye_in_shadow_ = t.job.eye_in_shadow;
         return {};
     }
+    if (name == "camera") {
+        if (!exercise_info(exercise_).terrain)
+            return "camera: only the exercise over the terrain (" + std::string(exercise_info(Exercise::Cascades).name) +
+                   ") flies its camera";
+        // X,Y,Z,YAW,PITCH: five finite numbers, the eye within 2 km, the pitch within +-89 degrees.
+        double v[5];
+        size_t at = 0;
+        const std::string text(value);
+        for (int i = 0; i < 5; ++i) {
+            const size_t end = i < 4 ? text.find(',', at) : text.size();
+            const std::string part = end == std::string::npos ? std::string() : text.substr(at, end - at);
+            char* stop = nullptr;
+            v[i] = part.empty() ? std::nan("") : std::strtod(part.c_str(), &stop);
+            if (part.empty() || *stop != '\0' || !std::isfinite(v[i]) || (i == 4 && end != text.size()))
+                return "camera=" + text + ": needs five numbers X,Y,Z,YAW,PITCH (metres, degrees)";
+            at = end + 1;
+        }
+        if (std::fabs(v[0]) > kMaxFromCentre || std::fabs(v[1]) > kMaxFromCentre || std::fabs(v[2]) > kMaxFromCentre)
+            return "camera=" + text + ": the eye must be within 2000 m of the centre";
+        if (std::fabs(v[4]) > static_cast<double>(kMaxPitch))
+            return "camera=" + text + ": the pitch must be within -89..89 degrees";
+        fly_.eye = glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
+        fly_.yaw = wrap_degrees(v[3]);
+        fly_.pitch = static_cast<float>(v[4]);
+        keep_in_bounds(fly_);
+        camera_moved_ = true;
+        return {};
+    }
     if (set_by_the_exercise(exercise_, name))
         return std::string(name) + ": set by the exercise (or the canvas, the window), not an option here";
     render::Settings t = settings_;
@@ -211,12 +341,14 @@ std::vector<std::pair<std::string, std::string>> CourseApp::options() const {
         if (v != defaults[i].second) out.emplace_back(k, v);
     }
     if (eye_in_shadow_ && std::find(shown.begin(), shown.end(), "eye") == shown.end()) out.emplace_back("eye", value_of("eye"));
+    if (camera_moved_ && exercise_info(exercise_).terrain) out.emplace_back("camera", camera_value());
     if (paused_ && light_time_ == jump_time_) out.emplace_back("time", format_number(light_time_));
     return out;
 }
 
 std::string CourseApp::value_of(std::string_view name) const {
     if (const auto* t = render::find_option(toggle_table(), name)) return t->print(toggles_);
+    if (name == "camera") return camera_value();
     if (name == "eye") {
         render::Options o;
         o.job.eye_in_shadow = eye_in_shadow_;
@@ -240,7 +372,7 @@ float CourseApp::sheet_bias() const { return shadow::sheet_bias(settings_.encodi
 void CourseApp::create_gl(const platform::Platform& context) {
     renderer_.reset();
     renderer_ = std::make_unique<render::Renderer>(gl::probe_caps(context));
-    renderer_->load(course_.scene);
+    renderer_->load(scene());
     ++generation_;
     ms_.clear();  // frame times of the old context say nothing about this one
     if (settings_.encoding == shadow::Encoding::DepthTex && !renderer_->caps().depth_texture)
@@ -267,8 +399,10 @@ void CourseApp::set_time(double t) { light_time_ = jump_time_ = t; }
 
 // ---- drawing --------------------------------------------------------------------------------
 
-void CourseApp::render(render::Settings s, const render::FrameInputs& in) {
-    const render::FramePlan& p = renderer_->render(course_.scene, s, in);
+void CourseApp::render(render::Settings s, const render::FrameInputs& in) { render(course_.scene, s, in); }
+
+void CourseApp::render(const scene::Scene& sc, const render::Settings& s, const render::FrameInputs& in) {
+    const render::FramePlan& p = renderer_->render(sc, s, in);
     plan_text_ += p.describe();
     if (p.area && !area_) area_ = p.area;
 }
@@ -279,6 +413,13 @@ render::Settings CourseApp::frame_settings() const {
     if (!offers(exercise_info(exercise_), "post")) s.post.clear();  // the multipass exercise's alone
     if (!offers(exercise_info(exercise_), "shading")) s.shading = render::Shading::Forward;
     if (!offers(exercise_info(exercise_), "lights")) s.lights = 0;
+    if (!offers(exercise_info(exercise_), "cascades")) {  // the cascades exercise's alone
+        const render::Settings d;
+        s.cascades = d.cascades;
+        s.cascade_split = d.cascade_split;
+        s.cascade_snap = d.cascade_snap;
+        s.cascade_blend = d.cascade_blend;
+    }
     if (exercise_ == Exercise::Soft && toggles_.reference) {
         s.filter = shadow::Filter::Hard;
         s.area_samples = kReferenceSamples;
@@ -397,6 +538,17 @@ void CourseApp::draw(int width, int height) {
             if (s.aov != render::Aov::Visibility && !render::gbuffer_aov(s.aov)) s.aov = render::Aov::Color;
             render(s, in);
             break;
+        case Exercise::Cascades: {  // the terrain from the fly camera: colour, visibility or the cascades
+            if (s.aov != render::Aov::Visibility && s.aov != render::Aov::Cascades) s.aov = render::Aov::Color;
+            ensure_terrain();
+            // Unmoved, the scene's own camera exactly (the frame `penumbra render --scene
+            // tests/data/terrain_km.gltf` draws); moved, the fly camera's.
+            terrain_->camera = terrain_camera_;
+            if (camera_moved_)
+                terrain_->camera.view = glm::lookAt(fly_.eye, fly_.eye + fly_forward(fly_), glm::vec3(0.0f, 1.0f, 0.0f));
+            render(*terrain_, s, in);
+            break;
+        }
     }
     // Wait for the frame before the clock stops. glFinish would do on the desktop, but WebGL's
     // finish() returns at once in Chromium (it only flushes); reading one pixel back waits for the
@@ -437,8 +589,15 @@ std::string CourseApp::key_help() {
         out += l + std::string(help) + "\n";
     };
     for (size_t i = 0; i < exercise_list().size(); ++i)
-        line(std::to_string(i + 1), "exercise " + std::string(exercise_list()[i].name), exercise_list()[i].title);
+        line(i < static_cast<size_t>(kExerciseDigitKeys) ? std::to_string(i + 1) : "Tab",
+             "exercise " + std::string(exercise_list()[i].name), exercise_list()[i].title);
+    line("Tab", "exercise", "the next exercise (Shift+Tab: the previous)");
     for (const KeyBinding& k : key_bindings()) line(std::string(1, static_cast<char>(k.key)), k.option, k.help);
+    // The cascades exercise's camera (before the bindings of those letters there).
+    line("W S, Up Down", "camera", "cascades: fly forward / back 2 m (Shift: 20 m)");
+    line("Q E, Lt Rt", "camera", "cascades: turn left / right 5 degrees (Shift: 20)");
+    line("R F", "camera", "cascades: look up / down 3 degrees");
+    line("O", "camera", "cascades: back to the scene's camera");
     // The keys on_key handles itself.
     line("[ ]", "bias", "W09P2c: bias down / up (x1.5)");
     line("B", "bias", "W09P2c: bias=sheet (the sheet's constant for the encoding)");
@@ -467,11 +626,44 @@ std::string CourseApp::on_key(int key, bool shift) {
         const std::string err = set_option(name, value);
         return err.empty() ? std::string(name) + " = " + value : err;
     };
-    if (key >= '1' && key < '1' + static_cast<int>(exercise_list().size())) {
+    const int exercises = static_cast<int>(exercise_list().size());
+    if (key >= '1' && key < '1' + std::min(exercises, kExerciseDigitKeys)) {
         set_exercise(exercise_list()[static_cast<size_t>(key - '1')].id);
         return std::string(exercise_info(exercise_).title);
     }
-    for (const KeyBinding& k : key_bindings()) {
+    if (key == platform::keys::Tab) {
+        int i = 0;
+        while (exercise_list()[static_cast<size_t>(i)].id != exercise_) ++i;
+        set_exercise(exercise_list()[static_cast<size_t>(((shift ? i - 1 : i + 1) % exercises + exercises) % exercises)].id);
+        return std::string(exercise_info(exercise_).title);
+    }
+    if (exercise_info(exercise_).terrain) {  // the fly camera
+        const double step = shift ? 20.0 : 2.0, turn = shift ? 20.0 : 5.0;
+        bool moved = true;
+        switch (key) {
+            case 'W':
+            case platform::keys::Up: fly(step, 0, 0, 0, 0); break;
+            case 'S':
+            case platform::keys::Down: fly(-step, 0, 0, 0, 0); break;
+            case 'Q':
+            case platform::keys::Left: fly(0, 0, 0, -turn, 0); break;
+            case 'E':
+            case platform::keys::Right: fly(0, 0, 0, turn, 0); break;
+            case 'R': fly(0, 0, 0, 0, 3.0); break;
+            case 'F': fly(0, 0, 0, 0, -3.0); break;
+            case 'O': reset_camera(); break;
+            default: moved = false;
+        }
+        if (moved) return camera_moved_ ? "camera = " + camera_value() : std::string("camera = the scene's");
+    }
+    // The bindings of this exercise alone first, then the others.
+    std::vector<const KeyBinding*> bindings;
+    for (const KeyBinding& k : key_bindings())
+        if (k.only == exercise_) bindings.push_back(&k);
+    for (const KeyBinding& k : key_bindings())
+        if (!k.only) bindings.push_back(&k);
+    for (const KeyBinding* kb : bindings) {
+        const KeyBinding& k = *kb;
         if (k.key != key) continue;
         // The next value among those offered (Shift: the previous), skipping what the context refuses.
         const std::vector<std::string> values = key_values(k.option);
