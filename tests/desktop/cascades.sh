@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# desktop.cascades-keys: the cascades exercise in a real window (Xvfb) over the kilometre of terrain,
+# driven by its keys (--keys, one a frame), each last frame checked (check_cascades.py):
+#   - as it starts (4 cascades, the cascades view): the four tints, and the frame `penumbra render
+#     --scene tests/data/terrain_km.gltf` draws with the same options (the scene built in code is
+#     the file's);
+#   - Shift+N three times (4 -> 3 -> 2 -> 1): one tint, the title and the URL say cascades=1, the
+#     CLI's frame of --cascades 1;
+#   - W twice (2 m forward each): the frame changes and the title keeps camera=...;
+#   - G, K, B (snap off, split 1, blend 0.2): the title says so and the frame is the CLI's;
+#   - A (the view: colour): no tints but the grass's, the CLI's colour frame.
+# usage: cascades.sh PENUMBRA_DESKTOP PENUMBRA_CLI OUT_DIR
+set -euo pipefail
+app=$1 cli=$2 out=$3/cascades
+here=$(cd "$(dirname "$0")" && pwd)
+data=$(cd "$here/../data" && pwd)
+mkdir -p "$out"
+
+shot() {  # shot NAME KEYS: the exercise from its start, KEYS pressed, the 8th frame's screenshot
+  local name=$1 keys=$2
+  rm -f "$out/$name.png"
+  if ! xvfb-run -a -s "-screen 0 1280x1024x24" "$app" --exercise cascades --frames 8 --keys "$keys" --print-title \
+       --screenshot "$out/$name.png" >"$out/$name.log" 2>&1; then
+    echo "desktop cascades $name: penumbra-desktop failed:"; cat "$out/$name.log"; exit 1
+  fi
+  grep -q "^8 frames" "$out/$name.log" || { echo "desktop cascades $name: did not render 8 frames:"; cat "$out/$name.log"; exit 1; }
+}
+cli() {  # cli NAME [render options...]: the same frame headless
+  local name=$1
+  shift
+  "$cli" render --scene "$data/terrain_km.gltf" --size 512x512 --out "$out/$name-cli.png" "$@" >/dev/null
+}
+title_has() {  # title_has NAME TEXT: the last title printed holds TEXT
+  grep "^title: " "$out/$1.log" | tail -1 | grep -qF -- "$2" || {
+    echo "desktop cascades $1: the title lacks '$2':"; grep "^title: " "$out/$1.log" | tail -1; exit 1; }
+}
+cd "$here"
+
+shot start ""
+title_has start "Cascaded shadow maps | cascades=4 cascade-split=0.9 cascade-snap=on cascade-blend=0.1 map-size=1024 aov=cascades"
+python3 check_cascades.py tints "$out/start.png" 4
+cli start --cascades 4 --aov cascades
+python3 check_cascades.py match "$out/start.png" "$out/start-cli.png"
+
+shot one "NNN"
+title_has one "cascades=1 "
+grep -q "cascades=1&" "$out/one.log" || { echo "desktop cascades one: the URL query lacks cascades=1"; exit 1; }
+python3 check_cascades.py tints "$out/one.png" 1
+cli one --cascades 1 --aov cascades
+python3 check_cascades.py match "$out/one.png" "$out/one-cli.png"
+
+shot walk "ww"
+title_has walk "camera="
+grep -q "^camera = " "$out/walk.log" || { echo "desktop cascades walk: no camera line"; exit 1; }
+python3 check_cascades.py differ "$out/walk.png" "$out/start.png" 0.02
+python3 check_cascades.py tints "$out/walk.png" 4
+
+shot settings "gkb"
+title_has settings "cascade-split=1 cascade-snap=off cascade-blend=0.2"
+cli settings --cascades 4 --aov cascades --cascade-snap off --cascade-split 1 --cascade-blend 0.2
+python3 check_cascades.py match "$out/settings.png" "$out/settings-cli.png"
+python3 check_cascades.py differ "$out/settings.png" "$out/start.png" 0.005
+
+shot color "a"
+title_has color "aov=color"
+cli color --cascades 4
+python3 check_cascades.py match "$out/color.png" "$out/color-cli.png"
+echo "desktop cascades: ok"
