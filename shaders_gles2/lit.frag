@@ -1,8 +1,9 @@
 #version 100
 // Camera pass: Phong lighting from one light, scaled by the light's visibility. Variants:
 // SHADOW_MAP (with ENC_*, FILTER_*, and BIAS_AUTO with LIGHT_PERSPECTIVE or not; EMULATE_MEDIUMP;
-// CASCADES N: N maps in one atlas, the one for the fragment's view depth looked up; AOV_CASCADES:
-// the image tinted by that cascade's colour), IN_SHADOW (planar shadow region: visibility 0),
+// CASCADES N: N maps in one atlas, the one for the fragment's view depth looked up; CUBE: a point
+// light's six faces in one atlas, the one in the fragment's direction looked up; AOV_CASCADES:
+// the image tinted by that cascade's or face's colour), IN_SHADOW (planar shadow region: visibility 0),
 // AREA_LOOKUP (Heckbert-Herf: the visibility averaged over light samples, from a target; --post
 // shadow-blur: the visibility AOV blurred, from a target),
 // GOOCH_TEXTURE (Gooch's shadow texture, black casters on white, sampled linearly at GOOCH_TAPS
@@ -70,7 +71,7 @@ uniform vec4 u_depth_map;  // the ray position s = dot(xyz, world) + w: 0 on the
 
 #ifdef SHADOW_MAP
 #include "shadow.glsl"
-#if defined(CASCADES)
+#if defined(CASCADES) || defined(CUBE)
 #elif defined(GBUFFER_READ)
 uniform mat4 u_light_matrix;
 #else
@@ -168,6 +169,8 @@ void main() {
     float visibility = 1.0;
 #if defined(SHADOW_MAP) && defined(CASCADES)
     if (receives) visibility = shadowCascades(world, n);
+#elif defined(SHADOW_MAP) && defined(CUBE)
+    if (receives) visibility = shadowCube(world, n);
 #elif defined(SHADOW_MAP) && defined(GBUFFER_READ)
     if (receives) visibility = shadowVisibility(u_light_matrix * vec4(world, 1.0), n);
 #elif defined(SHADOW_MAP)
@@ -221,7 +224,7 @@ void main() {
 #ifdef REFLECTED
     gl_FragColor = vec4(gl_FragColor.rgb * u_reflectivity, u_reflectivity);
 #endif
-#if defined(AOV_CASCADES) && defined(CASCADES)
+#if defined(AOV_CASCADES) && (defined(CASCADES) || defined(CUBE))
     gl_FragColor.rgb = mix(gl_FragColor.rgb, g_cascade_tint, 0.5);
 #elif defined(AOV_CASCADES)
     gl_FragColor.rgb = mix(gl_FragColor.rgb, vec3(1.0, 0.2, 0.2), 0.5);

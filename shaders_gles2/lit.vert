@@ -1,7 +1,7 @@
 #version 100
 // Camera pass: world-space position and normal for lighting, and with SHADOW_MAP the position
-// in the shadow map's texture space, (u_l, v_l, z_l, w) = B P_l V_l p_world (CASCADES: looked up
-// per fragment from the world position).
+// in the shadow map's texture space, (u_l, v_l, z_l, w) = B P_l V_l p_world (CASCADES, CUBE: looked
+// up per fragment from the world position).
 attribute vec3 a_position;
 attribute vec3 a_normal;
 attribute vec2 a_uv;
@@ -17,7 +17,7 @@ varying vec3 v_world;
 varying vec3 v_normal;
 varying vec2 v_uv;
 
-#if defined(SHADOW_MAP) && !defined(CASCADES)
+#if defined(SHADOW_MAP) && !defined(CASCADES) && !defined(CUBE)
 uniform mat4 u_light_matrix;
 varying vec4 v_shadow_coord;
 #endif
@@ -33,7 +33,7 @@ void main() {
     v_world = world.xyz;
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;
-#if defined(SHADOW_MAP) && !defined(CASCADES)
+#if defined(SHADOW_MAP) && !defined(CASCADES) && !defined(CUBE)
     v_shadow_coord = u_light_matrix * world;
 #endif
 #ifdef GOOCH_TEXTURE

@@ -7,18 +7,43 @@
 uniform sampler2D u_shadow_map;
 uniform vec2 u_texmapscale;  // 1/width, 1/height of the shadow map: one texel in texture space
 uniform float u_bias;        // the fragment is in shadow if z_l > depth + bias (auto: the constant part)
+#if defined(CASCADES) || defined(CUBE)
+// Cascaded shadow maps (CASCADES maps) or a point light's cube (CUBE: six faces), tiles of one
+// atlas. A lookup works in the coordinates of the cascade's or face's own map, [0, 1]
+// (u_texmapscale: one texel of a tile), and reads the atlas through shadowDepth, clamped to the
+// tile's texel centres (each tile acts as a map with clamped edges). The tile is copied here
+// before its lookup (cascadeLookup, shadowCube).
+vec4 g_shadow_tile;   // xy: the tile's lower-left corner in the atlas, zw: its size (texture units)
+#endif
 #ifdef CASCADES
-// Cascaded shadow maps: CASCADES maps, tiles of one atlas. A lookup works in the coordinates of
-// the cascade's own map, [0, 1] (u_texmapscale: one texel of a tile), and reads the atlas through
-// shadowDepth, clamped to the tile's texel centres (each tile acts as a map with clamped edges).
-// The cascade's tile and its u_bias_slope are copied here before its lookup (cascadeLookup).
-vec4 g_cascade_tile;   // xy: the tile's lower-left corner in the atlas, zw: its size (texture units)
-vec4 g_cascade_slope;
+vec4 g_cascade_slope;  // the cascade's u_bias_slope
 #define SHADOW_SLOPE g_cascade_slope
 #elif defined(BIAS_AUTO) || defined(FILTER_PCSS)
 uniform vec4 u_bias_slope;      // x, y: tan of the half-angles (perspective) or half-extents
                                 // (orthographic); z, w: the light's near and far
 #define SHADOW_SLOPE u_bias_slope
+#endif
+
+#ifdef CUBE
+// A point light's cube: face i looks along +x, -x, +y, -y, +z, -z (shadow::cube_face_rotation).
+// Every face has the same perspective projection, a little wider than 90 degrees (the guard band
+// that lets a filter near a face's edge read the neighbouring directions' depth).
+uniform vec3 u_cube_light;     // the light's position
+uniform vec4 u_cube_tile[6];   // each face's tile (g_shadow_tile); zw = 0: the face was not drawn
+uniform vec3 u_cube_depth;     // x: 0.5 / the window's half-extent in tangent units; window depth = y - z / depth
+int g_cube_face;               // the face of the lookup
+
+// A direction from the light in face g_cube_face's eye space (the face looks down -z).
+vec3 cubeFaceEye(vec3 d) {
+    if (g_cube_face == 0) return vec3(d.z, d.y, -d.x);
+    if (g_cube_face == 1) return vec3(-d.z, d.y, d.x);
+    if (g_cube_face == 2) return vec3(-d.x, -d.z, -d.y);
+    if (g_cube_face == 3) return vec3(-d.x, d.z, d.y);
+    if (g_cube_face == 4) return vec3(-d.x, d.y, -d.z);
+    return d;
+}
+#define SHADOW_ROTATE(v) cubeFaceEye(v)
+#define SHADOW_CENTER vec2(0.0)
 #endif
 
 #ifdef BIAS_AUTO
@@ -29,20 +54,24 @@ uniform vec4 u_bias_slope;      // x, y: tan of the half-angles (perspective) or
 // unit of NDC x by z n_x tan_x / |n.r| (y likewise); orthographic: half_w n_x / |n_z|. Converted to
 // window depth by d(z_window)/d(z_eye). |n.r| is floored at 0.05 |r| (a surface within 3 degrees
 // of edge-on to the light, barely lit anyway), which caps the slope at 20.
-uniform mat3 u_light_rotation;  // world -> light eye space
 uniform vec2 u_bias_kernel;     // x: one texel in NDC (2 / map size); y: the kernel's reach in texels per axis
+#ifndef CUBE
+uniform mat3 u_light_rotation;  // world -> light eye space
+#define SHADOW_ROTATE(v) (u_light_rotation * (v))
 #ifdef LIGHT_PERSPECTIVE
 uniform vec2 u_bias_center;     // tan at the middle of the window (an asymmetric frustum; 0 when symmetric)
+#define SHADOW_CENTER u_bias_center
+#endif
 #endif
 
 // reach: how far the kernel reaches, in texels per axis.
 float shadowBiasReach(vec3 normal, vec3 c, float reach) {
-    vec3 nl = u_light_rotation * normal;
+    vec3 nl = SHADOW_ROTATE(normal);
     float n = SHADOW_SLOPE.z;
     float f = SHADOW_SLOPE.w;
     float across = (abs(nl.x) * SHADOW_SLOPE.x + abs(nl.y) * SHADOW_SLOPE.y) * u_bias_kernel.x * reach;
 #ifdef LIGHT_PERSPECTIVE
-    vec3 ray = vec3((2.0 * c.x - 1.0) * SHADOW_SLOPE.x + u_bias_center.x, (2.0 * c.y - 1.0) * SHADOW_SLOPE.y + u_bias_center.y, -1.0);
+    vec3 ray = vec3((2.0 * c.x - 1.0) * SHADOW_SLOPE.x + SHADOW_CENTER.x, (2.0 * c.y - 1.0) * SHADOW_SLOPE.y + SHADOW_CENTER.y, -1.0);
     float facing = max(abs(dot(nl, ray)), 0.05 * length(ray));
     float zEye = 2.0 * n * f / (f + n - (2.0 * c.z - 1.0) * (f - n));
     float dz = zEye * across / facing;
@@ -59,8 +88,8 @@ float shadowBias(vec3 normal, vec3 c) { return u_bias; }
 #endif
 
 float shadowDepth(vec2 uv) {
-#ifdef CASCADES
-    uv = g_cascade_tile.xy + clamp(uv, 0.5 * u_texmapscale, 1.0 - 0.5 * u_texmapscale) * g_cascade_tile.zw;
+#if defined(CASCADES) || defined(CUBE)
+    uv = g_shadow_tile.xy + clamp(uv, 0.5 * u_texmapscale, 1.0 - 0.5 * u_texmapscale) * g_shadow_tile.zw;
 #endif
 #ifdef ENC_RGBA
     return unpackDepth(texture2D(u_shadow_map, uv));
@@ -184,6 +213,38 @@ float shadowVisibility(vec4 shadowCoord, vec3 normal) {
 }
 #endif
 
+#if defined(CASCADES) || defined(CUBE)
+vec3 g_cascade_tint;           // --aov cascades: the colour of the cascade(s) or the cube's face used
+
+vec3 cascadeTint(int k) {
+    if (k == 0) return vec3(1.0, 0.2, 0.2);
+    if (k == 1) return vec3(0.2, 0.9, 0.2);
+    if (k == 2) return vec3(0.25, 0.4, 1.0);
+    if (k == 3) return vec3(1.0, 0.9, 0.1);
+    if (k == 4) return vec3(0.9, 0.3, 0.9);
+    return vec3(0.2, 0.9, 0.9);
+}
+#endif
+
+#ifdef CUBE
+// The face a point lies in (its direction's largest component: shadow::cube_face_of), and the
+// point in that face's map: a perspective lookup like one map's.
+float shadowCube(vec3 world, vec3 normal) {
+    vec3 d = world - u_cube_light;
+    vec3 a = abs(d);
+    g_cube_face = a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0 : 1) : a.y >= a.z ? (d.y >= 0.0 ? 2 : 3) : (d.z >= 0.0 ? 4 : 5);
+    g_cascade_tint = cascadeTint(g_cube_face);
+    g_shadow_tile = vec4(0.0);
+    for (int i = 0; i < 6; ++i)
+        if (i == g_cube_face) g_shadow_tile = u_cube_tile[i];
+    // A face not drawn sees nothing the camera sees.
+    if (g_shadow_tile.z == 0.0) return 1.0;
+    vec3 e = cubeFaceEye(d);
+    float depth = max(-e.z, 1e-6);
+    return shadowVisibility(vec4(0.5 + u_cube_depth.x * e.xy / depth, u_cube_depth.y - u_cube_depth.z / depth, 1.0), normal);
+}
+#endif
+
 #ifdef CASCADES
 // Every cascade looks along the light with the same axes: one matrix takes a world point into the
 // light's eye space, and each cascade's map is that scaled and offset per axis (its orthographic
@@ -196,14 +257,6 @@ uniform vec4 u_cascade_slope[CASCADES];   // its half-extents, near and far (u_b
 uniform vec4 u_cascade_end;    // each cascade's far end in camera view depth (x: the first's)
 uniform vec4 u_cascade_band;   // the band before each far end blended into the next cascade (0: none)
 uniform vec4 u_cascade_depth;  // camera view depth of a world point p: dot(xyz, p) + w
-vec3 g_cascade_tint;           // --aov cascades: the colour of the cascade(s) used
-
-vec3 cascadeTint(int k) {
-    if (k == 0) return vec3(1.0, 0.2, 0.2);
-    if (k == 1) return vec3(0.2, 0.9, 0.2);
-    if (k == 2) return vec3(0.25, 0.4, 1.0);
-    return vec3(1.0, 0.9, 0.1);
-}
 
 // Cascade k's visibility. A uniform array is indexed by a loop index only (GLSL ES 1.00,
 // appendix A: fragment shaders need constant-index-expressions).
@@ -212,7 +265,7 @@ float cascadeLookup(int k, vec3 eye, vec3 normal) {
     for (int i = 0; i < CASCADES; ++i) {
         if (i == k) {
             coord = vec4(eye * u_cascade_scale[i] + u_cascade_offset[i], 1.0);
-            g_cascade_tile = u_cascade_tile[i];
+            g_shadow_tile = u_cascade_tile[i];
             g_cascade_slope = u_cascade_slope[i];
         }
     }

@@ -85,11 +85,20 @@ std::vector<Option<Options>> make_table() {
 
     OptionInfo cascades = make_option_info("cascades", P::Technique, T::Choice,
                          "cascaded shadow maps for a directional light: the camera's depth range split into N maps "
-                         "of --map-size each, side by side in one atlas (near slices get the finer texels); auto = "
-                         "from the depth range the camera sees (one map per factor of 8); 1 = one map",
-                         "Cascades", {{"1", "1 (one map)"}, {"2", "2"}, {"3", "3"}, {"4", "4"}, {"auto", "auto"}});
-    add(cascades, [](Options& o, std::string_view v) { o.settings.cascades = v == "auto" ? 0 : int_of(v); },
-        [](const Options& o) { return o.settings.cascades == 0 ? std::string("auto") : std::to_string(o.settings.cascades); });
+                         "of --map-size each, side by side in one atlas (near slices get the finer texels); cube = "
+                         "a point light's six faces (omnidirectional), each --map-size; auto = from the scene, the "
+                         "camera and the light (cascades: one per factor of 8 in the depth range seen; a cube: a "
+                         "point light inside the scene); 1 = one map",
+                         "Cascades",
+                         {{"1", "1 (one map)"}, {"2", "2"}, {"3", "3"}, {"4", "4"}, {"cube", "cube (point light)"}, {"auto", "auto"}});
+    add(cascades,
+        [](Options& o, std::string_view v) {
+            o.settings.cascades = v == "auto" ? 0 : v == "cube" ? Settings::kCube : int_of(v);
+        },
+        [](const Options& o) {
+            const int n = o.settings.cascades;
+            return n == 0 ? std::string("auto") : n == Settings::kCube ? std::string("cube") : std::to_string(n);
+        });
 
     OptionInfo cascade_split = make_option_info("cascade-split", P::Technique, T::Number,
                          "--cascades: where the slices end, a blend of logarithmic (1: equal depth ratios) and uniform "

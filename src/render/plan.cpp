@@ -94,7 +94,17 @@ int PlanContext::add_resource(ResourceDesc desc, std::string content, std::strin
 }
 
 Pass& PlanContext::add_pass(Pass pass) {
-    if (pass.target.resource >= 0) pass.skipped = plan.resources[static_cast<size_t>(pass.target.resource)].reused;
+    if (pass.target.resource >= 0) {
+        const PlannedResource& r = plan.resources[static_cast<size_t>(pass.target.resource)];
+        pass.skipped = r.reused;
+        // A region with its own key (a cube face): reused when the last plan drew or kept the
+        // same there, into a resource like this one (not made again since).
+        if (!pass.skipped && !pass.content.empty() && previous)
+            if (const PlannedResource* before = previous->resource(r.desc.name); before && before->desc == r.desc)
+                pass.skipped = std::any_of(previous->passes.begin(), previous->passes.end(), [&](const Pass& q) {
+                    return q.name == pass.name && q.content == pass.content;
+                });
+    }
     plan.passes.push_back(std::move(pass));
     return plan.passes.back();
 }

@@ -26,6 +26,7 @@
 #include "render/variants.h"
 #include "scene/scene.h"
 #include "shadow/cascades.h"
+#include "shadow/cube.h"
 #include "shadow/light_frustum.h"
 
 namespace penumbra::render {
@@ -194,6 +195,10 @@ struct Pass {
     std::vector<Binding> bindings;
     std::vector<Draw> draws;
     bool skipped = false;  // its target's content is reused: nothing is drawn
+    // A key of what it draws into its region of the target (a cube face's tile), for a target
+    // whose content as a whole has none: the same key as the same pass's in the previous plan,
+    // into the same resource, and it is skipped (its region still holds it).
+    std::string content;
     // After its draws (a copy pass has none): its target's region copied into this resource's
     // texture with glCopyTexImage2D (Output::copy_to); -1: none.
     int copy_to = -1;
@@ -293,6 +298,9 @@ struct FramePlan {
     // their count was chosen ("--cascades 4", or auto's reason).
     std::vector<shadow::Cascade> cascades;
     std::string cascades_why;
+    // --cascades cube (or auto's choice of it): a point light's six faces, tiles of the shadow
+    // map's atlas; those drawn have a pass each (cascades_why says why a cube).
+    std::optional<shadow::CubeFit> cube;
     std::optional<VolumeStats> volumes;  // with technique volumes
     std::optional<AreaStats> area;       // with --area-samples > 1 and a light with a radius
     // The frame's stencil uses with their bits (empty: the frame uses no stencil) out of

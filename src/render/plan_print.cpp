@@ -178,10 +178,16 @@ std::string FramePlan::to_text() const {
                   static_cast<double>(camera.position.y), static_cast<double>(camera.position.z));
     o << buf;
     if (light_frustum) {
-        std::snprintf(buf, sizeof buf, "light: %s frustum, near %.4g, far %.4g, texel use %.1f%%\n",
+        std::snprintf(buf, sizeof buf, "light: %s frustum, near %.4g, far %.4g",
                       light_frustum->perspective ? "perspective" : "orthographic", static_cast<double>(light_frustum->znear),
-                      static_cast<double>(light_frustum->zfar), 100.0 * static_cast<double>(texel_use.value_or(0.0f)));
+                      static_cast<double>(light_frustum->zfar));
         o << buf;
+        // A cube's faces each cover their own share: none is given for the whole.
+        if (texel_use) {
+            std::snprintf(buf, sizeof buf, ", texel use %.1f%%", 100.0 * static_cast<double>(*texel_use));
+            o << buf;
+        }
+        o << "\n";
     }
     if (!cascades_why.empty()) o << "cascades: " << cascades_why << "\n";
     for (size_t i = 0; i < cascades.size(); ++i) {
@@ -194,6 +200,18 @@ std::string FramePlan::to_text() const {
                       static_cast<double>(c.radius), static_cast<double>(c.texel), 1.0 / static_cast<double>(c.texel),
                       c.tile_x, c.tile_y, c.casters.size());
         o << line;
+    }
+    if (cube) {
+        std::snprintf(buf, sizeof buf, "cube: %d of 6 faces drawn (%dx%d each, %d texel guard), depth %.4g..%.4g:",
+                      cube->drawn(), cube->tile, cube->tile, cube->guard, static_cast<double>(cube->znear),
+                      static_cast<double>(cube->zfar));
+        o << buf;
+        for (int f = 0; f < shadow::kCubeFaces; ++f) {
+            const shadow::CubeFace& face = cube->faces[static_cast<size_t>(f)];
+            o << " " << shadow::cube_face_name(f)
+              << (face.drawn ? " (" + std::to_string(face.casters.size()) + " caster(s))" : std::string(" (sees nothing in view)"));
+        }
+        o << "\n";
     }
     if (volumes) {
         std::snprintf(buf, sizeof buf,
@@ -290,6 +308,20 @@ std::string FramePlan::to_json() const {
              ",\"view_proj\":" + json_floats(c.frustum.view_proj()) + "}";
     }
     j += "]}";
+    if (cube) {
+        j += ",\"cube\":{\"tile\":" + std::to_string(cube->tile) + ",\"guard\":" + std::to_string(cube->guard) +
+             ",\"near\":" + json_number(static_cast<double>(cube->znear)) +
+             ",\"far\":" + json_number(static_cast<double>(cube->zfar)) + ",\"faces\":[";
+        for (int f = 0; f < shadow::kCubeFaces; ++f) {
+            const shadow::CubeFace& face = cube->faces[static_cast<size_t>(f)];
+            j += std::string(f ? "," : "") + "{\"face\":" + json_quote(shadow::cube_face_name(f)) +
+                 ",\"drawn\":" + json_bool(face.drawn) + ",\"tile\":[" + std::to_string(face.tile_x) + "," +
+                 std::to_string(face.tile_y) + "],\"casters\":" + std::to_string(face.casters.size()) + "}";
+        }
+        j += "]}";
+    } else {
+        j += ",\"cube\":null";
+    }
     if (volumes)
         j += ",\"volumes\":{\"zpass_casters\":" + std::to_string(volumes->zpass_casters) +
              ",\"zfail_casters\":" + std::to_string(volumes->zfail_casters) +

@@ -116,7 +116,9 @@ struct Settings {
     shadow::PcfKernel pcf_kernel = shadow::PcfKernel::EarlyExit;
     int map_size = 1024;  // with cascades: each cascade's map (the atlas holds them side by side)
     // --cascades: the camera's depth range split into this many shadow maps, 1..4 (1: one map);
-    // 0 = auto (shadow::auto_cascade_count: from the scene, the camera and the light).
+    // kCube: a point light's six faces (shadow/cube.h); 0 = auto (one map, cascades or a cube from
+    // the scene, the camera and the light: shadow::auto_cascade_count, shadow::cube_wanted).
+    static constexpr int kCube = 6;
     int cascades = 1;
     float cascade_split = 0.9f;  // --cascade-split: 0 uniform splits, 1 logarithmic
     bool cascade_snap = true;    // --cascade-snap: each cascade's window on whole texels (no shimmer)

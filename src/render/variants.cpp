@@ -93,6 +93,7 @@ Variant lit_variant(const LitFeatures& f) {
         if (f.light_perspective && (f.bias_auto || pcss)) v.defines.emplace_back("LIGHT_PERSPECTIVE");
         if (f.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
         if (f.cascades > 1) v.defines.push_back("CASCADES " + std::to_string(f.cascades));
+        if (f.cube) v.defines.emplace_back("CUBE");
     } else if (f.in_shadow) {
         v.defines = {"IN_SHADOW"};
     } else if (f.area_lookup) {
@@ -397,6 +398,23 @@ std::vector<Variant> all_variants() {
                         if (bits == 4) c.gbuffer = Gbuffer::Read;
                         out.push_back(lit_variant(c));
                     }
+    // --cascades cube: the same, the light perspective.
+    for (auto e : shadow::kAllEncodings)
+        for (auto f : {shadow::Filter::Hard, shadow::Filter::PCF4x4, shadow::Filter::PCSS})
+            for (bool mediump : {false, true})
+                for (int bits = 0; bits < 5; ++bits) {
+                    LitFeatures c;
+                    c.shadow_map = c.bias_auto = c.light_perspective = c.cube = true;
+                    c.encoding = e;
+                    c.filter = f;
+                    c.pcf_kernel = shadow::PcfKernel::EarlyExit;
+                    c.mediump = mediump;
+                    c.textured = bits == 1;
+                    c.visibility_aov = bits == 2;
+                    c.cascades_aov = bits == 3;
+                    if (bits == 4) c.gbuffer = Gbuffer::Read;
+                    out.push_back(lit_variant(c));
+                }
     // PCSS's tap counts, each once (the loops' bounds).
     for (int n : {1, 8, 32, 64}) {
         LitFeatures p;

@@ -258,7 +258,8 @@ TEST_F(CascadePlan, AutoExplainsItsChoiceAndAPointLightGetsOneMap) {
     s.light.position = glm::vec3(0.0f, 50.0f, 0.0f);
     p = make();
     EXPECT_TRUE(p.cascades.empty());
-    EXPECT_EQ(p.cascades_why, "auto: one map: the light is not directional");
+    EXPECT_FALSE(p.cube.has_value());
+    EXPECT_EQ(p.cascades_why, "auto: one map: the point light is outside the scene's bounds");
     ASSERT_EQ(render::parse_option(settings, "cascades", "4"), "");
     p = make();
     EXPECT_TRUE(p.cascades.empty());

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "render/techniques/technique.h"
+#include "shadow/cube.h"
 #include "shadow/pcf.h"
 
 namespace penumbra::render {
@@ -174,6 +175,39 @@ void add_cascade_uniforms(const PlanContext& c, Binding& b, const ResourceDesc& 
     b.uniforms.push_back({"u_cascade_depth", -glm::vec4(v[0][2], v[1][2], v[2][2], v[3][2])});
 }
 
+// Texels of each cube face's tile beyond its 90 degrees, per side, so that a filter's taps near a
+// face's edge read the depth of the directions there instead of the edge's texel again: none for
+// one tap (it never leaves the face by more than half a texel, and the clamp to the tile holds
+// it); PCF's reach (1.5 texels and the nearest texel's half) for PCF; PCSS's taps reach up to an
+// eighth of the map, so it gets a 32nd of the tile and its widest penumbrae near an edge are
+// clamped. Measured on bulb_room.gltf, PCF 4x4, within 2 pixels of a seam: 1.147 % -> 1.016 %
+// of error at 128 texels, 0.443 % -> 0.382 % at 256 (docs/cube.md).
+int cube_guard(const Settings& s, int size) {
+    switch (s.filter) {
+        case shadow::Filter::Hard: return 0;
+        case shadow::Filter::PCSS: return std::max(4, size / 32);
+        default: return 2;
+    }
+}
+
+// The cube's uniforms (shadow.glsl, CUBE): the light's position, each face's tile (zw 0: not
+// drawn), and the one projection's constants: tangent to texture, and the window depth of a depth
+// d along a face's axis, f / (f - n) - (f n / (f - n)) / d.
+void add_cube_uniforms(const shadow::CubeFit& fit, const scene::Light& light, Binding& b, const ResourceDesc& map) {
+    const float w = static_cast<float>(map.width), h = static_cast<float>(map.height);
+    const float t = static_cast<float>(fit.tile);
+    for (int f = 0; f < shadow::kCubeFaces; ++f) {
+        const shadow::CubeFace& face = fit.faces[static_cast<size_t>(f)];
+        b.uniforms.push_back({"u_cube_tile[" + std::to_string(f) + "]",
+                              face.drawn ? glm::vec4(static_cast<float>(face.tile_x) / w, static_cast<float>(face.tile_y) / h,
+                                                     t / w, t / h)
+                                         : glm::vec4(0.0f)});
+    }
+    const float n = fit.znear, f = fit.zfar;
+    b.uniforms.push_back({"u_cube_light", light.position});
+    b.uniforms.push_back({"u_cube_depth", glm::vec3(0.5f / fit.tangent, f / (f - n), f * n / (f - n))});
+}
+
 class ShadowMapModule : public Module {
 public:
     std::string_view name() const override { return "shadowmap"; }
@@ -241,6 +275,11 @@ public:
         const Settings& s = c.settings;
         if (s.cascades == 1) return false;  // one map: nothing to decide (the default's frame does no more work)
         const ShadowBounds b = shadow_bounds(c.scene, s.blend_shadows);
+        if (cubed(c, b, size)) return true;
+        // A cube that could not be made, or auto with any light but a directional one: cubed()
+        // said why there is one map.
+        if (s.cascades == Settings::kCube || (s.cascades == 0 && c.light.type != scene::LightType::Directional))
+            return false;
         const int n = cascade_count(c, b);
         if (n <= 1) return false;
         int columns = 1, rows = 1;
@@ -300,6 +339,69 @@ public:
         return true;
     }
 
+    // --cascades cube, or auto with a point light among what it lights (shadow::cube_wanted): six
+    // faces of `size`, tiles of one atlas (3 x 2), one pass into each face that sees a visible
+    // receiver, each with its own content key (a still face is not drawn again). false: one map
+    // (a note says why when the cube was asked for).
+    bool cubed(PlanContext& c, const ShadowBounds& b, int size) const {
+        const Settings& s = c.settings;
+        bool want = s.cascades == Settings::kCube;
+        if (want) {
+            c.plan.cascades_why = "--cascades cube";
+        } else if (s.cascades == 0 && c.light.type != scene::LightType::Directional) {
+            std::string why;
+            want = shadow::cube_wanted(c.light, b.receivers, b.casters, why);
+            c.plan.cascades_why = "auto: " + why;
+        }
+        if (!want) return false;
+        const int max = c.caps.max_target_size();
+        if (size * 3 > max) {
+            c.plan.notes.push_back("--map-size " + std::to_string(size) + " with a cube: each face cut to " +
+                                   std::to_string(max / 3) + " so the atlas (3 x 2 faces) fits this context's maximum of " +
+                                   std::to_string(max));
+            size = max / 3;
+        }
+        std::string why;
+        shadow::CubeFit fit = shadow::fit_cube(c.light, b.receivers, b.casters, c.plan.camera.view_proj, size,
+                                               cube_guard(s, size), &why);
+        if (fit.drawn() == 0) {
+            c.plan.notes.push_back(c.plan.cascades_why + ": one map instead, " + why);
+            c.plan.cascades_why += " -> one map (" + why + ")";
+            return false;
+        }
+        const int r = c.add_resource(map_desc(c, fit.atlas_width, fit.atlas_height), "",
+                                     "the depth seen from the light, the six faces of a cube side by side (3 x 2)");
+        for (int f = 0; f < shadow::kCubeFaces; ++f) {
+            const shadow::CubeFace& face = fit.faces[static_cast<size_t>(f)];
+            if (!face.drawn) continue;
+            if (!c.plan.light_frustum) c.plan.light_frustum = face.frustum;
+            std::vector<int> casters;
+            for (int j : face.casters) casters.push_back(c.casters[static_cast<size_t>(j)]);
+            int cut_outs = 0;
+            Pass p = map_pass(c, casters, cut_outs);
+            p.name = c.named(kMap) + " face " + shadow::cube_face_name(f);
+            p.target = {r, size, size, face.tile_x, face.tile_y, true};
+            p.view_proj = face.frustum.view_proj();
+            ContentKey key;
+            key.add(p.view_proj);
+            for (int i : casters) key.add_placement(c.scene, i);
+            add_packing(key, c);
+            p.content = key.str();
+            char depths[64];
+            std::snprintf(depths, sizeof depths, "depth %.3g..%.3g", static_cast<double>(fit.znear),
+                          static_cast<double>(fit.zfar));
+            p.detail = std::to_string(size) + "x" + std::to_string(size) + " tile at (" + std::to_string(face.tile_x) +
+                       ", " + std::to_string(face.tile_y) + ") " + std::string(shadow::to_string(s.encoding)) +
+                       ", perspective " + percent(fit.tangent - 1.0f) + " wider than 90 degrees (" +
+                       std::to_string(fit.guard) + " texel guard), " + depths + ", " +
+                       caster_count(casters.size(), c.casters.size()) + ", faces " + faces_summary(p) +
+                       (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
+            c.add_pass(std::move(p));
+        }
+        c.plan.cube = std::move(fit);
+        return true;
+    }
+
     bool own_view(PlanContext& c) const override {
         const int r = c.plan.resource_index(c.named(kMap));
         if (c.settings.aov != Aov::LightDepth || r < 0) return false;
@@ -337,11 +439,14 @@ public:
         const auto& cascades = c.plan.cascades;
         const ResourceDesc& map = c.plan.resources[static_cast<size_t>(r)].desc;
         // One texel of the map, or of a cascade's tile (its lookups work in the tile's coordinates).
-        const float texel = 1.0f / static_cast<float>(cascades.empty() ? map.width : map.width / 2);
+        const auto& cube = c.plan.cube;
+        const float texel =
+            1.0f / static_cast<float>(cube ? cube->tile : cascades.empty() ? map.width : map.width / 2);
         Binding b{"shadow lookup",
                   {{"u_shadow_map", kShadowUnit}, {"u_texmapscale", glm::vec2(texel, texel)}, {"u_bias", s.effective_bias()}},
                   {{kShadowUnit, r}}};
-        if (cascades.empty()) b.uniforms.push_back({"u_light_matrix", shadow::clip_to_texture() * f.view_proj()});
+        if (cube) add_cube_uniforms(*cube, c.light, b, map);
+        else if (cascades.empty()) b.uniforms.push_back({"u_light_matrix", shadow::clip_to_texture() * f.view_proj()});
         else add_cascade_uniforms(c, b, map);
         const bool pcss = s.filter == shadow::Filter::PCSS;
         if (cascades.empty() && (s.bias_auto || pcss))
@@ -356,10 +461,11 @@ public:
             b.uniforms.push_back({"u_pcss", glm::vec2(size, 0.125f / texel)});
         }
         if (s.bias_auto) {
-            b.uniforms.push_back({"u_light_rotation", glm::mat3(f.view)});
+            // A cube turns the normal by its face's rotation in the shader (cubeFaceEye).
+            if (!cube) b.uniforms.push_back({"u_light_rotation", glm::mat3(f.view)});
             b.uniforms.push_back({"u_bias_kernel", glm::vec2(2.0f * texel, shadow::kernel_reach_texels(s.filter))});
             // The window's middle (tangents) of an asymmetric perspective frustum: P[2][0] / P[0][0].
-            if (f.perspective)
+            if (f.perspective && !cube)
                 b.uniforms.push_back({"u_bias_center", glm::vec2(f.proj[2][0] / f.proj[0][0], f.proj[2][1] / f.proj[1][1])});
         }
         const std::uint32_t bit = 1u << cam.bindings.size();
@@ -377,6 +483,7 @@ public:
             lf.pcss_search = s.pcss_search;
             lf.pcss_taps = s.pcss_taps;
             lf.cascades = static_cast<int>(cascades.size());
+            lf.cube = cube.has_value();
             lf.cascades_aov = s.aov == Aov::Cascades;
             it.bindings |= bit;
         }
@@ -386,6 +493,8 @@ public:
         if (pcss)
             kernel = " (" + std::to_string(s.pcss_search) + " search + " + std::to_string(s.pcss_taps) +
                      " filter taps, light radius " + number(static_cast<double>(c.light.radius)) + ")";
+        if (cube)
+            cam.detail += ", a cube of " + std::to_string(cube->drawn()) + " face(s) drawn of 6";
         if (!cascades.empty())
             cam.detail += ", " + std::to_string(cascades.size()) + " cascades" +
                           (s.cascade_blend > 0.0f ? ", blended over " + percent(s.cascade_blend) + " of each slice" : "");
