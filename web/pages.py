@@ -108,6 +108,24 @@ def controls_html(exercise: dict, options: dict) -> str:
     return "\n".join(out)
 
 
+def fly_html(exercise: dict) -> str:
+    """The fly camera's panel (an exercise over the terrain, "fly" in the catalogue): buttons for
+    each move, read by penumbra-page.js (data-fly), and the camera's position."""
+    if not exercise.get("fly"):
+        return ""
+    moves = [("forward", "Forward"), ("back", "Back"), ("left", "Left"), ("right", "Right"),
+             ("turn-left", "Turn left"), ("turn-right", "Turn right"), ("look-up", "Look up"),
+             ("look-down", "Look down"), ("rise", "Up"), ("sink", "Down")]
+    buttons = "\n        ".join(f'<button type="button" data-fly="{m}">{esc(text)}</button>' for m, text in moves)
+    return ("    <fieldset id=\"fly\">\n      <legend>Camera</legend>\n"
+            "      <p class=\"hint\" id=\"fly-hint\">Drag the picture to look around. Click it, then W A S D or the "
+            "arrow keys move, Q and E go down and up, Shift goes 10 times as far.</p>\n"
+            f"      <div class=\"row fly-buttons\">\n        {buttons}\n"
+            "        <button type=\"button\" data-fly=\"reset\">Scene camera</button>\n      </div>\n"
+            "      <p class=\"readout\">Camera: <output id=\"camera\" for=\"canvas\">–</output></p>\n"
+            "    </fieldset>\n")
+
+
 def write_if_changed(path: pathlib.Path, text: str) -> None:
     if not path.exists() or path.read_text() != text:
         path.write_text(text)
@@ -124,7 +142,7 @@ def main() -> None:
         write_if_changed(out / f'{ex["name"]}.html', page.substitute(
             name=ex["name"], title=esc(ex["title"]), text=esc(ex["text"]), look_for=esc(ex["lookFor"]),
             canvas=esc(ex["canvas"]),
-            controls=controls_html(ex, catalog["options"])))
+            controls=controls_html(ex, catalog["options"]), fly=fly_html(ex)))
         items.append(f'  <li><a href="{ex["name"]}.html">{esc(ex["title"])}</a>\n    <p>{esc(ex["brief"])}</p></li>')
     write_if_changed(out / "index.html", index.substitute(exercises="\n".join(items)))
 

@@ -15,6 +15,11 @@
 //   <input type=range|number data-option>         the number (a slider and its box, kept in step)
 //   #bias + radios name=bias-mode                 default (the encoding's), auto, or the number
 //                                                 in #bias (fixed)
+//   #fly with <button data-fly=MOVE>              the fly camera of an exercise over the terrain
+//                                                 (the cascades page): the buttons, keys on the
+//                                                 focused canvas, a drag on it to look around; the
+//                                                 camera goes into the URL (camera=x,y,z,yaw,pitch)
+//   #cascade-plan                                 the last frame plan's cascade lines, where it has them
 'use strict';
 
 (function () {
@@ -30,6 +35,10 @@
   const MAX_SIDE = 2048; // the backing store's cap, a side
   const samplesRow = document.getElementById('samples-row');
   const samplesEl = document.getElementById('samples');
+  const flyEl = document.getElementById('fly');
+  const cameraEl = document.getElementById('camera');
+  const planRow = document.getElementById('cascade-plan-row');
+  const planEl = document.getElementById('cascade-plan');
   let api = null;
   let lastStatus = '';
   let firstFrameMs = null; // navigation start to the first frame drawn
@@ -218,8 +227,112 @@
     return a.done + ' of ' + a.total + how;
   }
 
+  // ---- the fly camera (an exercise over the terrain) ------------------------------------------
+  // A press moves 2 m or turns 5 degrees (looks up or down 3); Shift: 10 times as far (turns 4 times).
+  const MOVES = {
+    forward: [2, 0, 0, 0, 0], back: [-2, 0, 0, 0, 0], left: [0, -2, 0, 0, 0], right: [0, 2, 0, 0, 0],
+    rise: [0, 0, 2, 0, 0], sink: [0, 0, -2, 0, 0], 'turn-left': [0, 0, 0, -5, 0], 'turn-right': [0, 0, 0, 5, 0],
+    'look-up': [0, 0, 0, 0, 3], 'look-down': [0, 0, 0, 0, -3],
+  };
+  const FLY_KEYS = {
+    KeyW: 'forward', ArrowUp: 'forward', KeyS: 'back', ArrowDown: 'back', KeyA: 'left', KeyD: 'right',
+    ArrowLeft: 'turn-left', ArrowRight: 'turn-right', KeyE: 'rise', KeyQ: 'sink', KeyR: 'look-up', KeyF: 'look-down',
+  };
+  const DRAG_DEGREES = 0.25; // a CSS pixel of drag turns the view this much
+  let urlTimer = null;
+
+  function showCamera(s) {
+    if (!cameraEl || !s.camera) return;
+    const c = s.camera;
+    const text = c.x.toFixed(1) + ', ' + c.y.toFixed(1) + ', ' + c.z.toFixed(1) + ' m, heading ' + c.yaw.toFixed(0) +
+      '°, pitch ' + c.pitch.toFixed(0) + '°' + (c.moved ? '' : ' (the scene\'s camera)');
+    if (cameraEl.textContent !== text) cameraEl.textContent = text;
+  }
+
+  // After a move: the readout at once, the URL a moment later (a drag moves the camera at every
+  // mouse event; browsers limit how often a page may replace its URL).
+  function cameraMoved(now = false) {
+    showCamera(state());
+    if (now) {
+      clearTimeout(urlTimer);
+      urlTimer = null;
+      updateUrl();
+    } else if (!urlTimer) {
+      urlTimer = setTimeout(() => {
+        urlTimer = null;
+        updateUrl();
+      }, 200);
+    }
+  }
+
+  function flyBy(forward, right, up, yaw, pitch) {
+    return Module._penumbra_fly(forward, right, up, yaw, pitch) === 1;
+  }
+
+  function flyMove(move, shift) {
+    const m = MOVES[move];
+    const k = shift ? 10 : 1;
+    const turn = shift ? 4 : 1;
+    flyBy(m[0] * k, m[1] * k, m[2] * k, m[3] * turn, m[4] * turn);
+    cameraMoved();
+  }
+
+  function bindFly() {
+    if (!flyEl) return;
+    for (const b of flyEl.querySelectorAll('button[data-fly]')) {
+      b.addEventListener('click', (e) => {
+        if (b.dataset.fly === 'reset') {
+          Module._penumbra_reset_camera();
+          cameraMoved(true);
+        } else {
+          flyMove(b.dataset.fly, e.shiftKey);
+        }
+      });
+    }
+    // The canvas takes the keys once clicked (or reached by Tab), and a drag on it looks around.
+    canvas.tabIndex = 0;
+    canvas.setAttribute('aria-describedby', 'fly-hint');
+    canvas.addEventListener('keydown', (e) => {
+      const move = FLY_KEYS[e.code];
+      if (!move || e.ctrlKey || e.metaKey || e.altKey) return;
+      e.preventDefault();
+      flyMove(move, e.shiftKey);
+    });
+    let drag = null;
+    canvas.addEventListener('pointerdown', (e) => {
+      drag = { x: e.clientX, y: e.clientY };
+      canvas.setPointerCapture(e.pointerId);
+      canvas.focus();
+    });
+    canvas.addEventListener('pointermove', (e) => {
+      if (!drag) return;
+      const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
+      drag = { x: e.clientX, y: e.clientY };
+      if (dx || dy) {
+        flyBy(0, 0, 0, dx * DRAG_DEGREES, -dy * DRAG_DEGREES);
+        cameraMoved();
+      }
+    });
+    const endDrag = () => { drag = null; };
+    canvas.addEventListener('pointerup', endDrag);
+    canvas.addEventListener('pointercancel', endDrag);
+  }
+
+  // The plan's cascade lines: a pass per cascade ("shadow-map cascade N: ... view depth A..B,
+  // texel T, ...") and the camera pass's cascades and blend.
+  function cascadePlan() {
+    const plan = Module.UTF8ToString(Module._penumbra_plan());
+    return plan.split('\n').filter((l) => /cascade/.test(l)).map((l) => l.trim()).join('\n');
+  }
+
   function poll() {
     const s = state();
+    showCamera(s);
+    if (planRow) {
+      const lines = cascadePlan();
+      planRow.hidden = !lines;
+      if (planEl.textContent !== lines) planEl.textContent = lines;
+    }
     msEl.textContent = s.lost ? '– (no context)' : s.ms > 0 ? s.ms.toFixed(2) + ' ms/frame' : '–';
     lostEl.hidden = !s.lost;
     // What the frame had to change for this canvas (W09P2b: a copy no larger than the canvas).
@@ -247,6 +360,7 @@
     const notes = api.setQuery(search);
     const problems = notes ? notes.split('\n') : [];
     bindControls();
+    bindFly();
     syncControls();
     updateUrl();
     if (problems.length) {
@@ -308,6 +422,17 @@
     setOption: (name, value) => apply(name, value),
     query: () => api.query(),
     plan: () => Module.UTF8ToString(Module._penumbra_plan()),
+    // The fly camera: metres forward, right, up, then degrees of yaw and pitch; the URL follows
+    // at once. False where the page has no fly camera.
+    fly: (forward, right, up, yaw, pitch) => {
+      const ok = flyBy(forward, right, up, yaw, pitch);
+      cameraMoved(true);
+      return ok;
+    },
+    resetCamera: () => {
+      Module._penumbra_reset_camera();
+      cameraMoved(true);
+    },
     // The first frame's time after navigation start (ms), null until it is drawn.
     firstFrameMs: () => firstFrameMs,
     // Fixes the backing store at w x h pixels (the tests compare with 512x512 renders); no

@@ -16,7 +16,7 @@ export const CHROMIUM_ARGS = [
   '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update',
   '--disable-sync',
 ];
-export const PAGES = ['w09p1', 'w09p2a', 'w09p2b', 'w09p2c', 'volumes', 'soft', 'stencil', 'multipass'];
+export const PAGES = ['w09p1', 'w09p2a', 'w09p2b', 'w09p2c', 'volumes', 'soft', 'stencil', 'multipass', 'cascades'];
 
 const TYPES = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.css': 'text/css; charset=utf-8',
