@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `penumbra bench --cascades --quick`: cascades against one map on the terrain, checked for
 # well-formed outputs and for what they must show (never timings): the cascades' error below the
-# one map's at the same memory, and the free windows' flips above the snapped ones'.
+# one map's at the same memory, and the free windows' flips above the snapped ones'. Then on the
+# bulb in a room: the cube's error below a tenth of the one perspective map's.
 # usage: bench_cascades_quick.sh PENUMBRA OUT_DIR SOURCE_DIR
 set -euo pipefail
 penumbra=$1 out=$2 src=$3
@@ -26,3 +27,17 @@ print("ok: cascades %s %% vs one map %s %%; flips snapped %s %%, free %s %%" %
       (four["error_pct"], one["error_pct"], four["flips_pct"], free["flips_pct"]))
 PY
 grep -q "^| 4 x 512 |" "$out/cascades.md" || { echo "FAIL: cascades.md lacks the 4 x 512 row"; exit 1; }
+
+# The point light: a cube's faces against one perspective map.
+"$penumbra" bench --cascades --quick --scenes tests/data/bulb_room.gltf --out-dir "$out/cube"
+python3 - "$out/cube/cascades.csv" <<'PY'
+import csv, sys
+rows = {r["config"]: r for r in csv.DictReader(open(sys.argv[1]))}
+assert set(rows) == {"1 x 1024", "cube 6 x 512"}, rows.keys()
+one, cube = rows["1 x 1024"], rows["cube 6 x 512"]
+assert cube["cascades"] == "cube" and one["cascades"] == "1"
+assert float(cube["error_pct"]) < float(one["error_pct"]) / 10, (cube["error_pct"], one["error_pct"])
+assert float(cube["ms_per_frame"]) > 0 and float(one["ms_per_frame"]) > 0
+print("ok: cube %s %% vs one perspective map %s %%" % (cube["error_pct"], one["error_pct"]))
+PY
+grep -q "^# A point light's cube against one perspective map" "$out/cube/cascades.md" || { echo "FAIL: the cube's cascades.md has no title"; exit 1; }

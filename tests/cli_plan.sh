@@ -55,6 +55,25 @@ assert (m["width"], m["height"]) == (512, 512), m' && echo "ok cascades auto: 4 
   || { echo "FAIL cascades auto"; fail=1; }
 "$penumbra" plan --cascades 4 --size 64x64 | grep -q "note: --cascades 4: one map instead, cascades need a directional light" \
   && echo "ok cascades point light: one map, a note" || { echo "FAIL cascades with the course's point light"; fail=1; }
+# A point light's cube: auto picks it for the bulb in the room (one pass per face, each into its
+# tile of a 3 x 2 atlas, the reason and the faces printed); render -v names the same passes.
+check cube --scene "$data/bulb_room.gltf" --cascades cube --map-size 128 --size 64x64 --filter pcf4x4
+"$penumbra" plan --scene "$data/bulb_room.gltf" --cascades auto --map-size 128 --size 64x64 --json > cube.json &&
+python3 -c '
+import json
+p = json.load(open("cube.json"))
+assert p["cascades"]["why"] == "auto: a cube: the point light is inside the receivers\x27 bounds", p["cascades"]["why"]
+c = p["cube"]
+faces = [f for f in c["faces"] if f["drawn"]]
+assert [q["name"] for q in p["passes"]][:len(faces)] == ["shadow-map face " + f["face"] for f in faces]
+assert [f["tile"] for f in c["faces"]] == [[0, 0], [128, 0], [256, 0], [0, 128], [128, 128], [256, 128]], c["faces"]
+m = [r for r in p["resources"] if r["name"] == "shadow-map"][0]
+assert (m["width"], m["height"]) == (384, 256), m' && echo "ok cube auto: the faces in a 3 x 2 atlas, the reason" \
+  || { echo "FAIL cube auto"; fail=1; }
+"$penumbra" plan --scene "$data/bulb_room.gltf" --cascades cube --size 64x64 | grep -q "^cube: 6 of 6 faces drawn" \
+  && echo "ok cube: the faces printed" || { echo "FAIL cube's text plan"; fail=1; }
+"$penumbra" plan --scene "$data/terrain_km.gltf" --cascades cube --size 64x64 | grep -q "note: --cascades cube: one map instead, the light is not a point light" \
+  && echo "ok cube with a sun: one map, a note" || { echo "FAIL cube with a directional light"; fail=1; }
 
 # Shadow volumes: the plan says what they cost and which method each caster got.
 "$penumbra" plan --technique volumes --eye in-shadow --size 64x64 --json > volumes.json &&

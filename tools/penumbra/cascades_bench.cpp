@@ -1,6 +1,7 @@
 // penumbra bench --cascades: cascaded shadow maps against one map on a large scene (by default
-// tests/data/terrain_km.gltf: a kilometre of hills under a low sun, the camera near the ground).
-// Each configuration (cascades x map size, snapping, blending) gets: the visibility AOV against
+// tests/data/terrain_km.gltf: a kilometre of hills under a low sun, the camera near the ground),
+// or, for a scene lit by a point light (tests/data/bulb_room.gltf), a cube's six faces against one
+// perspective map. Each configuration (cascades x map size, snapping, blending) gets: the visibility AOV against
 // the ray-traced truth in bands of the camera's view depth (near to far), ms/frame of a slowly
 // panning camera (the maps redrawn every frame), the map's bytes, each cascade's texel size, and
 // the shimmer: the share of pixels whose lit state flips from frame to frame of the pan, against
@@ -29,8 +30,8 @@ namespace penumbra::tools::bench {
 namespace {
 
 struct Config {
-    std::string label;  // "4 x 2048", "4 x 2048 not snapped"
-    int cascades = 1;
+    std::string label;  // "4 x 2048", "4 x 2048 not snapped", "cube 6 x 1024"
+    int cascades = 1;   // render::Settings::kCube: a cube
     int map = 1024;
     bool snap = true;
     float blend = 0.1f;
@@ -49,7 +50,15 @@ struct CascadeRow {
 constexpr float kPanDegrees = 0.05f;  // a frame of the pan
 constexpr int kShimmerFrames = 6;
 
-std::vector<Config> configs(bool quick) {
+std::vector<Config> configs(bool quick, bool point_light) {
+    constexpr int kCube = render::Settings::kCube;
+    if (point_light && quick) return {{"1 x 1024", 1, 1024, true, 0.1f}, {"cube 6 x 512", kCube, 512, true, 0.1f}};
+    if (point_light)
+        return {{"1 x 2048", 1, 2048, true, 0.1f},
+                {"1 x 4096", 1, 4096, true, 0.1f},
+                {"cube 6 x 512", kCube, 512, true, 0.1f},
+                {"cube 6 x 1024", kCube, 1024, true, 0.1f},
+                {"cube 6 x 2048", kCube, 2048, true, 0.1f}};
     if (quick) return {{"1 x 1024", 1, 1024, true, 0.1f}, {"4 x 512", 4, 512, true, 0.1f}, {"4 x 512 not snapped", 4, 512, false, 0.1f}};
     return {{"1 x 4096", 1, 4096, true, 0.1f},
             {"1 x 2048", 1, 2048, true, 0.1f},
@@ -124,8 +133,9 @@ void run_cascades_bench(const BenchOptions& in) {
     scene::SceneSource src = open_scene(scene_name, scene::Eye::Scene, o.allow_outside);
     prepare_output_dir("--out-dir", o.out_dir);
     const scene::Scene still = src.at(0.0);
-    if (still.light.type != scene::LightType::Directional)
-        std::fprintf(stderr, "note: %s has no directional light: every configuration is one map\n",
+    const bool point_light = still.light.type == scene::LightType::Point;
+    if (still.light.type == scene::LightType::Spot)
+        std::fprintf(stderr, "note: %s has a spot light: every configuration is one map\n",
                      scene::printable(scene_name).c_str());
 
     auto ctx = make_context();
@@ -157,7 +167,7 @@ void run_cascades_bench(const BenchOptions& in) {
                        (kShimmerFrames - 1);
 
     std::vector<CascadeRow> rows;
-    for (const Config& c : configs(o.quick)) {
+    for (const Config& c : configs(o.quick, point_light)) {
         CascadeRow row;
         row.c = c;
         render::Settings s = settings_of(base, c);
@@ -175,7 +185,10 @@ void run_cascades_bench(const BenchOptions& in) {
                 row.bands = measure::score_by_band(vis, truths.front().lit, valid0, depth, edges);
                 row.bytes = plan.resource("shadow-map") ? plan.resource("shadow-map")->desc.bytes() : 0;
                 for (const auto& k : plan.cascades) row.texels.push_back(k.texel);
-                if (plan.cascades.empty() && plan.light_frustum)
+                if (plan.cube) {
+                    // A face's texel 1 unit from the light, along its axis (tangents 2T / tile).
+                    row.texels.push_back(2.0f * plan.cube->tangent / static_cast<float>(plan.cube->tile));
+                } else if (plan.cascades.empty() && plan.light_frustum && !plan.light_frustum->perspective)
                     row.texels.push_back(2.0f / plan.light_frustum->proj[0][0] / static_cast<float>(c.map));
             } else {
                 row.flips += measure::flip_pct(measure::lit_flags(prev), measure::lit_flags(vis),
@@ -191,7 +204,9 @@ void run_cascades_bench(const BenchOptions& in) {
     }
     gl::check_errors("the cascades' accuracy pass");
 
-    // ms/frame: rounds interleaved over the configurations, each the pan's frames.
+    // ms/frame: rounds interleaved over the configurations, each the pan's frames. A point light
+    // also moves a millimetre a frame, so that a cube's faces are redrawn every frame as the one
+    // map is (a still light's faces are kept: the plan reuses them).
     std::vector<std::vector<double>> rounds(rows.size());
     for (int k = 0; k < o.rounds; ++k)
         for (size_t i = 0; i < rows.size(); ++i) {
@@ -199,6 +214,7 @@ void run_cascades_bench(const BenchOptions& in) {
             scene::Scene sc = still;
             const Timing t = time_frames(r, s, in0, 1, o.frames, [&](int frame) -> const scene::Scene& {
                 sc.camera.view = panned(still.camera.view, frame);
+                if (point_light) sc.light.position = still.light.position + glm::vec3(0.001f * static_cast<float>(frame), 0.0f, 0.0f);
                 return sc;
             });
             rounds[i].push_back(t.median_ms);
@@ -213,7 +229,8 @@ void run_cascades_bench(const BenchOptions& in) {
     for (const auto& b : rows.front().bands) csv << ",error_pct_" << band_name(b);
     csv << "\n";
     for (const CascadeRow& row : rows) {
-        csv << row.c.label << "," << row.c.cascades << "," << row.c.map << "," << (row.c.snap ? "on" : "off") << ","
+        csv << row.c.label << ","
+            << (row.c.cascades == render::Settings::kCube ? std::string("cube") : std::to_string(row.c.cascades)) << "," << row.c.map << "," << (row.c.snap ? "on" : "off") << ","
             << row.c.blend << "," << row.bytes << "," << fixed(row.ms, 3) << "," << fixed(row.all.error_pct, 4) << ","
             << fixed(row.flips, 4) << "," << fixed(row.truth_flips, 4) << "," << texel_list(row.texels);
         for (const auto& b : row.bands) csv << "," << fixed(b.score.error_pct, 4);
@@ -225,18 +242,20 @@ void run_cascades_bench(const BenchOptions& in) {
     for (const auto& kv : o.set) set_args += " --set " + scene::printable(kv);
     const CascadeRow& ref = rows.front();
     std::ostringstream md;
-    md << "# Cascaded shadow maps against one map\n\n"
+    md << (point_light ? "# A point light's cube against one perspective map\n\n" : "# Cascaded shadow maps against one map\n\n")
        << "`penumbra bench --cascades" << (o.quick ? " --quick" : "") << set_args << "` on " << scene::printable(scene_name) << ", "
        << w << "x" << h << ", " << caps.renderer << ", one run (" << duration_str(seconds_since(t0)) << "). "
        << "Error: the visibility AOV against the ray-traced truth (false shadow + false lit, % of the valid pixels), "
           "over the whole frame and per band of the camera's view depth (world units; equal ratios over the valid "
           "pixels' depths). ms/frame: the median of "
        << o.rounds << " interleaved round(s) of " << o.frames << " frames of a pan (" << kPanDegrees
-       << " degrees a frame; every map redrawn), each finished with glFinish; x: over the first row. Flips: the share "
+       << " degrees a frame" << (point_light ? ", the light 1 mm further each frame" : "")
+       << "; every map redrawn), each finished with glFinish; x: over the first row. Flips: the share "
           "of pixels whose lit state changes from one frame of the pan to the next ("
        << kShimmerFrames - 1 << " steps), x: over the truth's own share (" << fixed(truth_flips, 4)
        << " %), the flips the moving view explains. Texel: the world size of one texel of each cascade's map "
-          "(nearest first).\n\n| configuration | map bytes | ms/frame | x | error % |";
+          "(nearest first); a cube's: a face's texel one unit from the light; none for one perspective map.\n\n"
+          "| configuration | map bytes | ms/frame | x | error % |";
     for (const auto& b : ref.bands) md << " " << band_name(b) << " % |";
     md << " flips % | x truth | texel |\n|---|---:|---:|---:|---:|";
     for (size_t i = 0; i < ref.bands.size(); ++i) md << "---:|";
@@ -273,13 +292,13 @@ void run_cascades_bench(const BenchOptions& in) {
             pt.x = std::sqrt(lo * hi);
             pt.y = b.score.error_pct;
             pt.color = colour;
-            pt.marker = rows[i].c.cascades > 1 ? Marker::Square : Marker::Circle;
+            pt.marker = rows[i].c.cascades > 1 ? Marker::Square : Marker::Circle;  // cascades or a cube
             pt.tooltip = rows[i].c.label + ", " + band_name(b) + ": " + fixed(b.score.error_pct, 3) + " %";
             p.points.push_back(pt);
         }
     }
     p.notes.push_back("circles: one map");
-    p.notes.push_back("squares: cascades");
+    p.notes.push_back(point_light ? "squares: a cube" : "squares: cascades");
     write_text(dir / "cascades.svg", plot_svg(p, 900, 560));
     write_or_throw((dir / "cascades.png").string(), plot_png(p, 900, 560));
     std::printf("bench --cascades: %zu configurations in %s; wrote %s/cascades.csv, cascades.md, cascades.svg/.png\n",
