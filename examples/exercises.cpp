@@ -594,8 +594,8 @@ std::string CourseApp::key_help() {
     line("Tab", "exercise", "the next exercise (Shift+Tab: the previous)");
     for (const KeyBinding& k : key_bindings()) line(std::string(1, static_cast<char>(k.key)), k.option, k.help);
     // The cascades exercise's camera (before the bindings of those letters there).
-    line("W S, Up Down", "camera", "cascades: fly forward / back 2 m (Shift: 20 m)");
-    line("Q E, Lt Rt", "camera", "cascades: turn left / right 5 degrees (Shift: 20)");
+    line("W S Up Dn", "camera", "cascades: fly forward / back 2 m (Shift: 20 m)");
+    line("Q E Lt Rt", "camera", "cascades: turn left / right 5 degrees (Shift: 20)");
     line("R F", "camera", "cascades: look up / down 3 degrees");
     line("O", "camera", "cascades: back to the scene's camera");
     // The keys on_key handles itself.

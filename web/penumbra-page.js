@@ -322,7 +322,8 @@
   // texel T, ...") and the camera pass's cascades and blend.
   function cascadePlan() {
     const plan = Module.UTF8ToString(Module._penumbra_plan());
-    return plan.split('\n').filter((l) => /cascade/.test(l)).map((l) => l.trim()).join('\n');
+    return plan.split('\n').filter((l) => /cascade/.test(l))
+      .map((l) => l.trim().replace(/^\d+\.\s*(shadow-map\s*)?/, '').replace(/reused \([^)]*\)/, 'reused')).join('\n');
   }
 
   function poll() {
