@@ -69,7 +69,7 @@ expect 2 "effects unknown"        "--effects: unknown value 'window'" render --e
 expect 2 "reflectivity range"     "--reflectivity: must lie in [0, 1]" render --effects mirror --reflectivity 1.5 --size 16x16
 expect 2 "portal without one"     "the scene has no portal" render --effects portal --scene "$data/sphere_over_plane.gltf" --size 16x16 --out p.png
 expect 2 "effects twice"          "'outline' twice"   plan --effects outline,outline
-expect 2 "cascades unknown"       "--cascades: unknown value '5' (1, 2, 3, 4, auto)" plan --cascades 5
+expect 2 "cascades unknown"       "--cascades: unknown value '5' (1, 2, 3, 4, cube, auto)" plan --cascades 5
 expect 2 "cascade split range"    "--cascade-split: must lie in [0, 1]" plan --cascade-split 2
 expect 2 "cascade blend range"    "--cascade-blend: must lie in [0, 0.5]" render --cascade-blend 0.6 --size 16x16
 expect 2 "cascades aov planar"    "--aov cascades: needs --technique shadowmap" render --aov cascades --technique planar
