@@ -378,9 +378,10 @@ std::vector<Variant> all_variants() {
     out.push_back(lit_variant(square));
     for (Aov a : {Aov::GbufferColor, Aov::GbufferNormal, Aov::GbufferPosition, Aov::GbufferDepth})
         out.push_back(gbuffer_view_variant(a));
-    // --cascades 2..4: each encoding with the hard, PCF 4x4 and PCSS lookups, auto bias, either
-    // precision; plain, textured, the visibility and cascades AOVs, and deferred's lighting pass.
-    for (int n = 2; n <= shadow::kMaxCascades; ++n)
+    // --cascades 2..4 and cube (n = kMaxCascades + 1, the light perspective): each encoding with
+    // the hard, PCF 4x4 and PCSS lookups, auto bias, either precision; plain, textured, the
+    // visibility and cascades AOVs, and deferred's lighting pass.
+    for (int n = 2; n <= shadow::kMaxCascades + 1; ++n)
         for (auto e : shadow::kAllEncodings)
             for (auto f : {shadow::Filter::Hard, shadow::Filter::PCF4x4, shadow::Filter::PCSS})
                 for (bool mediump : {false, true})
@@ -391,30 +392,14 @@ std::vector<Variant> all_variants() {
                         c.filter = f;
                         c.pcf_kernel = shadow::PcfKernel::EarlyExit;
                         c.mediump = mediump;
-                        c.cascades = n;
+                        c.cube = c.light_perspective = n > shadow::kMaxCascades;
+                        c.cascades = c.cube ? 0 : n;
                         c.textured = bits == 1;
                         c.visibility_aov = bits == 2;
                         c.cascades_aov = bits == 3;
                         if (bits == 4) c.gbuffer = Gbuffer::Read;
                         out.push_back(lit_variant(c));
                     }
-    // --cascades cube: the same, the light perspective.
-    for (auto e : shadow::kAllEncodings)
-        for (auto f : {shadow::Filter::Hard, shadow::Filter::PCF4x4, shadow::Filter::PCSS})
-            for (bool mediump : {false, true})
-                for (int bits = 0; bits < 5; ++bits) {
-                    LitFeatures c;
-                    c.shadow_map = c.bias_auto = c.light_perspective = c.cube = true;
-                    c.encoding = e;
-                    c.filter = f;
-                    c.pcf_kernel = shadow::PcfKernel::EarlyExit;
-                    c.mediump = mediump;
-                    c.textured = bits == 1;
-                    c.visibility_aov = bits == 2;
-                    c.cascades_aov = bits == 3;
-                    if (bits == 4) c.gbuffer = Gbuffer::Read;
-                    out.push_back(lit_variant(c));
-                }
     // PCSS's tap counts, each once (the loops' bounds).
     for (int n : {1, 8, 32, 64}) {
         LitFeatures p;

@@ -105,6 +105,19 @@ Pass map_pass(const PlanContext& c, const std::vector<int>& casters, int& cut_ou
     return p;
 }
 
+// A pass into one tile of an atlas (a cascade, a cube face): `fit_casters` index
+// PlanContext::casters (the fits' caster lists), drawn as map_pass draws them.
+Pass tile_pass(const PlanContext& c, const std::vector<int>& fit_casters, std::string name, TargetRef target,
+               const glm::mat4& view_proj, int& cut_outs) {
+    std::vector<int> casters;
+    for (int j : fit_casters) casters.push_back(c.casters[static_cast<size_t>(j)]);
+    Pass p = map_pass(c, casters, cut_outs);
+    p.name = std::move(name);
+    p.target = target;
+    p.view_proj = view_proj;
+    return p;
+}
+
 // The map's texture: packed colour with a depth buffer, or a depth texture; never interpolated
 // (blending two packed values is meaningless).
 ResourceDesc map_desc(const PlanContext& c, int width, int height) {
@@ -318,19 +331,15 @@ public:
                                      "the depth seen from the light, " + std::to_string(n) + " cascades side by side");
         for (size_t i = 0; i < fit.cascades.size(); ++i) {
             const shadow::Cascade& k = fit.cascades[i];
-            std::vector<int> casters;
-            for (int j : k.casters) casters.push_back(c.casters[static_cast<size_t>(j)]);
             int cut_outs = 0;
-            Pass p = map_pass(c, casters, cut_outs);
-            p.name = c.named(kMap) + " cascade " + std::to_string(i);
-            p.target = {r, size, size, k.tile_x, k.tile_y, true};
-            p.view_proj = k.frustum.view_proj();
+            Pass p = tile_pass(c, k.casters, c.named(kMap) + " cascade " + std::to_string(i), {r, size, size, k.tile_x, k.tile_y, true},
+                               k.frustum.view_proj(), cut_outs);
             char depths[96];
             std::snprintf(depths, sizeof depths, "view depth %.3g..%.3g, texel %.3g", static_cast<double>(k.begin),
                           static_cast<double>(k.end), static_cast<double>(k.texel));
             p.detail = std::to_string(size) + "x" + std::to_string(size) + " tile at (" + std::to_string(k.tile_x) +
                        ", " + std::to_string(k.tile_y) + ") " + std::string(shadow::to_string(s.encoding)) + ", " +
-                       depths + ", " + caster_count(casters.size(), c.casters.size()) + ", faces " + faces_summary(p) +
+                       depths + ", " + caster_count(p.draws.size(), c.casters.size()) + ", faces " + faces_summary(p) +
                        (s.cascade_snap ? ", snapped" : ", not snapped") +
                        (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
             c.add_pass(std::move(p));
@@ -375,16 +384,12 @@ public:
             const shadow::CubeFace& face = fit.faces[static_cast<size_t>(f)];
             if (!face.drawn) continue;
             if (!c.plan.light_frustum) c.plan.light_frustum = face.frustum;
-            std::vector<int> casters;
-            for (int j : face.casters) casters.push_back(c.casters[static_cast<size_t>(j)]);
             int cut_outs = 0;
-            Pass p = map_pass(c, casters, cut_outs);
-            p.name = c.named(kMap) + " face " + shadow::cube_face_name(f);
-            p.target = {r, size, size, face.tile_x, face.tile_y, true};
-            p.view_proj = face.frustum.view_proj();
+            Pass p = tile_pass(c, face.casters, c.named(kMap) + " face " + shadow::cube_face_name(f),
+                               {r, size, size, face.tile_x, face.tile_y, true}, face.frustum.view_proj(), cut_outs);
             ContentKey key;
             key.add(p.view_proj);
-            for (int i : casters) key.add_placement(c.scene, i);
+            for (const Draw& d : p.draws) key.add_placement(c.scene, d.object);
             add_packing(key, c);
             p.content = key.str();
             char depths[64];
@@ -394,7 +399,7 @@ public:
                        ", " + std::to_string(face.tile_y) + ") " + std::string(shadow::to_string(s.encoding)) +
                        ", perspective " + percent(fit.tangent - 1.0f) + " wider than 90 degrees (" +
                        std::to_string(fit.guard) + " texel guard), " + depths + ", " +
-                       caster_count(casters.size(), c.casters.size()) + ", faces " + faces_summary(p) +
+                       caster_count(p.draws.size(), c.casters.size()) + ", faces " + faces_summary(p) +
                        (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
             c.add_pass(std::move(p));
         }
