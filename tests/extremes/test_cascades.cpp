@@ -47,15 +47,7 @@ protected:
     // The visibility AOV's red channel for the scene's camera, or `view` instead.
     std::vector<std::uint8_t> visibility(const render::Settings& s, const glm::mat4* view = nullptr,
                                          render::FramePlan* plan_out = nullptr) {
-        render::FrameInputs in = render::offscreen(kSize, kSize);
-        if (view) in.view = *view;
-        const auto& plan = renderer->render(scene_, s, in);
-        if (plan_out) *plan_out = plan;
-        const auto rgba = renderer->read_image();
-        std::vector<std::uint8_t> v(rgba.size() / 4);
-        for (size_t i = 0; i < v.size(); ++i) v[i] = rgba[i * 4];
-        gl::check_errors("the cascades frame");
-        return v;
+        return visibility_frame(scene_, s, kSize, view, plan_out);
     }
 
     measure::TruthImage truth(const glm::mat4& view_proj) {

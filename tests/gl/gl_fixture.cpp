@@ -5,6 +5,19 @@
 
 namespace penumbra::test {
 
+std::vector<std::uint8_t> GlTest::visibility_frame(const scene::Scene& scene, const render::Settings& s, int size,
+                                                   const glm::mat4* view, render::FramePlan* plan_out) {
+    render::FrameInputs in = render::offscreen(size, size);
+    if (view) in.view = *view;
+    const auto& plan = renderer->render(scene, s, in);
+    if (plan_out) *plan_out = plan;
+    const auto rgba = renderer->read_image();
+    std::vector<std::uint8_t> v(rgba.size() / 4);
+    for (size_t i = 0; i < v.size(); ++i) v[i] = rgba[i * 4];
+    gl::check_errors("the visibility frame");
+    return v;
+}
+
 platform::Platform& context() {
     static std::unique_ptr<platform::Platform> ctx = [] {
         std::string error;

@@ -30,6 +30,10 @@ struct GlTest : ::testing::Test {
         renderer.reset();
         gl::check_errors("test teardown");
     }
+    // One frame of `scene` with `s` (its aov the visibility's), size x size, from the scene's
+    // camera or `view`: the image's red channel, top row first; the plan into `plan_out`.
+    std::vector<std::uint8_t> visibility_frame(const scene::Scene& scene, const render::Settings& s, int size,
+                                               const glm::mat4* view = nullptr, render::FramePlan* plan_out = nullptr);
     std::unique_ptr<render::Renderer> renderer;
 };
 
