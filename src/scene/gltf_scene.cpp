@@ -351,13 +351,7 @@ private:
             if (!(sx > 1e-12f && sy > 1e-12f && sz > 1e-12f && ortho > 1e-6f * sy * sz))
                 fail("nodes[" + std::to_string(camera_node_index_) + "] (camera " + std::to_string(camera_index_) +
                      "): its transform is singular (scaled to zero or flattened), so the camera has no view");
-            glm::mat4 rigid(1.0f);
-            const glm::vec3 z = glm::normalize(glm::vec3(w[2]));
-            const glm::vec3 x = glm::normalize(glm::cross(glm::vec3(w[1]), z));
-            rigid[0] = glm::vec4(x, 0.0f);
-            rigid[1] = glm::vec4(glm::cross(z, x), 0.0f);
-            rigid[2] = glm::vec4(z, 0.0f);
-            rigid[3] = w[3];
+            const glm::mat4 rigid = rigid_frame(w);
             cam.view = finite(rigid) ? glm::inverse(rigid) : glm::inverse(w);
             cam.yfov = static_cast<float>(src.yfov);
             if (!(cam.yfov > 0.0f && cam.yfov < kPi)) {

@@ -96,6 +96,17 @@ Bounds object_bounds(const Scene& scene, const Object& object) {
     return out;
 }
 
+glm::mat4 rigid_frame(const glm::mat4& w) {
+    glm::mat4 rigid(1.0f);
+    const glm::vec3 z = glm::normalize(glm::vec3(w[2]));
+    const glm::vec3 x = glm::normalize(glm::cross(glm::vec3(w[1]), z));
+    rigid[0] = glm::vec4(x, 0.0f);
+    rigid[1] = glm::vec4(glm::cross(z, x), 0.0f);
+    rigid[2] = glm::vec4(z, 0.0f);
+    rigid[3] = w[3];
+    return rigid;
+}
+
 Bounds scene_bounds(const Scene& scene, bool casters_only) {
     Bounds out;
     for (const auto& o : scene.objects)

@@ -165,6 +165,10 @@ Bounds mesh_bounds(const Mesh& mesh);
 Bounds object_bounds(const Scene& scene, const Object& object);
 // World-space bounds of every object (casters_only: only those that cast shadows).
 Bounds scene_bounds(const Scene& scene, bool casters_only = false);
+// A camera node's world matrix made rigid: its z axis and y axis made orthonormal (x from them),
+// its position kept, any scale dropped (a scaled view would distort depth and lighting). Not
+// finite when the node is scaled to zero or flattened.
+glm::mat4 rigid_frame(const glm::mat4& world);
 // The eight corners of a box.
 std::vector<glm::vec3> corners(const Bounds& b);
 

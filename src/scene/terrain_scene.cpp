@@ -430,15 +430,8 @@ Scene make_terrain_km_scene() {
         const D3 t = rounded(eye);
         const D4 r = rounded(look_at_rotation(eye, target), 5);
         const glm::mat4 w = node_world(t, &r, nullptr);
-        // The loader's rigid view (gltf_scene.cpp): the node's axes made orthonormal.
-        glm::mat4 rigid(1.0f);
-        const glm::vec3 z = glm::normalize(glm::vec3(w[2]));
-        const glm::vec3 x = glm::normalize(glm::cross(glm::vec3(w[1]), z));
-        rigid[0] = glm::vec4(x, 0.0f);
-        rigid[1] = glm::vec4(glm::cross(z, x), 0.0f);
-        rigid[2] = glm::vec4(z, 0.0f);
-        rigid[3] = w[3];
-        s.camera.view = glm::inverse(rigid);
+        // The loader's rigid view (gltf_scene.cpp).
+        s.camera.view = glm::inverse(rigid_frame(w));
         s.camera.yfov = static_cast<float>(radians(58.0));
         s.camera.znear = 0.5f;
         s.camera.zfar = 1500.0f;
