@@ -102,22 +102,21 @@ CubeFit fit_cube(const scene::Light& light, const std::vector<scene::Bounds>& re
     fit.atlas_width = 3 * tile;
     fit.atlas_height = 2 * tile;
     const glm::vec3 L = light.position;
-    fit.visible = visible_receiver_points(light, receivers, camera_view_proj);
-    if (fit.visible.empty()) return fail("the camera sees no receiver");
-
     // Which faces see a visible receiver: each receiver's visible part (its box clipped to the
-    // camera's view) tested against each face's pyramid.
+    // camera's view, as visible_receiver_points clips it for a point light) tested against each
+    // face's pyramid.
     std::vector<glm::vec3> part;
     const std::array<HalfSpace, 6> view = clip_volume_half_spaces(camera_view_proj);
     const std::vector<HalfSpace> hs(view.begin(), view.end());
     for (const scene::Bounds& b : receivers) {
         part = clip_box(b, hs);
+        fit.visible.insert(fit.visible.end(), part.begin(), part.end());
         for (glm::vec3& p : part) p -= L;
         for (int f = 0; f < kCubeFaces; ++f)
             if (!fit.faces[static_cast<size_t>(f)].drawn && reaches(f, fit.tangent, part))
                 fit.faces[static_cast<size_t>(f)].drawn = true;
     }
-    if (fit.drawn() == 0) return fail("the camera sees no receiver");
+    if (fit.visible.empty() || fit.drawn() == 0) return fail("the camera sees no receiver");
 
     // Depth along a face's axis: no visible receiver point is farther than its largest component
     // (a ray from the light to it stays within that), so neither is anything that can shadow it.
