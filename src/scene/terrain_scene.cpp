@@ -8,18 +8,18 @@
 #include <utility>
 #include <vector>
 
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/quaternion.hpp>
+#include "scene/recipe.h"
 
 namespace penumbra::scene {
 
 namespace {
 
+using namespace recipe;
+
 // Everything below follows tests/data/make_large_scenes.py (and the helpers it takes from
 // make_bench_gltf.py and make_gltf.py) step by step, in double precision as Python computes,
 // then stored as the glTF file stores it: 32-bit floats.
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTerrainSize = 1000.0;
 constexpr int kCells = 64;
 constexpr double kCell = kTerrainSize / kCells;
@@ -34,11 +34,6 @@ constexpr std::array<Hill, 4> kHills = {{
     {1.5, 0.8 / 38.0, 0.6 / 38.0, 4.1},
     {0.6, -0.7 / 21.0, 0.7 / 21.0, 2.6},
 }};
-
-using D3 = std::array<double, 3>;
-using D4 = std::array<double, 4>;  // a quaternion as glTF stores it: x, y, z, w
-
-double radians(double deg) { return deg * kPi / 180.0; }
 
 double hill_height(double x, double z) {
     double h = 0.0;
@@ -74,16 +69,6 @@ double lowest_under(double x, double z, double radius) {
     return lo;
 }
 
-// Python's round(v, digits) for the values these scenes hold (never a tie in practice).
-double rounded(double v, int digits) {
-    const double k = std::pow(10.0, digits);
-    return std::round(v * k) / k + 0.0;
-}
-D3 rounded(const D3& v, int digits = 3) { return {rounded(v[0], digits), rounded(v[1], digits), rounded(v[2], digits)}; }
-D4 rounded(const D4& v, int digits) {
-    return {rounded(v[0], digits), rounded(v[1], digits), rounded(v[2], digits), rounded(v[3], digits)};
-}
-
 // A 32-bit linear congruential generator (Numerical Recipes' constants), as the script's Lcg.
 class Lcg {
 public:
@@ -97,71 +82,10 @@ private:
     std::uint32_t state_;
 };
 
-D4 quat_axis_angle(const D3& axis, double degrees) {
-    const double s = std::sin(radians(degrees) / 2.0);
-    return {axis[0] * s, axis[1] * s, axis[2] * s, std::cos(radians(degrees) / 2.0)};
-}
-
-// The quaternion turning a glTF camera (looking down -z, +y up) at eye towards target.
-D4 look_at_rotation(const D3& eye, const D3& target) {
-    D3 f = {target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]};
-    const double fl = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-    for (double& c : f) c /= fl;
-    const D3 z = {-f[0], -f[1], -f[2]};
-    const D3 up = {0.0, 1.0, 0.0};
-    D3 x = {up[1] * z[2] - up[2] * z[1], up[2] * z[0] - up[0] * z[2], up[0] * z[1] - up[1] * z[0]};
-    const double xl = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-    for (double& c : x) c /= xl;
-    const D3 y = {z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2], z[0] * x[1] - z[1] * x[0]};
-    const double m[3][3] = {{x[0], y[0], z[0]}, {x[1], y[1], z[1]}, {x[2], y[2], z[2]}};
-    const double tr = m[0][0] + m[1][1] + m[2][2];
-    if (tr > 0) {
-        const double s = std::sqrt(tr + 1.0) * 2;
-        return {(m[2][1] - m[1][2]) / s, (m[0][2] - m[2][0]) / s, (m[1][0] - m[0][1]) / s, 0.25 * s};
-    }
-    if (m[0][0] > m[1][1] && m[0][0] > m[2][2]) {
-        const double s = std::sqrt(1.0 + m[0][0] - m[1][1] - m[2][2]) * 2;
-        return {0.25 * s, (m[0][1] + m[1][0]) / s, (m[0][2] + m[2][0]) / s, (m[2][1] - m[1][2]) / s};
-    }
-    if (m[1][1] > m[2][2]) {
-        const double s = std::sqrt(1.0 + m[1][1] - m[0][0] - m[2][2]) * 2;
-        return {(m[0][1] + m[1][0]) / s, 0.25 * s, (m[1][2] + m[2][1]) / s, (m[0][2] - m[2][0]) / s};
-    }
-    const double s = std::sqrt(1.0 + m[2][2] - m[0][0] - m[1][1]) * 2;
-    return {(m[0][2] + m[2][0]) / s, (m[1][2] + m[2][1]) / s, 0.25 * s, (m[1][0] - m[0][1]) / s};
-}
-
 D4 light_rotation(double elevation_deg, double azimuth_deg) {
     const double el = radians(elevation_deg), az = radians(azimuth_deg);
     const D3 d = {std::cos(el) * std::cos(az), -std::sin(el), -std::cos(el) * std::sin(az)};
     return look_at_rotation({0.0, 0.0, 0.0}, d);
-}
-
-glm::vec3 to_float(const D3& v) {
-    return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
-}
-
-// A node's matrix as the glTF loader makes it: T * R * S in 32-bit floats.
-glm::mat4 node_world(const D3& t, const D4* r, const D3* s) {
-    glm::mat4 m = glm::translate(glm::mat4(1.0f), to_float(t));
-    if (r) {
-        const glm::quat q(static_cast<float>((*r)[3]), static_cast<float>((*r)[0]), static_cast<float>((*r)[1]),
-                          static_cast<float>((*r)[2]));
-        m *= glm::mat4_cast(glm::normalize(q));
-    }
-    if (s) m = glm::scale(m, to_float(*s));
-    return m;
-}
-
-// A mesh from the script's (positions, normals, indices), the normals made unit as the loader does.
-Mesh make_mesh(std::string name, const std::vector<D3>& pos, const std::vector<D3>& nrm, std::vector<std::uint32_t> idx) {
-    Mesh m;
-    m.name = std::move(name);
-    for (const D3& p : pos) m.positions.push_back(to_float(p));
-    for (const D3& n : nrm) m.normals.push_back(glm::normalize(to_float(n)));
-    m.indices = std::move(idx);
-    seal(m);
-    return m;
 }
 
 Mesh terrain_mesh() {
@@ -181,34 +105,6 @@ Mesh terrain_mesh() {
             idx.insert(idx.end(), {a, c, d, a, d, b});
         }
     return make_mesh("terrain", pos, nrm, std::move(idx));
-}
-
-// make_bench_gltf.box(0, 0.5, 0, 1, 1, 1): a unit box standing on y = 0, flat-shaded.
-Mesh unit_box() {
-    const double h = 0.5;
-    struct Face {
-        D3 n;
-        std::array<D3, 4> corners;
-    };
-    const std::array<Face, 6> faces = {{
-        {{1, 0, 0}, {{{h, -h, h}, {h, -h, -h}, {h, h, -h}, {h, h, h}}}},
-        {{-1, 0, 0}, {{{-h, -h, -h}, {-h, -h, h}, {-h, h, h}, {-h, h, -h}}}},
-        {{0, 1, 0}, {{{-h, h, h}, {h, h, h}, {h, h, -h}, {-h, h, -h}}}},
-        {{0, -1, 0}, {{{-h, -h, -h}, {h, -h, -h}, {h, -h, h}, {-h, -h, h}}}},
-        {{0, 0, 1}, {{{-h, -h, h}, {h, -h, h}, {h, h, h}, {-h, h, h}}}},
-        {{0, 0, -1}, {{{h, -h, -h}, {-h, -h, -h}, {-h, h, -h}, {h, h, -h}}}},
-    }};
-    std::vector<D3> pos, nrm;
-    std::vector<std::uint32_t> idx;
-    for (const Face& f : faces) {
-        const auto base = static_cast<std::uint32_t>(pos.size());
-        for (const D3& p : f.corners) {
-            pos.push_back({p[0], 0.5 + p[1], p[2]});
-            nrm.push_back(f.n);
-        }
-        idx.insert(idx.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-    }
-    return make_mesh("unit box", pos, nrm, std::move(idx));
 }
 
 // make_bench_gltf.cylinder(0, 0, 0.5, 1, segments=12): capped, smooth sides, flat caps.
@@ -247,30 +143,6 @@ Mesh unit_cylinder() {
     return make_mesh("unit cylinder", pos, nrm, std::move(idx));
 }
 
-// make_gltf.uv_sphere(1, 24, 12).
-Mesh unit_sphere() {
-    const int slices = 24, stacks = 12;
-    std::vector<D3> pos, nrm;
-    std::vector<std::uint32_t> idx;
-    for (int j = 0; j <= stacks; ++j) {
-        const double theta = kPi * j / stacks;
-        for (int i = 0; i <= slices; ++i) {
-            const double phi = 2.0 * kPi * i / slices;
-            const D3 n = {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
-            nrm.push_back(n);
-            pos.push_back(n);
-        }
-    }
-    const int row = slices + 1;
-    for (int j = 0; j < stacks; ++j)
-        for (int i = 0; i < slices; ++i) {
-            const auto a = static_cast<std::uint32_t>(j * row + i), b = static_cast<std::uint32_t>((j + 1) * row + i);
-            if (j != 0) idx.insert(idx.end(), {a, a + 1, b});
-            if (j != stacks - 1) idx.insert(idx.end(), {a + 1, b + 1, b});
-        }
-    return make_mesh("unit sphere", pos, nrm, std::move(idx));
-}
-
 enum Kind { House, Pole, Post, Boulder };
 struct Size {
     double a = 0, b = 0, c = 0;  // house: x, y, z; pole and post: thickness, height; boulder: radius
@@ -282,8 +154,7 @@ double footprint(Kind kind, const Size& s) {
     return 0.5 * s.a * std::sqrt(2.0);
 }
 
-struct Builder {
-    Scene scene;
+struct Builder : recipe::SceneBuilder {
     int box = -1, cylinder = -1, sphere = -1;                     // meshes
     int grass = -1, stone = -1, wood = -1, plaster = -1;          // materials
     struct Placed {
@@ -291,30 +162,6 @@ struct Builder {
     };
     std::vector<Placed> placed;
 
-    int material(const char* name, double r, double g, double b) {
-        Material m;
-        m.name = name;
-        m.base_color = glm::vec4(static_cast<float>(r), static_cast<float>(g), static_cast<float>(b), 1.0f);
-        scene.materials.push_back(m);
-        return static_cast<int>(scene.materials.size()) - 1;
-    }
-    int mesh(Mesh m) {
-        scene.meshes.push_back(std::move(m));
-        return static_cast<int>(scene.meshes.size()) - 1;
-    }
-    void place(std::string name, int mesh_index, int material_index, const D3& t, const D4* r, const D3* s) {
-        Object o;
-        o.name = std::move(name);
-        o.mesh = mesh_index;
-        o.material = material_index;
-        const D3 tr = rounded(t);
-        D4 rr{};
-        D3 sr{};
-        if (r) rr = rounded(*r, 5);
-        if (s) sr = rounded(*s);
-        o.world = node_world(tr, r ? &rr : nullptr, s ? &sr : nullptr);
-        scene.objects.push_back(std::move(o));
-    }
     // One object standing on the terrain at x, z (the script's put()).
     void put(const std::string& name, Kind kind, double x, double z, const Size& size, double turn) {
         const double r = footprint(kind, size);
@@ -361,8 +208,8 @@ Scene make_terrain_km_scene() {
     // The meshes in the order the loader makes them: as the nodes first use them.
     const int ground = b.mesh(terrain_mesh());
     b.cylinder = b.mesh(unit_cylinder());
-    b.sphere = b.mesh(unit_sphere());
-    b.box = b.mesh(unit_box());
+    b.sphere = b.mesh(uv_sphere_mesh("unit sphere", 1.0, 24, 12));
+    b.box = b.mesh(box_mesh("unit box", {0.0, 0.5, 0.0}, {1.0, 1.0, 1.0}));  // standing on y = 0
     {
         Object o;
         o.name = "terrain";
@@ -426,17 +273,11 @@ Scene make_terrain_km_scene() {
     const double yaw = radians(8.0), pitch = radians(-4.0);
     const D3 target = {eye[0] + 100.0 * std::sin(yaw) * std::cos(pitch), eye[1] + 100.0 * std::sin(pitch),
                        eye[2] - 100.0 * std::cos(yaw) * std::cos(pitch)};
-    {
-        const D3 t = rounded(eye);
-        const D4 r = rounded(look_at_rotation(eye, target), 5);
-        const glm::mat4 w = node_world(t, &r, nullptr);
-        // The loader's rigid view (gltf_scene.cpp).
-        s.camera.view = glm::inverse(rigid_frame(w));
-        s.camera.yfov = static_cast<float>(radians(58.0));
-        s.camera.znear = 0.5f;
-        s.camera.zfar = 1500.0f;
-        s.camera.aspect = 0.0f;
-    }
+    s.camera.view = camera_view(eye, target);
+    s.camera.yfov = static_cast<float>(radians(58.0));
+    s.camera.znear = 0.5f;
+    s.camera.zfar = 1500.0f;
+    s.camera.aspect = 0.0f;
     // The sun: 32 degrees up, travelling down-left and towards the camera.
     {
         const D4 r = rounded(light_rotation(32.0, 197.0), 5);
