@@ -46,7 +46,7 @@ std::string catalog_json() {
              ",\"text\":" + json_quote(x.text) + ",\"brief\":" + json_quote(x.brief) +
              ",\"lookFor\":" + json_quote(x.look_for) + ",\"canvas\":" + json_quote(x.canvas) +
              ",\"technique\":" + json_quote(render::to_string(x.technique)) +
-             ",\"fly\":" + std::string(x.terrain ? "true" : "false") +
+             ",\"fly\":" + std::string(flies(x) ? "true" : "false") +
              ",\"controls\":[";
         for (size_t c = 0; c < x.controls.size(); ++c) {
             const Control& k = x.controls[c];

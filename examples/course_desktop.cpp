@@ -1,7 +1,8 @@
 // penumbra-desktop: the course exercises (W09P1, W09P2a, W09P2b, W09P2c, volumes, soft, stencil,
-// multipass, cascades) in a desktop window (GLFW, GLES 2 through EGL), with keys for the same
-// controls the web pages have; the cascades exercise flies its camera over the terrain by keys
-// (W S forward and back, Q E turning, R F looking up and down, O the scene's camera).
+// multipass, cascades, bulb) in a desktop window (GLFW, GLES 2 through EGL), with keys for the
+// same controls the web pages have; the cascades and bulb exercises fly their camera over the
+// terrain and in the room by keys (W S forward and back, Q E turning, R F looking up and down, O
+// the scene's camera).
 //
 //   penumbra-desktop [--exercise NAME] [--size WxH] [--frames N] [--screenshot FILE.png]
 //                    [--resize WxH] [--no-vsync] [-v] [--time T] [--keys KEYS] [--print-title]
@@ -93,9 +94,9 @@ void print_help() {
     const render::OptionInfo& eye = render::option_info("eye");  // a job option the exercises take
     line(std::string(eye.name), render::accepted_values(eye), eye.help);
     line("camera", "X,Y,Z,YAW,PITCH",
-         "cascades: where the fly camera stands (metres) and looks (degrees: yaw right of north, pitch up)");
+         "cascades, bulb: where the fly camera stands (metres) and looks (degrees: yaw right of north, pitch up)");
     std::printf(
-        "penumbra-desktop: the course exercises (W09, shadow volumes, soft shadows, stencil, multipass, cascades) in a window "
+        "penumbra-desktop: the course exercises (W09, shadow volumes, soft shadows, stencil, multipass, cascades, bulb) in a window "
         "(GLFW, GLES 2 through EGL)\n\n"
         "  --exercise E        %s (default w09p1)\n"
         "  --size WxH          window size (default 512x512)\n"

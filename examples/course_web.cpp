@@ -198,13 +198,14 @@ const char* penumbra_state() {
     // What the last frame had to change for the canvas (W09P2b's copy larger than it).
     j += ",\"frameNote\":" + json_quote(a.frame_note());
     j += ",\"width\":" + std::to_string(g->width) + ",\"height\":" + std::to_string(g->height);
-    // The terrain exercise's fly camera (null elsewhere): metres and degrees, and whether it moved.
-    if (examples::exercise_info(a.exercise()).terrain) {
+    // The fly camera of an exercise with a scene of its own (null elsewhere): metres and degrees,
+    // whether it moved, and the metres a press moves.
+    if (examples::flies(examples::exercise_info(a.exercise()))) {
         const auto& c = a.camera();
         j += ",\"camera\":{\"x\":" + json_number(static_cast<double>(c.eye.x)) +
              ",\"y\":" + json_number(static_cast<double>(c.eye.y)) + ",\"z\":" + json_number(static_cast<double>(c.eye.z)) +
              ",\"yaw\":" + json_number(static_cast<double>(c.yaw)) + ",\"pitch\":" + json_number(static_cast<double>(c.pitch)) +
-             ",\"moved\":" + json_bool(a.camera_moved()) + "}";
+             ",\"moved\":" + json_bool(a.camera_moved()) + ",\"step\":" + json_number(a.fly_step()) + "}";
     } else {
         j += ",\"camera\":null";
     }
@@ -212,7 +213,7 @@ const char* penumbra_state() {
     return hand(j);
 }
 
-// The terrain exercise's fly camera: metres forward, right and up, then degrees of yaw (right)
+// The fly camera (the cascades and bulb exercises): metres forward, right and up, then degrees of yaw (right)
 // and pitch (up). 1, or 0 where the exercise has no fly camera.
 int penumbra_fly(double forward, double right, double up, double yaw, double pitch) {
     return g && g->app && g->app->fly(forward, right, up, yaw, pitch) ? 1 : 0;

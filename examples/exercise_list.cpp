@@ -258,7 +258,35 @@ std::vector<ExerciseInfo> make_list() {
           {"aov", "View", K::Select, {"cascades", "color", "visibility"}, {},
            "cascades: red, green, blue, yellow from near to far"}},
          {{"cascades", "4"}, {"aov", "cascades"}},
-         true},
+         ExerciseScene::Terrain},
+        {Exercise::Bulb, "bulb", "A point light's cube: a bare bulb in a room",
+         "One shadow map sees the scene through one frustum, and a point light in a room shines every way: whatever "
+         "lies outside that frustum is lit, shadow or not. The cube gives the bulb six shadow maps instead, one for "
+         "each face of a cube around it (+x, -x, +y, -y, +z, -z), each a perspective view of 90 degrees, so every "
+         "direction from the bulb lands in exactly one face: the floor, the ceiling and the four walls all get their "
+         "shadows. A fragment's direction from the light picks the face by its largest component and is looked up "
+         "there. WebGL 1 could render into a cube map's faces, but here the six faces are tiles of one 2D texture, "
+         "3 x 2, so each lookup is the same texture2D as every other map's; each tile holds a guard band beyond its "
+         "face's edge so a filter's taps near a seam still read real depth. Only the faces that see a receiver in "
+         "view are drawn, and a face whose light and casters did not move is kept from the last frame. The faces "
+         "view tints each pixel by the face that shadows it, and the plan below lists each face's pass.",
+         "A point light's six shadow maps, the faces of a cube around a bare bulb in a room: show the faces, compare "
+         "the cube with one shadow map, set the faces' size and the filter, fly around the room.",
+         "A room with boxes and spheres on the floor, on stands and hanging from the ceiling, lit by a bare bulb "
+         "whose shadows fall on every wall",
+         "Switch to one map: the shadows on the walls behind you and on the ceiling vanish (outside its frustum, all is "
+         "lit). Back to the cube, show the faces and fly up to the ceiling to see where they meet.",
+         render::Technique::ShadowMap,
+         {{"cascades", "Shadows", K::Select, {"cube", "1", "auto"}, "Shadow maps",
+           "cube: six faces around the bulb; 1: one perspective map"},
+          {"map-size", "Shadows", K::Select, {"256", "512", "1024"}, "Map size", "each face's"},
+          {"filter", "Shadows", K::Select, {"hard", "pcf4x4", "pcss"}, {}, "PCSS: the penumbra from the bulb's size"},
+          {"light-radius", "Shadows", K::Slider, {"0", "0.02", "0.05", "0.1", "0.2"}, "Bulb radius",
+           "metres; 0 is a point", 0.0, 0.2},
+          {"aov", "View", K::Select, {"cascades", "color", "visibility"}, {},
+           "cascades: each cube face tinted (+x red, -x green, +y blue, -y yellow, +z magenta, -z cyan)"}},
+         {{"cascades", "cube"}, {"map-size", "512"}, {"light-radius", "0.05"}, {"aov", "cascades"}},
+         ExerciseScene::Room},
     };
 }
 
@@ -333,6 +361,9 @@ const std::vector<KeyBinding>& key_bindings() {
          Exercise::Cascades},
         {'G', "cascade-snap", "cascades: snap the windows to whole texels on / off", Exercise::Cascades},
         {'B', "cascade-blend", "cascades: blend band 0 / 0.05 / 0.1 / 0.2 / 0.3 / 0.5 of a slice", Exercise::Cascades},
+        // The bulb exercise: the same letter for its shadow maps; K its filter (F looks down there).
+        {'N', "cascades", "bulb: shadow maps cube / one map / auto, Shift+N backwards", Exercise::Bulb},
+        {'K', "filter", "bulb: filter hard / PCF 4x4 / PCSS", Exercise::Bulb},
     };
     return keys;
 }

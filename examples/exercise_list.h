@@ -17,7 +17,13 @@
 
 namespace penumbra::examples {
 
-enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c, Volumes, Soft, Stencil, Multipass, Cascades };
+enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c, Volumes, Soft, Stencil, Multipass, Cascades, Bulb };
+
+// The scene an exercise draws: the course scene (the teapot on the table), or one built in code
+// from a test file's recipe, in which the camera flies: the kilometre of terrain
+// (scene/terrain_scene.h, tests/data/terrain_km.gltf) or the bulb room (scene/room_scene.h,
+// tests/data/bulb_room.gltf).
+enum class ExerciseScene { Course, Terrain, Room };
 
 // What the controls set besides render::Settings.
 struct Toggles {
@@ -70,26 +76,27 @@ struct ExerciseInfo {
     // Options this exercise starts with instead of the defaults (name, value), set when it is
     // chosen and put back to the defaults when another is.
     std::vector<std::pair<std::string_view, std::string_view>> defaults = {};
-    // Its scene: the course scene (the teapot on the table) or the kilometre of terrain
-    // (scene/terrain_scene.h, tests/data/terrain_km.gltf), which the camera flies over: the page
-    // offers mouse and keys to move it (CourseApp::fly), and camera=... keeps it in the URL.
-    bool terrain = false;
+    // Its scene (ExerciseScene). In a scene of its own the camera flies: the page offers mouse and
+    // keys to move it (CourseApp::fly), and camera=... keeps it in the URL.
+    ExerciseScene scene = ExerciseScene::Course;
 };
+// Whether the exercise's camera flies (a scene of its own).
+inline bool flies(const ExerciseInfo& x) { return x.scene != ExerciseScene::Course; }
 // Whether the exercise offers a control for the option.
 bool offers(const ExerciseInfo& x, std::string_view option);
 
 const std::vector<ExerciseInfo>& exercise_list();
 const ExerciseInfo& exercise_info(Exercise e);
 bool parse_exercise(std::string_view name, Exercise& out);
-std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c, volumes, soft, stencil, multipass, cascades"
+std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c, volumes, soft, stencil, multipass, cascades, bulb"
 // The first exercises have the digit keys 1-8 on the desktop (9 and 0 are controls); Tab steps
 // through all of them.
 inline constexpr int kExerciseDigitKeys = 8;
 
 // A desktop key bound to an option: pressing it steps the option to its next value (Shift: the
 // previous one) among the values `exercise`'s control offers, or all of them. A binding with
-// `only` set holds in that exercise alone and comes before the others there (the cascades
-// exercise reuses letters whose options it has no use for).
+// `only` set holds in that exercise alone and comes before the others there (the cascades and
+// bulb exercises reuse letters whose options they have no use for).
 struct KeyBinding {
     int key;
     std::string_view option;

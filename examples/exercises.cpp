@@ -10,10 +10,9 @@
 #include "query.h"
 #include "scene/eye.h"
 #include "scene/primitives.h"
+#include "scene/room_scene.h"
 #include "scene/terrain_scene.h"
 #include "shadow/encoding.h"
-
-#include <glm/gtc/matrix_transform.hpp>
 
 namespace penumbra::examples {
 
@@ -26,45 +25,6 @@ constexpr const char* kFboTexture = "w09p2b";
 // The job options the exercises take: time (both clocks, paused) and the eye.
 bool exercise_job_option(std::string_view name) { return name == "time" || name == "eye"; }
 
-constexpr double kPiD = 3.14159265358979323846;
-constexpr float kMaxPitch = 89.0f;       // the fly camera never looks straight up or down
-constexpr float kMinAboveGround = 0.3f;  // nor goes under the terrain
-constexpr float kMaxFromCentre = 2000.0f;
-
-glm::vec3 fly_forward(const FlyCamera& c) {
-    const double yaw = static_cast<double>(c.yaw) * kPiD / 180.0, pitch = static_cast<double>(c.pitch) * kPiD / 180.0;
-    return glm::vec3(static_cast<float>(std::sin(yaw) * std::cos(pitch)), static_cast<float>(std::sin(pitch)),
-                     static_cast<float>(-std::cos(yaw) * std::cos(pitch)));
-}
-
-// Yaw within (-180, 180].
-float wrap_degrees(double deg) {
-    double d = std::fmod(deg, 360.0);
-    if (d > 180.0) d -= 360.0;
-    if (d <= -180.0) d += 360.0;
-    return static_cast<float>(d);
-}
-
-// The fly camera where a view matrix puts the eye.
-FlyCamera fly_from_view(const glm::mat4& view) {
-    const glm::mat4 inv = glm::inverse(view);
-    const glm::vec3 f = -glm::normalize(glm::vec3(inv[2]));
-    FlyCamera c;
-    c.eye = glm::vec3(inv[3]);
-    c.yaw = wrap_degrees(std::atan2(static_cast<double>(f.x), static_cast<double>(-f.z)) * 180.0 / kPiD);
-    c.pitch = static_cast<float>(std::asin(std::clamp(static_cast<double>(f.y), -1.0, 1.0)) * 180.0 / kPiD);
-    return c;
-}
-
-// Kept over the ground and near the terrain.
-void keep_in_bounds(FlyCamera& c) {
-    c.eye.x = std::clamp(c.eye.x, -kMaxFromCentre, kMaxFromCentre);
-    c.eye.z = std::clamp(c.eye.z, -kMaxFromCentre, kMaxFromCentre);
-    c.eye.y = std::clamp(c.eye.y, scene::terrain_km_height(c.eye.x, c.eye.z) + kMinAboveGround, kMaxFromCentre);
-    c.pitch = std::clamp(c.pitch, -kMaxPitch, kMaxPitch);
-    c.yaw = wrap_degrees(static_cast<double>(c.yaw));
-}
-
 // Settings the pages and the desktop never take: the exercise picks the scene and the technique
 // (unless it offers a control for it), the canvas or the window its size, and nothing is written
 // to a file.
@@ -75,12 +35,6 @@ bool set_by_the_exercise(Exercise e, std::string_view name) {
 }
 
 std::string without_dashes(std::string err) { return err.rfind("--", 0) == 0 ? err.substr(2) : err; }
-
-std::string format_number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
 
 // The value a technique option holds, as a URL shows it (as render::to_pairs(s) has it, for one name).
 std::string setting_value(const render::Settings& s, std::string_view name) {
@@ -95,7 +49,7 @@ std::string setting_value(const render::Settings& s, std::string_view name) {
 
 CourseApp::CourseApp(Exercise e) : exercise_(e), course_(scene::make_course_scene()) {
     scene_camera_ = course_.scene.camera;
-    if (exercise_info(e).terrain) ensure_terrain();
+    own_scene();
     apply_defaults(e);
     // W09P2b's ground: the table quad again with uvs 0..1, so the FBO's picture lies on the table
     // once, and a white material whose texture (a 1x1 placeholder) the FBO's texture replaces.
@@ -121,63 +75,62 @@ CourseApp::CourseApp(Exercise e) : exercise_(e), course_(scene::make_course_scen
 
 CourseApp::~CourseApp() = default;
 
-void CourseApp::ensure_terrain() {
-    if (terrain_) return;
-    terrain_ = std::make_unique<scene::Scene>(scene::make_terrain_km_scene());
-    terrain_camera_ = terrain_->camera;
-    fly_ = fly_start_ = fly_from_view(terrain_camera_.view);
-    camera_moved_ = false;
+CourseApp::OwnScene* CourseApp::own_scene() {
+    const ExerciseScene which = exercise_info(exercise_).scene;
+    if (which == ExerciseScene::Course) return nullptr;
+    OwnScene& o = which == ExerciseScene::Terrain ? terrain_ : room_;
+    if (!o.scene) {
+        o.scene = std::make_unique<scene::Scene>(which == ExerciseScene::Terrain ? scene::make_terrain_km_scene()
+                                                                                  : scene::make_bulb_room_scene());
+        o.camera = o.scene->camera;
+        o.fly = o.start = fly_from_view(o.camera.view);
+        o.moved = false;
+    }
+    return &o;
+}
+
+const CourseApp::OwnScene* CourseApp::own_scene() const {
+    const ExerciseScene which = exercise_info(exercise_).scene;
+    const OwnScene* o = which == ExerciseScene::Terrain ? &terrain_ : which == ExerciseScene::Room ? &room_ : nullptr;
+    return o && o->scene ? o : nullptr;
+}
+
+// The bounds of the current exercise's fly camera.
+static const FlyBounds& bounds_of(Exercise e) {
+    return exercise_info(e).scene == ExerciseScene::Terrain ? terrain_fly_bounds() : room_fly_bounds();
 }
 
 const scene::Scene& CourseApp::scene() const {
-    return exercise_info(exercise_).terrain && terrain_ ? *terrain_ : course_.scene;
+    const OwnScene* o = own_scene();
+    return o ? *o->scene : course_.scene;
 }
 
 bool CourseApp::fly(double forward, double right, double up, double yaw, double pitch) {
-    if (!exercise_info(exercise_).terrain || !terrain_) return false;
-    for (const double v : {forward, right, up, yaw, pitch})
-        if (!std::isfinite(v)) return false;
-    const glm::vec3 f = fly_forward(fly_);
-    const double yaw_rad = static_cast<double>(fly_.yaw) * kPiD / 180.0;
-    const glm::vec3 side(static_cast<float>(std::cos(yaw_rad)), 0.0f, static_cast<float>(std::sin(yaw_rad)));
-    fly_.eye += static_cast<float>(forward) * f + static_cast<float>(right) * side + glm::vec3(0.0f, static_cast<float>(up), 0.0f);
-    fly_.yaw = wrap_degrees(static_cast<double>(fly_.yaw) + yaw);
-    fly_.pitch = static_cast<float>(static_cast<double>(fly_.pitch) + pitch);
-    keep_in_bounds(fly_);
-    camera_moved_ = true;
+    OwnScene* o = own_scene();
+    if (!o || !fly_move(o->fly, bounds_of(exercise_), forward, right, up, yaw, pitch)) return false;
+    o->moved = true;
     return true;
 }
 
 void CourseApp::reset_camera() {
-    fly_ = fly_start_;
-    camera_moved_ = false;
+    if (OwnScene* o = own_scene()) {
+        o->fly = o->start;
+        o->moved = false;
+    }
 }
 
-std::string CourseApp::camera_value() const {
-    // Millimetres and hundredths of a degree: what a reload needs to show the same frame.
-    char buf[128];
-    std::snprintf(buf, sizeof buf, "%.3f,%.3f,%.3f,%.2f,%.2f", static_cast<double>(fly_.eye.x),
-                  static_cast<double>(fly_.eye.y), static_cast<double>(fly_.eye.z), static_cast<double>(fly_.yaw),
-                  static_cast<double>(fly_.pitch));
-    std::string v = buf;
-    // Trailing zeros off each number ("-60.000" -> "-60").
-    std::string out, part;
-    const auto flush = [&] {
-        if (part.find('.') != std::string::npos) {
-            while (!part.empty() && part.back() == '0') part.pop_back();
-            if (!part.empty() && part.back() == '.') part.pop_back();
-        }
-        if (part == "-0") part = "0";
-        out += (out.empty() ? "" : ",") + part;
-        part.clear();
-    };
-    for (const char c : v) {
-        if (c == ',') flush();
-        else part += c;
-    }
-    flush();
-    return out;
+bool CourseApp::camera_moved() const {
+    const OwnScene* o = own_scene();
+    return o && o->moved;
 }
+
+const FlyCamera& CourseApp::camera() const {
+    static const FlyCamera none;
+    const OwnScene* o = own_scene();
+    return o ? o->fly : none;
+}
+
+double CourseApp::fly_step() const { return own_scene() ? bounds_of(exercise_).step : 0.0; }
 
 void CourseApp::apply_defaults(Exercise e) {
     for (const auto& [name, value] : exercise_info(e).defaults)
@@ -196,7 +149,7 @@ void CourseApp::set_exercise(Exercise e) {
         set_option(name, v);
     }
     exercise_ = e;
-    if (exercise_info(e).terrain) ensure_terrain();
+    own_scene();
     apply_defaults(e);
 }
 
@@ -282,31 +235,12 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
         return {};
     }
     if (name == "camera") {
-        if (!exercise_info(exercise_).terrain)
-            return "camera: only the exercise over the terrain (" + std::string(exercise_info(Exercise::Cascades).name) +
-                   ") flies its camera";
-        // X,Y,Z,YAW,PITCH: five finite numbers, the eye within 2 km, the pitch within +-89 degrees.
-        double v[5];
-        size_t at = 0;
-        const std::string text(value);
-        for (int i = 0; i < 5; ++i) {
-            const size_t end = i < 4 ? text.find(',', at) : text.size();
-            const std::string part = end == std::string::npos ? std::string() : text.substr(at, end - at);
-            char* stop = nullptr;
-            v[i] = part.empty() ? std::nan("") : std::strtod(part.c_str(), &stop);
-            if (part.empty() || *stop != '\0' || !std::isfinite(v[i]) || (i == 4 && end != text.size()))
-                return "camera=" + text + ": needs five numbers X,Y,Z,YAW,PITCH (metres, degrees)";
-            at = end + 1;
-        }
-        if (std::fabs(v[0]) > kMaxFromCentre || std::fabs(v[1]) > kMaxFromCentre || std::fabs(v[2]) > kMaxFromCentre)
-            return "camera=" + text + ": the eye must be within 2000 m of the centre";
-        if (std::fabs(v[4]) > static_cast<double>(kMaxPitch))
-            return "camera=" + text + ": the pitch must be within -89..89 degrees";
-        fly_.eye = glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
-        fly_.yaw = wrap_degrees(v[3]);
-        fly_.pitch = static_cast<float>(v[4]);
-        keep_in_bounds(fly_);
-        camera_moved_ = true;
+        OwnScene* o = own_scene();
+        if (!o)
+            return "camera: only the exercises with a scene of their own (" + std::string(exercise_info(Exercise::Cascades).name) +
+                   ", " + std::string(exercise_info(Exercise::Bulb).name) + ") fly their camera";
+        if (std::string err = parse_fly(value, bounds_of(exercise_), o->fly); !err.empty()) return err;
+        o->moved = true;
         return {};
     }
     if (set_by_the_exercise(exercise_, name))
@@ -341,14 +275,14 @@ std::vector<std::pair<std::string, std::string>> CourseApp::options() const {
         if (v != defaults[i].second) out.emplace_back(k, v);
     }
     if (eye_in_shadow_ && std::find(shown.begin(), shown.end(), "eye") == shown.end()) out.emplace_back("eye", value_of("eye"));
-    if (camera_moved_ && exercise_info(exercise_).terrain) out.emplace_back("camera", camera_value());
+    if (camera_moved()) out.emplace_back("camera", fly_value(camera()));
     if (paused_ && light_time_ == jump_time_) out.emplace_back("time", format_number(light_time_));
     return out;
 }
 
 std::string CourseApp::value_of(std::string_view name) const {
     if (const auto* t = render::find_option(toggle_table(), name)) return t->print(toggles_);
-    if (name == "camera") return camera_value();
+    if (name == "camera") return fly_value(camera());
     if (name == "eye") {
         render::Options o;
         o.job.eye_in_shadow = eye_in_shadow_;
@@ -413,13 +347,13 @@ render::Settings CourseApp::frame_settings() const {
     if (!offers(exercise_info(exercise_), "post")) s.post.clear();  // the multipass exercise's alone
     if (!offers(exercise_info(exercise_), "shading")) s.shading = render::Shading::Forward;
     if (!offers(exercise_info(exercise_), "lights")) s.lights = 0;
-    if (!offers(exercise_info(exercise_), "cascades")) {  // the cascades exercise's alone
-        const render::Settings d;
-        s.cascades = d.cascades;
-        s.cascade_split = d.cascade_split;
-        s.cascade_snap = d.cascade_snap;
-        s.cascade_blend = d.cascade_blend;
-    }
+    // The cascades' settings belong to the cascades and bulb exercises alone (the bulb's cube
+    // has no split, snap or blend).
+    const render::Settings d;
+    if (!offers(exercise_info(exercise_), "cascades")) s.cascades = d.cascades;
+    if (!offers(exercise_info(exercise_), "cascade-split")) s.cascade_split = d.cascade_split;
+    if (!offers(exercise_info(exercise_), "cascade-snap")) s.cascade_snap = d.cascade_snap;
+    if (!offers(exercise_info(exercise_), "cascade-blend")) s.cascade_blend = d.cascade_blend;
     if (exercise_ == Exercise::Soft && toggles_.reference) {
         s.filter = shadow::Filter::Hard;
         s.area_samples = kReferenceSamples;
@@ -538,15 +472,15 @@ void CourseApp::draw(int width, int height) {
             if (s.aov != render::Aov::Visibility && !render::gbuffer_aov(s.aov)) s.aov = render::Aov::Color;
             render(s, in);
             break;
-        case Exercise::Cascades: {  // the terrain from the fly camera: colour, visibility or the cascades
+        case Exercise::Cascades:  // the terrain or the room from the fly camera: colour, visibility or
+        case Exercise::Bulb: {    // the cascades (the cube's faces)
             if (s.aov != render::Aov::Visibility && s.aov != render::Aov::Cascades) s.aov = render::Aov::Color;
-            ensure_terrain();
+            OwnScene& o = *own_scene();
             // Unmoved, the scene's own camera exactly (the frame `penumbra render --scene
-            // tests/data/terrain_km.gltf` draws); moved, the fly camera's.
-            terrain_->camera = terrain_camera_;
-            if (camera_moved_)
-                terrain_->camera.view = glm::lookAt(fly_.eye, fly_.eye + fly_forward(fly_), glm::vec3(0.0f, 1.0f, 0.0f));
-            render(*terrain_, s, in);
+            // tests/data/terrain_km.gltf` or `bulb_room.gltf` draws); moved, the fly camera's.
+            o.scene->camera = o.camera;
+            if (o.moved) o.scene->camera.view = fly_view(o.fly);
+            render(*o.scene, s, in);
             break;
         }
     }
@@ -574,153 +508,5 @@ double CourseApp::median_ms() const {
 }
 
 std::string CourseApp::last_plan() const { return std::string(exercise_info(exercise_).title) + "\n" + plan_text_; }
-
-// ---- keys -----------------------------------------------------------------------------------
-
-std::string CourseApp::key_help() {
-    // A line a key: the key, the option it changes (the page's control, the URL's name), what it does.
-    std::string out = "keys (key, the option it changes as in the page's URL and the title, what it does):\n";
-    const auto line = [&](const std::string& key, std::string_view option, std::string_view help) {
-        std::string l = "  " + key;
-        l.resize(14, ' ');
-        l += option;
-        if (l.size() < 31) l.resize(31, ' ');
-        else l += ' ';
-        out += l + std::string(help) + "\n";
-    };
-    for (size_t i = 0; i < exercise_list().size(); ++i)
-        line(i < static_cast<size_t>(kExerciseDigitKeys) ? std::to_string(i + 1) : "Tab",
-             "exercise " + std::string(exercise_list()[i].name), exercise_list()[i].title);
-    line("Tab", "exercise", "the next exercise (Shift+Tab: the previous)");
-    for (const KeyBinding& k : key_bindings()) line(std::string(1, static_cast<char>(k.key)), k.option, k.help);
-    // The cascades exercise's camera (before the bindings of those letters there).
-    line("W S Up Dn", "camera", "cascades: fly forward / back 2 m (Shift: 20 m)");
-    line("Q E Lt Rt", "camera", "cascades: turn left / right 5 degrees (Shift: 20)");
-    line("R F", "camera", "cascades: look up / down 3 degrees");
-    line("O", "camera", "cascades: back to the scene's camera");
-    // The keys on_key handles itself.
-    line("[ ]", "bias", "W09P2c: bias down / up (x1.5)");
-    line("B", "bias", "W09P2c: bias=sheet (the sheet's constant for the encoding)");
-    line("U", "bias", "W09P2c: bias=auto (the packing's precision + a receiver-slope term per fragment)");
-    line("- =", "light-radius", "soft: light radius down / up (0.05)");
-    line("Space", "time", "pause / resume both clocks (paused: time=T in the title and the URL)");
-    line("P", "", "print the settings: the URL query and the penumbra render command of this frame");
-    line("H, F1", "", "this list");
-    line("Esc", "", "quit");
-    return out;
-}
-
-std::vector<std::string> CourseApp::key_values(std::string_view option) const {
-    for (const Control& c : exercise_info(exercise_).controls)
-        if (c.option == option && !c.values.empty()) return {c.values.begin(), c.values.end()};
-    std::vector<std::string> out;
-    const render::OptionInfo* info = nullptr;
-    if (const auto* t = render::find_option(toggle_table(), option)) info = &t->info;
-    else info = &render::option_info(option);
-    for (const render::Choice& c : info->choices.empty() ? info->presets : info->choices) out.emplace_back(c.value);
-    return out;
-}
-
-std::string CourseApp::on_key(int key, bool shift) {
-    const auto set = [this](std::string_view name, const std::string& value) {
-        const std::string err = set_option(name, value);
-        return err.empty() ? std::string(name) + " = " + value : err;
-    };
-    const int exercises = static_cast<int>(exercise_list().size());
-    if (key >= '1' && key < '1' + std::min(exercises, kExerciseDigitKeys)) {
-        set_exercise(exercise_list()[static_cast<size_t>(key - '1')].id);
-        return std::string(exercise_info(exercise_).title);
-    }
-    if (key == platform::keys::Tab) {
-        int i = 0;
-        while (exercise_list()[static_cast<size_t>(i)].id != exercise_) ++i;
-        set_exercise(exercise_list()[static_cast<size_t>(((shift ? i - 1 : i + 1) % exercises + exercises) % exercises)].id);
-        return std::string(exercise_info(exercise_).title);
-    }
-    if (exercise_info(exercise_).terrain) {  // the fly camera
-        const double step = shift ? 20.0 : 2.0, turn = shift ? 20.0 : 5.0;
-        bool moved = true;
-        switch (key) {
-            case 'W':
-            case platform::keys::Up: fly(step, 0, 0, 0, 0); break;
-            case 'S':
-            case platform::keys::Down: fly(-step, 0, 0, 0, 0); break;
-            case 'Q':
-            case platform::keys::Left: fly(0, 0, 0, -turn, 0); break;
-            case 'E':
-            case platform::keys::Right: fly(0, 0, 0, turn, 0); break;
-            case 'R': fly(0, 0, 0, 0, 3.0); break;
-            case 'F': fly(0, 0, 0, 0, -3.0); break;
-            case 'O': reset_camera(); break;
-            default: moved = false;
-        }
-        if (moved) return camera_moved_ ? "camera = " + camera_value() : std::string("camera = the scene's");
-    }
-    // The bindings of this exercise alone first, then the others.
-    std::vector<const KeyBinding*> bindings;
-    for (const KeyBinding& k : key_bindings())
-        if (k.only == exercise_) bindings.push_back(&k);
-    for (const KeyBinding& k : key_bindings())
-        if (!k.only) bindings.push_back(&k);
-    for (const KeyBinding* kb : bindings) {
-        const KeyBinding& k = *kb;
-        if (k.key != key) continue;
-        // The next value among those offered (Shift: the previous), skipping what the context refuses.
-        const std::vector<std::string> values = key_values(k.option);
-        const std::string current = value_of(k.option);
-        const int n = static_cast<int>(values.size());
-        int i = static_cast<int>(std::find(values.begin(), values.end(), current) - values.begin());
-        if (i == n) {  // not among them (a map size off the list): step to the nearest ones
-            int above = 0;
-            if (k.option == "map-size")
-                while (above < n && std::stoi(values[static_cast<size_t>(above)]) < settings_.map_size) ++above;
-            i = shift ? above : above - 1;
-        }
-        for (int step = 0; step < n; ++step) {
-            i = ((shift ? i - 1 : i + 1) % n + n) % n;
-            // Without a context that has it (or any context yet), no depth texture.
-            const bool depth_texture = renderer_ && renderer_->caps().depth_texture;
-            if (k.option == "encoding" && values[static_cast<size_t>(i)] == "depthtex" && !depth_texture) continue;
-            std::string line = set(k.option, values[static_cast<size_t>(i)]);
-            if (line.find(" = ") == std::string::npos) continue;
-            if (k.option == "encoding") {
-                char buf[64];
-                std::snprintf(buf, sizeof buf, " (bias %.4g, default %.4g)", static_cast<double>(bias()),
-                              static_cast<double>(sheet_bias()));
-                line += buf;
-            }
-            return line;
-        }
-        return k.option == "encoding" ? std::string("encoding: no other encoding on this context") : std::string();
-    }
-    switch (key) {
-        case ' ':
-            paused_ = !paused_;
-            return paused_ ? "paused" : "running";
-        case '[':
-        case ']': {
-            // From auto, step from the encoding's default (auto's constant alone is far smaller).
-            const double from = static_cast<double>(settings_.bias_auto ? sheet_bias() : bias());
-            const double b = from * (key == ']' ? 1.5 : 1.0 / 1.5);
-            return set("bias", format_number(std::clamp(b, 1e-6, 1.0)));
-        }
-        case 'B': return set("bias", "sheet") + " (" + format_number(static_cast<double>(sheet_bias())) + ")";
-        case 'U': return set("bias", "auto") + " (" + format_number(static_cast<double>(bias())) + " + slope)";
-        case '=':
-        case '-': {  // the light's radius, in steps of 0.05 (from the scene's, 0 for the course scene)
-            const double r = static_cast<double>(settings_.light_radius.value_or(course_.scene.light.radius));
-            return set("light-radius", format_number(std::max(0.0, std::round((r + (key == '=' ? 0.05 : -0.05)) * 100.0) / 100.0)));
-        }
-        case 'P': {
-            render::Options o;
-            o.settings = frame_settings();
-            o.job.time = light_time_;
-            return "?" + query() + "\npenumbra render " + render::to_args(o);
-        }
-        case 'H':
-        case platform::keys::F1: return key_help();
-        default: return {};
-    }
-}
 
 }  // namespace penumbra::examples

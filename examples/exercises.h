@@ -18,7 +18,10 @@
 //   stencil, multipass  stencil effects; post-processing and deferred shading;
 //   cascades cascaded shadow maps over a kilometre of terrain (scene/terrain_scene.h) under a low
 //           sun: the number of cascades, the split, the snap, the blend, the cascades view, and a
-//           camera that flies (fly(), camera=x,y,z,yaw,pitch in the URL).
+//           camera that flies (fly(), camera=x,y,z,yaw,pitch in the URL);
+//   bulb    a point light's cube of six shadow maps in a room (scene/room_scene.h): the cube or one
+//           map, the map size, the filter, the cube's faces tinted, and the same fly camera, kept
+//           in the room.
 // Each frame is one or two plans whose inputs carry what an exercise changes (a view from the
 // light, a texture on the ground, a region of the window); the scene itself is never edited.
 // No GL here: the renderer and the gl layer do the drawing; the platform owns the context.
@@ -33,6 +36,7 @@
 #include <vector>
 
 #include "exercise_list.h"
+#include "fly_camera.h"
 #include "gl/caps.h"
 #include "render/plan.h"
 #include "render/renderer.h"
@@ -40,14 +44,6 @@
 #include "scene/course_scene.h"
 
 namespace penumbra::examples {
-
-// The terrain exercise's camera: where it stands (world metres) and where it looks (degrees: yaw
-// clockwise from north, -z, seen from above; pitch up from the horizon, within +-89).
-struct FlyCamera {
-    glm::vec3 eye{0.0f};
-    float yaw = 0.0f;
-    float pitch = 0.0f;
-};
 
 class CourseApp {
 public:
@@ -62,8 +58,8 @@ public:
     void set_exercise(Exercise e);
 
     // One option by its URL / command-line name: a technique setting (render's option table), a
-    // toggle (exercise_list.h), camera=X,Y,Z,YAW,PITCH (the terrain exercise's fly camera: metres
-    // and degrees), time=T (both clocks to T, paused) or eye=scene|in-shadow (the
+    // toggle (exercise_list.h), camera=X,Y,Z,YAW,PITCH (the fly camera of an exercise with a scene
+    // of its own: metres and degrees), time=T (both clocks to T, paused) or eye=scene|in-shadow (the
     // camera moved into the teapot's shadow each frame, after the light has moved). Returns "" or one line naming
     // the problem; nothing changes on a problem. Where the exercise's control offers a list (a
     // select, radios, a checkbox), a value off the list is refused, or, for a number (the map
@@ -124,16 +120,19 @@ public:
     // nothing): W09P2b's rtt=copy texture larger than the window.
     const std::string& frame_note() const { return frame_note_; }
 
-    // The terrain exercise's fly camera: moves `forward` metres along the view, `right` metres
-    // to the side and `up` metres upwards, then turns by `yaw` degrees (to the right) and `pitch`
-    // degrees (up); the eye stays at least 0.3 m above the ground and within 2 km of the centre.
-    // Returns false (and changes nothing) in the exercises with the course scene.
+    // The fly camera of an exercise with a scene of its own (flies(), fly_camera.h): moves `forward`
+    // metres along the view, `right` metres to the side and `up` metres upwards, then turns by `yaw`
+    // degrees (to the right) and `pitch` degrees (up), kept within the scene's bounds (the terrain:
+    // 0.3 m above the ground, within 2 km of the centre; the room: 0.2 m inside it). Returns false
+    // (and changes nothing) in the exercises with the course scene.
     bool fly(double forward, double right, double up, double yaw, double pitch);
     // Back to the scene's own camera (the glTF's).
     void reset_camera();
     // Whether the camera has left the scene's own (the URL then keeps camera=...).
-    bool camera_moved() const { return camera_moved_; }
-    const FlyCamera& camera() const { return fly_; }
+    bool camera_moved() const;
+    const FlyCamera& camera() const;
+    // The metres a button or key press moves the fly camera (0 without one).
+    double fly_step() const;
     // The scene the current exercise draws.
     const scene::Scene& scene() const;
 
@@ -147,9 +146,16 @@ private:
     std::string keep_to_the_list(render::Settings& t, std::string_view name);
     void render(render::Settings s, const render::FrameInputs& in);
     void render(const scene::Scene& sc, const render::Settings& s, const render::FrameInputs& in);
-    // The terrain, made the first time an exercise needs it.
-    void ensure_terrain();
-    std::string camera_value() const;
+    // A scene built in code with its fly camera: made the first time an exercise needs it.
+    struct OwnScene {
+        std::unique_ptr<scene::Scene> scene;
+        scene::Camera camera;     // its own camera
+        FlyCamera fly, start;     // the fly camera, and where the scene's camera stands
+        bool moved = false;       // the fly camera has left the scene's
+    };
+    // The current exercise's own scene (made if needed), or null with the course scene.
+    OwnScene* own_scene();
+    const OwnScene* own_scene() const;
     // The inputs that show the scene from the light: its view and projection fitted tightly around
     // what the scene's camera sees in `camera` (its output) and, with `ortho`, a directional light
     // along the point light's line of sight.
@@ -163,10 +169,8 @@ private:
     Toggles toggles_;
     scene::CourseScene course_;
     scene::Camera scene_camera_;  // the course scene's own camera (eye=scene)
-    std::unique_ptr<scene::Scene> terrain_;  // the terrain exercise's scene (null until needed)
-    scene::Camera terrain_camera_;           // its own camera
-    FlyCamera fly_, fly_start_;              // the fly camera, and where the scene's camera stands
-    bool camera_moved_ = false;
+    OwnScene terrain_;  // the cascades exercise's
+    OwnScene room_;     // the bulb exercise's
     bool eye_in_shadow_ = false;  // eye=in-shadow: scene::place_eye_in_shadow each frame
     int fbo_mesh_ = -1;      // the table quad with uvs 0..1 (the FBO image once over the table)
     int fbo_material_ = -1;  // white, textured with the placeholder image the FBO replaces

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -26,6 +27,13 @@ struct QueryPair {
 // The decoded pairs, in order; every pair skipped adds one line to `notes` (control characters and
 // bytes that are not UTF-8 escaped, so a note is one printable line).
 std::vector<QueryPair> parse_query(std::string_view query, std::vector<std::string>& notes);
+
+// A number as the URLs and the desktop's lines write it: 6 significant digits ("0.003", "1e+06").
+inline std::string format_number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
 
 // A name or value as a query writes it: '%', '+', '&', '=', '#', spaces, control characters and
 // bytes outside ASCII as %XX, so parse_query reads back the same bytes ("1e+06": "1e%2B06").

@@ -30,6 +30,8 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
     // The cascades exercise starts with four cascades, tinted.
     EXPECT_EQ(CourseApp(Exercise::Cascades).query(),
               "cascades=4&cascade-split=0.9&cascade-snap=on&cascade-blend=0.1&map-size=1024&aov=cascades");
+    // The bulb exercise with the cube's faces tinted, 512 texels a face, a bulb of 5 cm.
+    EXPECT_EQ(CourseApp(Exercise::Bulb).query(), "cascades=cube&map-size=512&filter=hard&light-radius=0.05&aov=cascades");
 }
 
 TEST(ExerciseOptions, EveryChangeReadsBack) {
@@ -380,7 +382,7 @@ TEST(ExerciseOptions, Keys) {
 // names an option of a table, and every value a control offers is one that option accepts.
 TEST(ExerciseList, EveryControlNamesAnOptionAndOffersValidValues) {
     using namespace penumbra;
-    ASSERT_EQ(exercise_list().size(), 9u);
+    ASSERT_EQ(exercise_list().size(), 10u);
     for (const auto& x : exercise_list()) {
         Exercise parsed{};
         ASSERT_TRUE(examples::parse_exercise(x.name, parsed));
@@ -565,7 +567,10 @@ TEST(ExerciseCascades, Keys) {
     for (int i = 0; i < 5; ++i) a.on_key(penumbra::platform::keys::Tab, false);
     EXPECT_EQ(a.exercise(), Exercise::Cascades);
     a.on_key(penumbra::platform::keys::Tab, false);
+    EXPECT_EQ(a.exercise(), Exercise::Bulb);
+    a.on_key(penumbra::platform::keys::Tab, false);
     EXPECT_EQ(a.exercise(), Exercise::W09P1);
+    a.on_key(penumbra::platform::keys::Tab, true);
     a.on_key(penumbra::platform::keys::Tab, true);
     EXPECT_EQ(a.exercise(), Exercise::Cascades);
     // Its settings do not follow into the course scene's exercises; they come back with it.
@@ -576,4 +581,73 @@ TEST(ExerciseCascades, Keys) {
     const std::string help = CourseApp::key_help();
     EXPECT_NE(help.find("cascade-split"), std::string::npos) << help;
     EXPECT_NE(help.find("exercise cascades"), std::string::npos) << help;
+}
+
+// The bulb exercise: its own scene (the room), the fly camera kept inside it, its keys (N the
+// shadow maps, K the filter there), its settings kept from the others.
+TEST(ExerciseBulb, TheRoomAndItsCamera) {
+    CourseApp a(Exercise::Bulb);
+    EXPECT_EQ(a.scene().objects.size(), 22u);
+    EXPECT_EQ(a.scene().light.type, penumbra::scene::LightType::Point);
+    EXPECT_EQ(a.frame_settings().cascades, penumbra::render::Settings::kCube);
+    EXPECT_DOUBLE_EQ(a.fly_step(), 0.25);
+    const penumbra::examples::FlyCamera start = a.camera();
+    EXPECT_NEAR(start.eye.x, 3.7f, 1e-4f);  // make_large_scenes.py: the corner under the ceiling
+    EXPECT_NEAR(start.eye.y, 2.6f, 1e-4f);
+    ASSERT_TRUE(a.fly(1.0, 0.0, 0.0, 0.0, 0.0));
+    EXPECT_NEAR(glm::length(a.camera().eye - start.eye), 1.0f, 1e-3f);
+    // The walls, the floor and the ceiling hold it 0.2 m inside the room.
+    ASSERT_TRUE(a.fly(0.0, 0.0, 50.0, 0.0, 0.0));
+    EXPECT_NEAR(a.camera().eye.y, 2.8f, 1e-5f);
+    ASSERT_TRUE(a.fly(0.0, 0.0, -50.0, 0.0, 0.0));
+    EXPECT_NEAR(a.camera().eye.y, 0.2f, 1e-5f);
+    ASSERT_TRUE(a.fly(0.0, -50.0, 0.0, 0.0, 0.0));
+    ASSERT_TRUE(a.fly(0.0, 0.0, 0.0, 90.0, 0.0));
+    ASSERT_TRUE(a.fly(50.0, 0.0, 0.0, 0.0, 0.0));
+    for (int k : {0, 2}) {
+        EXPECT_LE(std::fabs(a.camera().eye[k]), (k == 0 ? 4.0f : 3.0f) - 0.2f + 1e-5f) << k;
+    }
+    // The URL keeps it, a reload puts it back; an eye outside the room is refused.
+    const std::string q = a.query();
+    EXPECT_NE(q.find("camera="), std::string::npos) << q;
+    CourseApp b(Exercise::Bulb);
+    for (const auto& [k, v] : a.options()) ASSERT_EQ(b.set_option(k, v), "") << k << "=" << v;
+    EXPECT_EQ(b.query(), q);
+    EXPECT_NE(b.set_option("camera", "5,1,0,0,0"), "");
+    EXPECT_NE(b.set_option("camera", "0,-0.5,0,0,0"), "");
+    EXPECT_EQ(b.query(), q);
+    ASSERT_EQ(b.set_option("camera", "0,0.1,0,0,0"), "");  // inside, but too close to the floor: lifted
+    EXPECT_NEAR(b.camera().eye.y, 0.2f, 1e-5f);
+    // The terrain's camera is not the room's.
+    b.on_key(penumbra::platform::keys::Tab, true);
+    EXPECT_EQ(b.exercise(), Exercise::Cascades);
+    EXPECT_FALSE(b.camera_moved());
+    EXPECT_DOUBLE_EQ(b.fly_step(), 2.0);
+    EXPECT_EQ(b.set_option("camera", "0,-50,0,0,0"), "");  // under the terrain: kept above its ground, not refused
+    EXPECT_NEAR(b.camera().eye.y - penumbra::scene::terrain_km_height(0.0f, 0.0f), 0.3f, 1e-3f);
+}
+
+TEST(ExerciseBulb, Keys) {
+    CourseApp a(Exercise::Bulb);
+    EXPECT_EQ(a.on_key('N', false), "cascades = 1");
+    EXPECT_EQ(a.frame_settings().cascades, 1);
+    EXPECT_EQ(a.on_key('N', false), "cascades = auto");
+    EXPECT_EQ(a.on_key('N', true), "cascades = 1");
+    EXPECT_EQ(a.on_key('N', true), "cascades = cube");
+    EXPECT_EQ(a.on_key('K', false), "filter = pcf4x4");
+    EXPECT_EQ(a.on_key('K', false), "filter = pcss");
+    EXPECT_EQ(a.on_key('M', false), "map-size = 1024");
+    EXPECT_EQ(a.on_key('M', false), "map-size = 256");
+    EXPECT_EQ(a.on_key('A', false), "aov = color");
+    const auto eye = a.camera().eye;
+    EXPECT_EQ(a.on_key('W', false).rfind("camera = ", 0), 0u);
+    EXPECT_NEAR(glm::length(a.camera().eye - eye), 0.25f, 1e-4f);
+    EXPECT_EQ(a.on_key('O', false), "camera = the scene's");
+    // Leaving it puts its starting settings back; the cube is its alone.
+    a.on_key('1', false);
+    EXPECT_EQ(a.frame_settings().cascades, 1);
+    EXPECT_EQ(a.settings().map_size, 1024);
+    const std::string help = CourseApp::key_help();
+    EXPECT_NE(help.find("bulb: shadow maps cube"), std::string::npos) << help;
+    EXPECT_NE(help.find("exercise bulb"), std::string::npos) << help;
 }
