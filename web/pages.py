@@ -109,7 +109,7 @@ def controls_html(exercise: dict, options: dict) -> str:
 
 
 def fly_html(exercise: dict) -> str:
-    """The fly camera's panel (an exercise over the terrain, "fly" in the catalogue): buttons for
+    """The fly camera's panel (an exercise with a scene of its own, "fly" in the catalogue): buttons for
     each move, read by penumbra-page.js (data-fly), and the camera's position."""
     if not exercise.get("fly"):
         return ""

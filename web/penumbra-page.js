@@ -15,11 +15,12 @@
 //   <input type=range|number data-option>         the number (a slider and its box, kept in step)
 //   #bias + radios name=bias-mode                 default (the encoding's), auto, or the number
 //                                                 in #bias (fixed)
-//   #fly with <button data-fly=MOVE>              the fly camera of an exercise over the terrain
-//                                                 (the cascades page): the buttons, keys on the
+//   #fly with <button data-fly=MOVE>              the fly camera of an exercise with a scene of
+//                                                 its own (the cascades and bulb pages; a press
+//                                                 moves the state's camera.step metres): the buttons, keys on the
 //                                                 focused canvas, a drag on it to look around; the
 //                                                 camera goes into the URL (camera=x,y,z,yaw,pitch)
-//   #cascade-plan                                 the last frame plan's cascade lines, where it has them
+//   #cascade-plan                                 the last frame plan's cascade or cube face lines, where it has them
 'use strict';
 
 (function () {
@@ -227,8 +228,9 @@
     return a.done + ' of ' + a.total + how;
   }
 
-  // ---- the fly camera (an exercise over the terrain) ------------------------------------------
-  // A press moves 2 m or turns 5 degrees (looks up or down 3); Shift: 10 times as far (turns 4 times).
+  // ---- the fly camera (an exercise with a scene of its own: the terrain, the room) -----------
+  // A press moves 2 m (the room: 0.25 m) or turns 5 degrees (looks up or down 3); Shift: 10 times as
+  // far (turns 4 times).
   const MOVES = {
     forward: [2, 0, 0, 0, 0], back: [-2, 0, 0, 0, 0], left: [0, -2, 0, 0, 0], right: [0, 2, 0, 0, 0],
     rise: [0, 0, 2, 0, 0], sink: [0, 0, -2, 0, 0], 'turn-left': [0, 0, 0, -5, 0], 'turn-right': [0, 0, 0, 5, 0],
@@ -271,7 +273,9 @@
 
   function flyMove(move, shift) {
     const m = MOVES[move];
-    const k = shift ? 10 : 1;
+    // MOVES are in 2 m steps (the terrain's); the room's camera moves its own step a press.
+    const step = (state().camera || {}).step || 2;
+    const k = (shift ? 10 : 1) * step / 2;
     const turn = shift ? 4 : 1;
     flyBy(m[0] * k, m[1] * k, m[2] * k, m[3] * turn, m[4] * turn);
     cameraMoved();
@@ -318,11 +322,12 @@
     canvas.addEventListener('pointercancel', endDrag);
   }
 
-  // The plan's cascade lines: a pass per cascade ("shadow-map cascade N: ... view depth A..B,
-  // texel T, ...") and the camera pass's cascades and blend.
+  // The plan's cascade and cube face lines: a pass per cascade ("shadow-map cascade N: ... view
+  // depth A..B, texel T, ...") or per cube face ("shadow-map face +x: ... tile at (X, Y), ... depth
+  // A..B, N of M caster(s)") and the camera pass's cascades and blend, or the cube's faces drawn.
   function cascadePlan() {
     const plan = Module.UTF8ToString(Module._penumbra_plan());
-    return plan.split('\n').filter((l) => /cascade/.test(l))
+    return plan.split('\n').filter((l) => /cascade|face [+-][xyz]|a cube of/.test(l))
       .map((l) => l.trim().replace(/^\d+\.\s*(shadow-map\s*)?/, '').replace(/reused \([^)]*\)/, 'reused')).join('\n');
   }
 

@@ -3,6 +3,9 @@
 pixel by the cascade that shadows it: red, green, blue, yellow from near to far).
 
 usage: check_cascades.py tints FILE.png N       the picture shows exactly the first N tints
+       check_cascades.py faces FILE.png N       at least N of a point light's cube's six face tints
+                                                (+x red, -x green, +y blue, -y yellow, +z magenta,
+                                                -z cyan: the bulb exercise) are shown
        check_cascades.py differ A.png B.png S   more than a share S of the pixels differ (by over 16)
        check_cascades.py match A.png B.png      the same frame: mean absolute difference <= 1.5
                                                 levels, under 0.5 % of pixels off by more than 16
@@ -22,6 +25,7 @@ from check_png import read_rgb  # noqa: E402
 
 TINTS = [("red", lambda h: h <= 25 or h >= 335), ("green", lambda h: 90 <= h <= 150),
          ("blue", lambda h: 200 <= h <= 260), ("yellow", lambda h: 40 <= h <= 70)]
+FACES = TINTS + [("magenta", lambda h: 285 <= h <= 320), ("cyan", lambda h: 170 <= h <= 195)]
 PRESENT, ABSENT = 0.0005, 0.0001
 
 
@@ -30,15 +34,15 @@ def rgb(path):
     return w, h, [tuple(flat[i:i + 3]) for i in range(0, len(flat), 3)]
 
 
-def tint_shares(path):
+def tint_shares(path, tints=TINTS):
     w, h, px = rgb(path)
-    counts = {name: 0 for name, _ in TINTS}
+    counts = {name: 0 for name, _ in tints}
     for r, g, b in px:
         hue, sat, val = colorsys.rgb_to_hsv(r / 255.0, g / 255.0, b / 255.0)
         if sat < 0.3 or val < 0.15:
             continue
         deg = hue * 360.0
-        for name, inside in TINTS:
+        for name, inside in tints:
             if inside(deg):
                 counts[name] += 1
                 break
@@ -57,6 +61,13 @@ def main():
                 failed.append("%s holds %.4f %% of the pixels: cascade %d is not shown" % (name, 100 * shares[name], i))
             if i >= n and shares[name] > ABSENT:
                 failed.append("%s holds %.4f %% of the pixels with %d cascade(s)" % (name, 100 * shares[name], n))
+    elif what == "faces":
+        path, n = sys.argv[2], int(sys.argv[3])
+        shares = tint_shares(path, FACES)
+        print("%s: %s" % (os.path.basename(path), ", ".join("%s %.3f %%" % (k, 100 * v) for k, v in shares.items())))
+        shown = [k for k, v in shares.items() if v >= PRESENT]
+        if len(shown) < n:
+            failed.append("%d face tints shown (%s), want at least %d" % (len(shown), ", ".join(shown), n))
     elif what in ("differ", "match"):
         wa, ha, a = rgb(sys.argv[2])
         wb, hb, b = rgb(sys.argv[3])

@@ -13,7 +13,8 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng, waitFrames } from './harness.mjs';
+import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng, waitFrames, tintShares, CASCADE_TINTS }
+  from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
 if (!cli || !outDir) throw new Error('usage: cascades.mjs PENUMBRA_CLI OUT_DIR');
@@ -21,23 +22,9 @@ const SCENE = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../
 const DEFAULTS = 'cascades=4&cascade-split=0.9&cascade-snap=on&cascade-blend=0.1&map-size=1024&aov=cascades';
 
 // The cascades view's tints (red, green, blue, yellow from near to far): the share of the picture
-// each holds, counted on saturated pixels by hue (as tests/desktop/check_cascades.py counts them).
-const TINTS = [['red', (h) => h <= 25 || h >= 335], ['green', (h) => h >= 90 && h <= 150],
-               ['blue', (h) => h >= 200 && h <= 260], ['yellow', (h) => h >= 40 && h <= 70]];
-function tints(px) {
-  const count = Object.fromEntries(TINTS.map(([n]) => [n, 0]));
-  const n = px.width * px.height;
-  for (let i = 0; i < n; ++i) {
-    const r = px.data[4 * i] / 255, g = px.data[4 * i + 1] / 255, b = px.data[4 * i + 2] / 255;
-    const max = Math.max(r, g, b), min = Math.min(r, g, b);
-    if (max < 0.15 || (max - min) / max < 0.3) continue;
-    let h = max === r ? (g - b) / (max - min) : max === g ? 2 + (b - r) / (max - min) : 4 + (r - g) / (max - min);
-    h = (h * 60 + 360) % 360;
-    for (const [name, inside] of TINTS) if (inside(h)) { ++count[name]; break; }
-  }
-  for (const k of Object.keys(count)) count[k] /= n;
-  return count;
-}
+// each holds (harness.mjs: tintShares).
+const TINTS = CASCADE_TINTS;
+const tints = (px) => tintShares(px, TINTS);
 const PRESENT = 0.0005, ABSENT = 0.0001;
 function checkTints(px, n, what) {
   const t = tints(px);

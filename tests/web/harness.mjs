@@ -16,7 +16,7 @@ export const CHROMIUM_ARGS = [
   '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update',
   '--disable-sync',
 ];
-export const PAGES = ['w09p1', 'w09p2a', 'w09p2b', 'w09p2c', 'volumes', 'soft', 'stencil', 'multipass', 'cascades'];
+export const PAGES = ['w09p1', 'w09p2a', 'w09p2b', 'w09p2c', 'volumes', 'soft', 'stencil', 'multipass', 'cascades', 'bulb'];
 
 const TYPES = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.css': 'text/css; charset=utf-8',
@@ -174,4 +174,27 @@ export function savePng(px, file) {
   const png = new PNG({ width: px.width, height: px.height });
   png.data = Buffer.from(px.data);
   writeFileSync(file, PNG.sync.write(png));
+}
+
+// The tints of --aov cascades: a cascade's (red, green, blue, yellow from near to far), a point
+// light's cube face's (+x red, -x green, +y blue, -y yellow, +z magenta, -z cyan), by hue range.
+export const CASCADE_TINTS = [['red', (h) => h <= 25 || h >= 335], ['green', (h) => h >= 90 && h <= 150],
+                              ['blue', (h) => h >= 200 && h <= 260], ['yellow', (h) => h >= 40 && h <= 70]];
+export const FACE_TINTS = CASCADE_TINTS.concat([['magenta', (h) => h >= 285 && h <= 320],
+                                                ['cyan', (h) => h >= 170 && h <= 195]]);
+// The share of the picture each tint holds, counted on saturated pixels by hue (as
+// tests/desktop/check_cascades.py counts them).
+export function tintShares(px, tints) {
+  const count = Object.fromEntries(tints.map(([n]) => [n, 0]));
+  const n = px.width * px.height;
+  for (let i = 0; i < n; ++i) {
+    const r = px.data[4 * i] / 255, g = px.data[4 * i + 1] / 255, b = px.data[4 * i + 2] / 255;
+    const max = Math.max(r, g, b), min = Math.min(r, g, b);
+    if (max < 0.15 || (max - min) / max < 0.3) continue;
+    let h = max === r ? (g - b) / (max - min) : max === g ? 2 + (b - r) / (max - min) : 4 + (r - g) / (max - min);
+    h = (h * 60 + 360) % 360;
+    for (const [name, inside] of tints) if (inside(h)) { ++count[name]; break; }
+  }
+  for (const k of Object.keys(count)) count[k] /= n;
+  return count;
 }
