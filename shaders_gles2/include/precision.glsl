@@ -7,6 +7,7 @@ precision highp float;
 // Mesa's llvmpipe really does return those texels at half precision (a packed depth read back
 // 4.6e-4 short of what was stored), so the shadow map is sampled at highp too.
 precision highp sampler2D;
+precision highp samplerCube;  // the same for a cube map (--cube-layout cubemap)
 #else
 precision mediump float;
 #endif

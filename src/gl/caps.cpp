@@ -68,6 +68,7 @@ Caps probe_caps(const platform::Platform& context) {
     c.render_mipmap = c.has("GL_OES_fbo_render_mipmap");
 
     c.max_texture_size = get_int(GL_MAX_TEXTURE_SIZE);
+    c.max_cube_map_size = get_int(GL_MAX_CUBE_MAP_TEXTURE_SIZE);
     c.max_renderbuffer_size = get_int(GL_MAX_RENDERBUFFER_SIZE);
     GLint dims[2] = {0, 0};
     glGetIntegerv(GL_MAX_VIEWPORT_DIMS, dims);

@@ -52,6 +52,7 @@ struct Caps {
     int stencil_bits = 8;
 
     int max_texture_size = 0;
+    int max_cube_map_size = 0;  // GL_MAX_CUBE_MAP_TEXTURE_SIZE (0: not queried)
     int max_renderbuffer_size = 0;
     int max_viewport_width = 0;
     int max_viewport_height = 0;

@@ -204,7 +204,7 @@ void Device::bind_texture(int unit, const Texture& texture) {
     const auto u = static_cast<size_t>(unit);
     if (u < bound_.size() && bound_[u] == texture.id() && texture.id() != 0) return;
     PENUMBRA_GL(glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit)));
-    PENUMBRA_GL(glBindTexture(GL_TEXTURE_2D, texture.id()));
+    PENUMBRA_GL(glBindTexture(texture.bind_target(), texture.id()));
     if (u >= bound_.size()) bound_.resize(u + 1, 0);
     bound_[u] = texture.id();
 }

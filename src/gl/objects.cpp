@@ -44,13 +44,20 @@ void Buffer::update(const void* data, std::size_t bytes) {
 
 // ---- Texture --------------------------------------------------------------------------------
 
-Texture::Texture(const TextureDesc& d) : width_(d.width), height_(d.height), format_(d.format) {
+Texture::Texture(const TextureDesc& d) : width_(d.width), height_(d.height), format_(d.format), cube_(d.cube) {
     if (d.width <= 0 || d.height <= 0) throw Error(std::string(d.label) + ": texture size must be positive");
+    if (d.cube && (d.width != d.height || d.format != TextureFormat::RGBA8 || d.rgba))
+        throw Error(std::string(d.label) + ": a cube map here has square RGBA8 faces and no initial pixels");
     GLuint id = 0;
     glGenTextures(1, &id);
     h_ = Handle<TextureDeleter>(id);
-    PENUMBRA_GL(glBindTexture(GL_TEXTURE_2D, id));
-    if (d.format == TextureFormat::Depth) {
+    const GLenum target = bind_target();
+    PENUMBRA_GL(glBindTexture(target, id));
+    if (d.cube) {
+        for (GLenum face = 0; face < 6; ++face)
+            PENUMBRA_GL(glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_RGBA, d.width, d.height, 0, GL_RGBA,
+                                     GL_UNSIGNED_BYTE, nullptr));
+    } else if (d.format == TextureFormat::Depth) {
         PENUMBRA_GL(glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, d.width, d.height, 0, GL_DEPTH_COMPONENT,
                                  GL_UNSIGNED_INT, nullptr));
     } else if (d.format == TextureFormat::RGBA16F) {
@@ -61,13 +68,15 @@ Texture::Texture(const TextureDesc& d) : width_(d.width), height_(d.height), for
         PENUMBRA_GL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, d.width, d.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, d.rgba));
     }
     if (d.sampling == Sampling::LinearMipmap || d.sampling == Sampling::NearestMipmap)
-        PENUMBRA_GL(glGenerateMipmap(GL_TEXTURE_2D));
+        PENUMBRA_GL(glGenerateMipmap(target));
     set_sampling(d.sampling);
-    const GLint wrap = d.wrap == Wrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
-    PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap));
-    PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap));
+    const GLint wrap = d.wrap == Wrap::Repeat && !d.cube ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+    PENUMBRA_GL(glTexParameteri(target, GL_TEXTURE_WRAP_S, wrap));
+    PENUMBRA_GL(glTexParameteri(target, GL_TEXTURE_WRAP_T, wrap));
     check_errors(d.label, __FILE__, __LINE__);
 }
+
+unsigned int Texture::bind_target() const { return cube_ ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D; }
 
 void Texture::set_sampling(Sampling sampling) {
     GLint min_filter = GL_NEAREST, mag_filter = GL_NEAREST;
@@ -77,9 +86,9 @@ void Texture::set_sampling(Sampling sampling) {
         case Sampling::LinearMipmap: min_filter = GL_LINEAR_MIPMAP_LINEAR, mag_filter = GL_LINEAR; break;
         case Sampling::NearestMipmap: min_filter = GL_NEAREST_MIPMAP_NEAREST; break;
     }
-    PENUMBRA_GL(glBindTexture(GL_TEXTURE_2D, id()));
-    PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min_filter));
-    PENUMBRA_GL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, mag_filter));
+    PENUMBRA_GL(glBindTexture(bind_target(), id()));
+    PENUMBRA_GL(glTexParameteri(bind_target(), GL_TEXTURE_MIN_FILTER, min_filter));
+    PENUMBRA_GL(glTexParameteri(bind_target(), GL_TEXTURE_MAG_FILTER, mag_filter));
 }
 
 void Texture::set_level(int level, int width, int height, const std::uint8_t* rgba) {
@@ -106,7 +115,7 @@ void Texture::copy_framebuffer(int level, int x, int y, int width, int height, b
 }
 
 std::size_t Texture::bytes() const {
-    return static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) *
+    return (cube_ ? 6u : 1u) * static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) *
            static_cast<std::size_t>(bytes_per_pixel(format_));
 }
 
@@ -202,8 +211,10 @@ Framebuffer::Framebuffer(const FramebufferDesc& d) {
     h_ = Handle<FramebufferDeleter>(id);
     PENUMBRA_GL(glBindFramebuffer(GL_FRAMEBUFFER, id));
     if (d.color)
-        PENUMBRA_GL(
-            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, d.color->id(), d.color_level));
+        PENUMBRA_GL(glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                           d.color->cube() ? static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + d.color_face)
+                                                           : GL_TEXTURE_2D,
+                                           d.color->id(), d.color_level));
     GLenum buffers[1 + kMaxExtraColors] = {GL_COLOR_ATTACHMENT0};
     GLsizei count = 1;
     for (const Texture* t : d.more_colors) {

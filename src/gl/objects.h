@@ -76,6 +76,9 @@ struct TextureDesc {
     Sampling sampling = Sampling::Nearest;
     Wrap wrap = Wrap::Clamp;
     const std::uint8_t* rgba = nullptr;  // initial RGBA8 pixels (rows bottom first), or none
+    // A cube map (GL_TEXTURE_CUBE_MAP): six square faces of width x width, RGBA8, no initial
+    // pixels (rendered into: FramebufferDesc::color_face), read with textureCube.
+    bool cube = false;
     const char* label = "texture";
 };
 
@@ -87,7 +90,9 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     TextureFormat format() const { return format_; }
-    std::size_t bytes() const;  // estimated GPU memory of level 0
+    bool cube() const { return cube_; }
+    unsigned int bind_target() const;  // GL_TEXTURE_2D or GL_TEXTURE_CUBE_MAP
+    std::size_t bytes() const;  // estimated GPU memory of level 0 (all six faces of a cube)
 
     // Mip levels (RGBA8 textures): level `level` (>= 1) defined as width x height RGBA8 pixels
     // (rows bottom first), or undefined contents with null; and glGenerateMipmap over level 0.
@@ -105,6 +110,7 @@ private:
     Handle<TextureDeleter> h_;
     int width_ = 0, height_ = 0;
     TextureFormat format_ = TextureFormat::RGBA8;
+    bool cube_ = false;
 };
 
 class Renderbuffer {
@@ -134,6 +140,8 @@ struct FramebufferDesc {
     // The level of `color` rendered into: 0, or any other with OES_fbo_render_mipmap
     // (Caps::render_mipmap; GLES 2 and WebGL 1 render into level 0 only).
     int color_level = 0;
+    // `color` is a cube map: the face rendered into, 0..5 (+x, -x, +y, -y, +z, -z).
+    int color_face = 0;
     // COLOR_ATTACHMENT1.. in order (null: none): with any, the framebuffer's draw buffers are all
     // of its colour attachments, gl_FragData[i] into attachment i.
     const Texture* more_colors[kMaxExtraColors] = {nullptr, nullptr, nullptr};
