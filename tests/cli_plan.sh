@@ -18,7 +18,7 @@ import json, sys
 p = json.load(open(sys.argv[1]))
 assert p["passes"] and p["resources"], "no passes or no resources"
 for r in p["resources"]:
-    assert r["bytes"] == r["width"] * r["height"] * ((4 if r["color"] else 0) + (4 if r["depth_texture"] else 0)
+    assert r["bytes"] == r["width"] * r["height"] * ((4 * (6 if r["cube"] else 1) if r["color"] else 0) + (4 if r["depth_texture"] else 0)
         + {None: 0, "depth16": 2, "depth24": 4, "depth24-stencil8": 4, "depth-stencil": 4}[r["depth_buffer"]]), r
 for q in p["passes"]:
     assert q["target"]["resource"] == "window" or any(r["name"] == q["target"]["resource"] for r in p["resources"])
@@ -73,6 +73,18 @@ assert (m["width"], m["height"]) == (384, 256), m' && echo "ok cube auto: the fa
 # (into a file first: grep -q stops reading at its match, and pipefail would count the plan's SIGPIPE)
 "$penumbra" plan --scene "$data/bulb_room.gltf" --cascades cube --size 64x64 > cube.txt && grep -q "^cube: 6 of 6 faces drawn" cube.txt \
   && echo "ok cube: the faces printed" || { echo "FAIL cube's text plan"; fail=1; }
+# --cube-layout cubemap: one square texture of six faces, each pass into its face.
+check cube-map --scene "$data/bulb_room.gltf" --cascades cube --cube-layout cubemap --map-size 128 --size 64x64
+"$penumbra" plan --scene "$data/bulb_room.gltf" --cascades cube --cube-layout cubemap --map-size 128 --size 64x64 --json > cube-map.json &&
+python3 -c '
+import json
+p = json.load(open("cube-map.json"))
+assert p["cube"]["layout"] == "cubemap", p["cube"]
+m = [r for r in p["resources"] if r["name"] == "shadow-map"][0]
+assert (m["width"], m["height"]) == (128, 128), m
+faces = [q["target"].get("face") for q in p["passes"] if q["name"].startswith("shadow-map face ")]
+assert faces and all(f == q for f, q in zip(faces, [x["face"] for x in p["cube"]["faces"] if x["drawn"]])), faces' \
+  && echo "ok cube map: one 128 x 128 cube texture, a pass per drawn face into that face" || { echo "FAIL cube map"; fail=1; }
 "$penumbra" plan --scene "$data/terrain_km.gltf" --cascades cube --size 64x64 > cube-sun.txt &&
   grep -q "note: --cascades cube: one map instead, the light is not a point light" cube-sun.txt \
   && echo "ok cube with a sun: one map, a note" || { echo "FAIL cube with a directional light"; fail=1; }

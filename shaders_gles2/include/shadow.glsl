@@ -4,7 +4,11 @@
 // branches on settings at run time.
 #include "pack.glsl"
 
+#ifdef CUBE_MAP
+uniform samplerCube u_shadow_cube;  // --cube-layout cubemap: the cube's faces (CUBE)
+#else
 uniform sampler2D u_shadow_map;
+#endif
 uniform vec2 u_texmapscale;  // 1/width, 1/height of the shadow map: one texel in texture space
 uniform float u_bias;        // the fragment is in shadow if z_l > depth + bias (auto: the constant part)
 #if defined(CASCADES) || defined(CUBE)
@@ -44,6 +48,18 @@ vec3 cubeFaceEye(vec3 d) {
 }
 #define SHADOW_ROTATE(v) cubeFaceEye(v)
 #define SHADOW_CENTER vec2(0.0)
+
+#ifdef CUBE_MAP
+// cubeFaceEye undone: a direction in face g_cube_face's eye space back in the world.
+vec3 cubeFaceWorld(vec3 e) {
+    if (g_cube_face == 0) return vec3(-e.z, e.y, e.x);
+    if (g_cube_face == 1) return vec3(e.z, e.y, -e.x);
+    if (g_cube_face == 2) return vec3(-e.x, -e.z, -e.y);
+    if (g_cube_face == 3) return vec3(-e.x, e.z, e.y);
+    if (g_cube_face == 4) return vec3(-e.x, e.y, -e.z);
+    return e;
+}
+#endif
 #endif
 
 #ifdef BIAS_AUTO
@@ -87,6 +103,25 @@ float shadowBiasReach(vec3 normal, vec3 c, float reach) { return u_bias; }
 float shadowBias(vec3 normal, vec3 c) { return u_bias; }
 #endif
 
+#ifdef CUBE_MAP
+// A point of face g_cube_face's map read from the cube map by its direction: the faces were drawn
+// turned 180 degrees about their axes (shadow::fit_cube), which is how textureCube lays out a face,
+// so the direction finds the texel drawn for it. Past the face's edge (a filter's taps) it finds
+// the next face's, whose window depth is along that face's axis: the point it holds is turned
+// into this face's window depth (along this face's axis, 1 / m of the other's).
+float shadowDepth(vec2 uv) {
+    vec3 d = cubeFaceWorld(vec3((uv - 0.5) / u_cube_depth.x, -1.0));
+#ifdef ENC_RGBA
+    float stored = unpackDepth(textureCube(u_shadow_cube, d));
+#else
+    float stored = textureCube(u_shadow_cube, d).r;
+#endif
+    vec3 a = abs(d);
+    float m = max(a.x, max(a.y, a.z));
+    // window depth = y - z / depth: the other face's depth z / (y - stored) is m times this face's.
+    return MP(m <= 1.0 ? stored : u_cube_depth.y - m * (u_cube_depth.y - stored));
+}
+#else
 float shadowDepth(vec2 uv) {
 #if defined(CASCADES) || defined(CUBE)
     uv = g_shadow_tile.xy + clamp(uv, 0.5 * u_texmapscale, 1.0 - 0.5 * u_texmapscale) * g_shadow_tile.zw;
@@ -98,6 +133,7 @@ float shadowDepth(vec2 uv) {
     return MP(texture2D(u_shadow_map, uv).r);
 #endif
 }
+#endif
 
 float litAt(vec2 uv, float z, float bias) {
     return z > MP(shadowDepth(uv) + bias) ? 0.0 : 1.0;

@@ -125,6 +125,15 @@ std::vector<Option<Options>> make_table() {
     add(cascade_blend, [](Options& o, std::string_view v) { o.settings.cascade_blend = static_cast<float>(number_of(v)); },
         [](const Options& o) { return shortest_float(o.settings.cascade_blend); });
 
+    OptionInfo cube_layout = make_option_info("cube-layout", P::Technique, T::Choice,
+                         "--cascades cube: the six faces as tiles of one 2D texture, 3 x 2, each a little wider than "
+                         "90 degrees for the filter's taps at its edges (atlas), or the faces of a GL cube map read "
+                         "with textureCube, whose taps past an edge read the next face (cubemap; rgba and r8 "
+                         "encodings only)", "Cube layout",
+                         {{"atlas", "atlas (3 x 2 tiles)"}, {"cubemap", "cube map"}});
+    add(cube_layout, [](Options& o, std::string_view v) { o.settings.cube_map = v == "cubemap"; },
+        [](const Options& o) { return std::string(o.settings.cube_map ? "cubemap" : "atlas"); });
+
     OptionInfo bias = make_option_info("bias", P::Technique, T::NumberOrWord,
                     "depth offset: 'auto' (the encoding's quantum + the receiver's slope), 'sheet' (the exercise sheet's constant: r8 0.005, rgba and depthtex 0.0015) or a number",
                     "Bias", {{"auto", "auto: from the packing's precision and the surface's slope"}, {"sheet", "the sheet's constant"}});

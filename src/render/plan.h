@@ -97,6 +97,9 @@ struct ResourceDesc {
     int colors = 1;  // colour textures (with color): more than 1, attachments 0.. (Caps::draw_buffers)
     std::optional<gl::RenderbufferFormat> depth_buffer;     // a depth (or depth-stencil) renderbuffer
     bool depth_texture = false;                             // a depth texture (OES_depth_texture)
+    // The colour texture is a cube map of six width x width faces (RGBA8; width == height), a
+    // framebuffer per face (TargetRef::face) sharing the one depth buffer.
+    bool cube = false;
     gl::Sampling sampling = gl::Sampling::Nearest;          // of the texture a pass samples
     gl::Wrap wrap = gl::Wrap::Clamp;
     std::size_t bytes() const;
@@ -124,6 +127,7 @@ struct TargetRef {
     int width = 0, height = 0;
     int x = 0, y = 0;
     bool clip = false;
+    int face = 0;  // a cube resource's face drawn into (ResourceDesc::cube), 0..5
 };
 
 struct Clear {

@@ -68,7 +68,7 @@ std::size_t ResourceDesc::bytes() const {
     const auto px = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     std::size_t per = 0;
     if (color)
-        per += static_cast<std::size_t>(colors) *
+        per += static_cast<std::size_t>(cube ? 6 : colors) *
                static_cast<std::size_t>(
                    gl::bytes_per_pixel(half_float ? gl::TextureFormat::RGBA16F : gl::TextureFormat::RGBA8));
     if (depth_texture) per += static_cast<std::size_t>(gl::bytes_per_pixel(gl::TextureFormat::Depth));
@@ -77,8 +77,8 @@ std::size_t ResourceDesc::bytes() const {
 }
 
 std::string ResourceDesc::describe() const {
-    std::string s = size_str(width, height);
-    std::string parts;
+    std::string s = (cube ? "6 x " : "") + size_str(width, height);
+    std::string parts = cube ? "cube " : "";
     if (color) parts += (colors > 1 ? std::to_string(colors) + " x " : std::string()) + (half_float ? "rgba16f" : "rgba8");
     if (depth_texture) parts += std::string(parts.empty() ? "" : " + ") + "depth texture";
     if (depth_buffer) parts += std::string(parts.empty() ? "" : " + ") + gl::to_string(*depth_buffer);
@@ -87,7 +87,7 @@ std::string ResourceDesc::describe() const {
 
 bool ResourceDesc::operator==(const ResourceDesc& o) const {
     return name == o.name && width == o.width && height == o.height && color == o.color && half_float == o.half_float && colors == o.colors &&
-           depth_buffer == o.depth_buffer && depth_texture == o.depth_texture && sampling == o.sampling && wrap == o.wrap;
+           depth_buffer == o.depth_buffer && depth_texture == o.depth_texture && cube == o.cube && sampling == o.sampling && wrap == o.wrap;
 }
 
 std::vector<int> Pass::reads() const {

@@ -26,6 +26,8 @@ std::string resource_name(const FramePlan& p, int r) {
 
 std::string target_str(const FramePlan& p, const TargetRef& t) {
     std::string s = resource_name(p, t.resource) + " " + std::to_string(t.width) + "x" + std::to_string(t.height);
+    if (t.resource >= 0 && p.resources[static_cast<size_t>(t.resource)].desc.cube)
+        return s + " face " + shadow::cube_face_name(t.face);
     if (t.x || t.y || t.clip) s += " at (" + std::to_string(t.x) + ", " + std::to_string(t.y) + ")" + (t.clip ? ", clipped" : "");
     return s;
 }
@@ -109,7 +111,11 @@ std::string json_pass(const FramePlan& p, const Pass& pass) {
     const TargetRef& t = pass.target;
     j += ",\"target\":{\"resource\":" + json_quote(resource_name(p, t.resource)) + ",\"width\":" + std::to_string(t.width) +
          ",\"height\":" + std::to_string(t.height) + ",\"x\":" + std::to_string(t.x) + ",\"y\":" + std::to_string(t.y) +
-         ",\"clip\":" + json_bool(t.clip) + "}";
+         ",\"clip\":" + json_bool(t.clip) +
+         (t.resource >= 0 && p.resources[static_cast<size_t>(t.resource)].desc.cube
+              ? ",\"face\":" + json_quote(shadow::cube_face_name(t.face))
+              : std::string()) +
+         "}";
     if (pass.clear) {
         const Clear& c = *pass.clear;
         j += ",\"clear\":{\"color\":" + (c.color ? json_floats(*c.color) : std::string("null")) + ",\"depth\":" +
@@ -202,8 +208,9 @@ std::string FramePlan::to_text() const {
         o << line;
     }
     if (cube) {
-        std::snprintf(buf, sizeof buf, "cube: %d of 6 faces drawn (%dx%d each, %d texel guard), depth %.4g..%.4g:",
-                      cube->drawn(), cube->tile, cube->tile, cube->guard, static_cast<double>(cube->znear),
+        std::snprintf(buf, sizeof buf, "cube: %d of 6 faces drawn (%dx%d each, %s %d texel%s), depth %.4g..%.4g:",
+                      cube->drawn(), cube->tile, cube->tile, cube->cube_map ? "a GL cube map, the filter's taps up to" : "an atlas,",
+                      cube->guard, cube->cube_map ? "s into the next face" : " guard", static_cast<double>(cube->znear),
                       static_cast<double>(cube->zfar));
         o << buf;
         for (int f = 0; f < shadow::kCubeFaces; ++f) {
@@ -309,7 +316,8 @@ std::string FramePlan::to_json() const {
     }
     j += "]}";
     if (cube) {
-        j += ",\"cube\":{\"tile\":" + std::to_string(cube->tile) + ",\"guard\":" + std::to_string(cube->guard) +
+        j += ",\"cube\":{\"layout\":" + json_quote(cube->cube_map ? "cubemap" : "atlas") +
+             ",\"tile\":" + std::to_string(cube->tile) + ",\"guard\":" + std::to_string(cube->guard) +
              ",\"near\":" + json_number(static_cast<double>(cube->znear)) +
              ",\"far\":" + json_number(static_cast<double>(cube->zfar)) + ",\"faces\":[";
         for (int f = 0; f < shadow::kCubeFaces; ++f) {
@@ -354,7 +362,7 @@ std::string FramePlan::to_json() const {
         j += std::string(i ? "," : "") + "{\"name\":" + json_quote(d.name) + ",\"width\":" + std::to_string(d.width) +
              ",\"height\":" + std::to_string(d.height) + ",\"color\":" + json_bool(d.color) + ",\"depth_buffer\":" +
              (d.depth_buffer ? json_quote(gl::to_string(*d.depth_buffer)) : std::string("null")) +
-             ",\"depth_texture\":" + json_bool(d.depth_texture) + ",\"sampling\":" + json_quote(gl::to_string(d.sampling)) +
+             ",\"depth_texture\":" + json_bool(d.depth_texture) + ",\"cube\":" + json_bool(d.cube) + ",\"sampling\":" + json_quote(gl::to_string(d.sampling)) +
              ",\"wrap\":" + json_quote(gl::to_string(d.wrap)) + ",\"bytes\":" + std::to_string(d.bytes()) +
              ",\"content\":" + json_quote(r.content) + ",\"reused\":" + json_bool(r.reused) +
              ",\"purpose\":" + json_quote(r.purpose) + "}";

@@ -13,6 +13,7 @@ struct ResourcePool::Entry {
     gl::Texture depth_texture;
     gl::Renderbuffer depth;
     gl::Framebuffer fb;
+    gl::Framebuffer cube_faces[5];  // a cube's faces +x.. -z: fb is face 0's, these 1..5
 };
 
 ResourcePool::ResourcePool() = default;
@@ -28,6 +29,7 @@ std::unique_ptr<ResourcePool::Entry> ResourcePool::make(const ResourceDesc& d) {
     td.sampling = d.sampling;
     td.wrap = d.wrap;
     td.label = label.c_str();
+    td.cube = d.cube;
     gl::FramebufferDesc fd;
     const std::string fb_label = d.name + " framebuffer";
     fd.label = fb_label.c_str();
@@ -53,6 +55,10 @@ std::unique_ptr<ResourcePool::Entry> ResourcePool::make(const ResourceDesc& d) {
         fd.depth = &e->depth;
     }
     e->fb = gl::Framebuffer(fd);
+    for (int f = 1; d.cube && f < 6; ++f) {
+        fd.color_face = f;
+        e->cube_faces[f - 1] = gl::Framebuffer(fd);
+    }
     return e;
 }
 
@@ -78,13 +84,16 @@ const ResourcePool::Entry& ResourcePool::entry(const std::string& name) const {
 
 gl::Target ResourcePool::target(const FramePlan& plan, const TargetRef& ref) const {
     const gl::Framebuffer* fb = nullptr;
-    if (ref.resource >= 0) fb = &entry(plan.resources[static_cast<size_t>(ref.resource)].desc.name).fb;
+    if (ref.resource >= 0) {
+        const Entry& e = entry(plan.resources[static_cast<size_t>(ref.resource)].desc.name);
+        fb = e.desc.cube && ref.face > 0 && ref.face < 6 ? &e.cube_faces[ref.face - 1] : &e.fb;
+    }
     return gl::Target{fb, ref.width, ref.height, ref.x, ref.y, ref.clip};
 }
 
-gl::Target ResourcePool::whole(const std::string& name) const {
+gl::Target ResourcePool::whole(const std::string& name, int face) const {
     const Entry& e = entry(name);
-    return gl::Target{&e.fb, e.desc.width, e.desc.height};
+    return gl::Target{e.desc.cube && face > 0 && face < 6 ? &e.cube_faces[face - 1] : &e.fb, e.desc.width, e.desc.height};
 }
 
 const gl::Texture& ResourcePool::texture(const std::string& name, int attachment) const {

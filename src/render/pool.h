@@ -25,8 +25,8 @@ public:
     void prepare(const FramePlan& plan);
     // Where a pass of `plan` draws (a resource's framebuffer, or the window's).
     gl::Target target(const FramePlan& plan, const TargetRef& ref) const;
-    // The whole of a resource's framebuffer (for reading it back).
-    gl::Target whole(const std::string& name) const;
+    // The whole of a resource's framebuffer (for reading it back); a cube's face `face` (0..5).
+    gl::Target whole(const std::string& name, int face = 0) const;
     // The texture a pass samples: the colour texture, or the depth texture of a depth-only target.
     // `attachment`: which colour texture of a target with several (ResourceDesc::colors).
     const gl::Texture& texture(const std::string& name, int attachment = 0) const;

@@ -67,7 +67,7 @@ std::string_view to_string(Shading s) { return s == Shading::Forward ? "forward"
 bool Settings::operator==(const Settings& o) const {
     return technique == o.technique && encoding == o.encoding && filter == o.filter && pcf_kernel == o.pcf_kernel &&
            map_size == o.map_size && cascades == o.cascades && cascade_split == o.cascade_split &&
-           cascade_snap == o.cascade_snap && cascade_blend == o.cascade_blend && bias == o.bias && bias_auto == o.bias_auto && map_faces == o.map_faces &&
+           cascade_snap == o.cascade_snap && cascade_blend == o.cascade_blend && cube_map == o.cube_map && bias == o.bias && bias_auto == o.bias_auto && map_faces == o.map_faces &&
            light_fit == o.light_fit && precision == o.precision && volume_method == o.volume_method &&
            show_volumes == o.show_volumes && aov == o.aov && light_radius == o.light_radius &&
            pcss_search == o.pcss_search && pcss_taps == o.pcss_taps && area_samples == o.area_samples &&

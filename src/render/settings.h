@@ -123,6 +123,9 @@ struct Settings {
     float cascade_split = 0.9f;  // --cascade-split: 0 uniform splits, 1 logarithmic
     bool cascade_snap = true;    // --cascade-snap: each cascade's window on whole texels (no shimmer)
     float cascade_blend = 0.1f;  // --cascade-blend: the share of a slice blended into the next, 0..0.5
+    // --cube-layout: a cube's six faces as tiles of one 2D atlas (false) or the faces of a GL cube
+    // map read with textureCube (true; packed encodings only: WebGL 1 has no cube depth texture).
+    bool cube_map = false;
     std::optional<float> bias;  // a constant offset; absent (and not auto): the sheet's (shadow::sheet_bias)
     bool bias_auto = true;      // --bias auto (the default): the encoding's quantum plus a receiver slope term
     MapFaces map_faces = MapFaces::Auto;

@@ -94,6 +94,7 @@ Variant lit_variant(const LitFeatures& f) {
         if (f.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
         if (f.cascades > 1) v.defines.push_back("CASCADES " + std::to_string(f.cascades));
         if (f.cube) v.defines.emplace_back("CUBE");
+        if (f.cube && f.cube_map) v.defines.emplace_back("CUBE_MAP");
     } else if (f.in_shadow) {
         v.defines = {"IN_SHADOW"};
     } else if (f.area_lookup) {
@@ -381,11 +382,13 @@ std::vector<Variant> all_variants() {
     // --cascades 2..4 and cube (n = kMaxCascades + 1, the light perspective): each encoding with
     // the hard, PCF 4x4 and PCSS lookups, auto bias, either precision; plain, textured, the
     // visibility and cascades AOVs, and deferred's lighting pass.
-    for (int n = 2; n <= shadow::kMaxCascades + 1; ++n)
+    // n = kMaxCascades + 2: the cube as a GL cube map (packed encodings only).
+    for (int n = 2; n <= shadow::kMaxCascades + 2; ++n)
         for (auto e : shadow::kAllEncodings)
             for (auto f : {shadow::Filter::Hard, shadow::Filter::PCF4x4, shadow::Filter::PCSS})
                 for (bool mediump : {false, true})
                     for (int bits = 0; bits < 5; ++bits) {
+                        if (n > shadow::kMaxCascades + 1 && e == shadow::Encoding::DepthTex) continue;
                         LitFeatures c;
                         c.shadow_map = c.bias_auto = true;
                         c.encoding = e;
@@ -393,6 +396,7 @@ std::vector<Variant> all_variants() {
                         c.pcf_kernel = shadow::PcfKernel::EarlyExit;
                         c.mediump = mediump;
                         c.cube = c.light_perspective = n > shadow::kMaxCascades;
+                        c.cube_map = n > shadow::kMaxCascades + 1;
                         c.cascades = c.cube ? 0 : n;
                         c.textured = bits == 1;
                         c.visibility_aov = bits == 2;

@@ -51,6 +51,7 @@ struct LitFeatures {
     bool mediump = false;            // emulate fp16 along the depth path
     int cascades = 0;                // with shadow_map, more than 1: that many cascades in one atlas
     bool cube = false;               // with shadow_map: a point light's six faces in one atlas (shadow/cube.h)
+    bool cube_map = false;           // with cube: the faces of a GL cube map instead (--cube-layout cubemap)
     bool cascades_aov = false;       // --aov cascades: the colour tinted by the cascade (or cube face) used
     int pcss_search = 16, pcss_taps = 16;  // filter PCSS: taps of the blocker search and the filter
     bool area_lookup = false;        // Heckbert-Herf: visibility from the accumulated light samples

@@ -89,7 +89,7 @@ int CubeFit::drawn() const {
 
 CubeFit fit_cube(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                  const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj, int tile, int guard,
-                 std::string* why) {
+                 std::string* why, bool cube_map) {
     CubeFit fit;
     auto fail = [&](const char* reason) {
         if (why) *why = reason;
@@ -98,9 +98,11 @@ CubeFit fit_cube(const scene::Light& light, const std::vector<scene::Bounds>& re
     if (light.type != scene::LightType::Point) return fail("the light is not a point light");
     fit.tile = tile;
     fit.guard = std::clamp(guard, 0, tile / 4);
-    fit.tangent = static_cast<float>(tile) / static_cast<float>(tile - 2 * fit.guard);
-    fit.atlas_width = 3 * tile;
-    fit.atlas_height = 2 * tile;
+    fit.cube_map = cube_map;
+    fit.reach = static_cast<float>(tile) / static_cast<float>(tile - 2 * fit.guard);
+    fit.tangent = cube_map ? 1.0f : fit.reach;
+    fit.atlas_width = cube_map ? tile : 3 * tile;
+    fit.atlas_height = cube_map ? tile : 2 * tile;
     const glm::vec3 L = light.position;
     // Which faces see a visible receiver: each receiver's visible part (its box clipped to the
     // camera's view, as visible_receiver_points clips it for a point light) tested against each
@@ -113,7 +115,7 @@ CubeFit fit_cube(const scene::Light& light, const std::vector<scene::Bounds>& re
         fit.visible.insert(fit.visible.end(), part.begin(), part.end());
         for (glm::vec3& p : part) p -= L;
         for (int f = 0; f < kCubeFaces; ++f)
-            if (!fit.faces[static_cast<size_t>(f)].drawn && reaches(f, fit.tangent, part))
+            if (!fit.faces[static_cast<size_t>(f)].drawn && reaches(f, fit.reach, part))
                 fit.faces[static_cast<size_t>(f)].drawn = true;
     }
     if (fit.visible.empty() || fit.drawn() == 0) return fail("the camera sees no receiver");
@@ -131,7 +133,7 @@ CubeFit fit_cube(const scene::Light& light, const std::vector<scene::Bounds>& re
         if (!face.drawn) continue;
         for (size_t k = 0; k < casters.size(); ++k) {
             const float d = depth_to_box(casters[k], L);
-            if (d >= zfar || !reaches(f, fit.tangent, corners(casters[k], L))) continue;
+            if (d >= zfar || !reaches(f, fit.reach, corners(casters[k], L))) continue;
             face.casters.push_back(static_cast<int>(k));
             znear = std::min(znear, d);
         }
@@ -143,13 +145,15 @@ CubeFit fit_cube(const scene::Light& light, const std::vector<scene::Bounds>& re
     const glm::mat4 proj = glm::perspective(2.0f * std::atan(fit.tangent), 1.0f, fit.znear, fit.zfar);
     for (int f = 0; f < kCubeFaces; ++f) {
         CubeFace& face = fit.faces[static_cast<size_t>(f)];
-        face.frustum.view = glm::lookAt(L, L + kForward[f], kUp[f]);
+        // A cube map's face turned 180 degrees about its axis: textureCube reads a face with s and
+        // t against this view's x and y (the GLES 2 spec's table 3.21), for every face.
+        face.frustum.view = glm::lookAt(L, L + kForward[f], cube_map ? -kUp[f] : kUp[f]);
         face.frustum.proj = proj;
         face.frustum.znear = fit.znear;
         face.frustum.zfar = fit.zfar;
         face.frustum.perspective = true;
-        face.tile_x = (f % 3) * tile;
-        face.tile_y = (f / 3) * tile;
+        face.tile_x = cube_map ? 0 : (f % 3) * tile;
+        face.tile_y = cube_map ? 0 : (f / 3) * tile;
     }
     if (why) why->clear();
     return fit;

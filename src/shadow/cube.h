@@ -40,19 +40,26 @@ struct CubeFit {
     std::array<CubeFace, kCubeFaces> faces;
     float znear = 0.0f, zfar = 0.0f;  // along each face's axis, the same for all
     float tangent = 1.0f;   // the half-extent of each face's window in tangent units (1: exactly 90 degrees)
+    // The half-extent of the pyramid a face is drawn for (a visible receiver in it) and draws the
+    // casters of: `tangent` in an atlas; in a cube map, the guard band's (the filter's taps past a
+    // face's edge read the next face, which must hold that depth).
+    float reach = 1.0f;
     int tile = 0;           // texels per side of each face
-    int guard = 0;          // texels of each tile beyond the face's 90 degrees, per side
-    int atlas_width = 0, atlas_height = 0;  // 3 x 2 tiles
+    int guard = 0;          // texels of each tile beyond the face's 90 degrees, per side (a cube map's: read from the next face)
+    bool cube_map = false;  // the faces of a GL cube map (each exactly 90 degrees), not tiles of an atlas
+    int atlas_width = 0, atlas_height = 0;  // 3 x 2 tiles (a cube map: one face's size)
     std::vector<glm::vec3> visible;  // the receivers' points the camera sees (visible_receiver_points)
     int drawn() const;
 };
 
 // The cube of this frame, or no drawn face and "" in `why` when it cannot be made: the light is
 // not a point light, or the camera sees no receiver. `tile`: texels per side of a face; `guard`:
-// texels of it beyond the face's edge, per side (at least a filter's reach).
+// texels of it beyond the face's edge, per side (at least a filter's reach). `cube_map`: the faces
+// of a GL cube map instead, exactly 90 degrees each, a face drawn when a visible receiver is within
+// `guard` texels of it.
 CubeFit fit_cube(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                  const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj, int tile, int guard,
-                 std::string* why);
+                 std::string* why, bool cube_map = false);
 
 // --cascades auto for a point light: a cube when the light is inside the receivers' bounds (a bulb
 // in a room) or inside the casters' (they surround it), where one frustum cannot hold what it

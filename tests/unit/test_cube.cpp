@@ -202,6 +202,48 @@ TEST_F(CubePlan, OnePassPerDrawnFaceIntoItsTileOfOneAtlas) {
     EXPECT_FALSE(cut.notes.empty());
 }
 
+TEST_F(CubePlan, ACubeMapLayoutIsOneSquareTextureOfSixFacesEachDrawnIntoItsFace) {
+    ASSERT_EQ(render::parse_option(settings, "cascades", "cube"), "");
+    ASSERT_EQ(render::parse_option(settings, "cube-layout", "cubemap"), "");
+    ASSERT_EQ(render::parse_option(settings, "filter", "pcf4x4"), "");
+    settings.map_size = 512;
+    const render::FramePlan p = make();
+    ASSERT_TRUE(p.cube.has_value());
+    EXPECT_TRUE(p.cube->cube_map);
+    // Exactly 90 degrees a face; the faces are drawn for receivers within the filter's guard.
+    EXPECT_EQ(p.cube->tangent, 1.0f);
+    EXPECT_GT(p.cube->reach, 1.0f);
+    EXPECT_EQ(p.cube->guard, 2);
+    const render::PlannedResource* map = p.resource("shadow-map");
+    ASSERT_NE(map, nullptr);
+    EXPECT_TRUE(map->desc.cube);
+    EXPECT_EQ(map->desc.width, 512);
+    EXPECT_EQ(map->desc.height, 512);
+    EXPECT_EQ(map->desc.describe().rfind("6 x 512x512 cube rgba8", 0), 0u) << map->desc.describe();
+    std::vector<int> faces;
+    for (const render::Pass& pass : p.passes)
+        if (pass.name.rfind("shadow-map face ", 0) == 0) {
+            faces.push_back(pass.target.face);
+            EXPECT_EQ(pass.target.x, 0);
+            EXPECT_EQ(pass.target.y, 0);
+            EXPECT_EQ(pass.target.width, 512);
+            EXPECT_NE(pass.detail.find("cube-map face"), std::string::npos) << pass.detail;
+        }
+    EXPECT_EQ(static_cast<int>(faces.size()), p.cube->drawn());
+    for (size_t i = 0; i < faces.size(); ++i)
+        EXPECT_TRUE(p.cube->faces[static_cast<size_t>(faces[i])].drawn) << faces[i];
+    EXPECT_NE(p.to_text().find("a GL cube map"), std::string::npos);
+    // A depth texture cannot be a cube map in WebGL 1: the atlas, with a note.
+    ASSERT_EQ(render::parse_option(settings, "encoding", "depthtex"), "");
+    const render::FramePlan atlas = make();
+    ASSERT_TRUE(atlas.cube.has_value());
+    EXPECT_FALSE(atlas.cube->cube_map);
+    EXPECT_FALSE(atlas.resource("shadow-map")->desc.cube);
+    bool said = false;
+    for (const std::string& n : atlas.notes) said |= n.find("no cube-map depth texture") != std::string::npos;
+    EXPECT_TRUE(said);
+}
+
 TEST_F(CubePlan, AutoPicksACubeForABulbInARoomAndSaysWhy) {
     ASSERT_EQ(render::parse_option(settings, "cascades", "auto"), "");
     const render::FramePlan p = make();

@@ -363,30 +363,43 @@ public:
             c.plan.cascades_why = "auto: " + why;
         }
         if (!want) return false;
-        const int max = c.caps.max_target_size();
-        if (size * 3 > max) {
+        bool cube_map = s.cube_map;
+        if (cube_map && s.encoding == shadow::Encoding::DepthTex) {
+            c.plan.notes.push_back("--cube-layout cubemap with --encoding depthtex: the atlas instead (WebGL 1 and GLES 2 "
+                                   "have no cube-map depth texture)");
+            cube_map = false;
+        }
+        const int across = cube_map ? 1 : 3;  // faces side by side in the texture
+        int max = c.caps.max_target_size();
+        if (cube_map && c.caps.max_cube_map_size > 0) max = std::min(max, c.caps.max_cube_map_size);
+        if (size * across > max) {
             c.plan.notes.push_back("--map-size " + std::to_string(size) + " with a cube: each face cut to " +
-                                   std::to_string(max / 3) + " so the atlas (3 x 2 faces) fits this context's maximum of " +
-                                   std::to_string(max));
-            size = max / 3;
+                                   std::to_string(max / across) +
+                                   (cube_map ? " (this context's largest cube map)"
+                                             : " so the atlas (3 x 2 faces) fits this context's maximum of " +
+                                                   std::to_string(max)));
+            size = max / across;
         }
         std::string why;
         shadow::CubeFit fit = shadow::fit_cube(c.light, b.receivers, b.casters, c.plan.camera.view_proj, size,
-                                               cube_guard(s, size), &why);
+                                               cube_guard(s, size), &why, cube_map);
         if (fit.drawn() == 0) {
             c.plan.notes.push_back(c.plan.cascades_why + ": one map instead, " + why);
             c.plan.cascades_why += " -> one map (" + why + ")";
             return false;
         }
-        const int r = c.add_resource(map_desc(c, fit.atlas_width, fit.atlas_height), "",
-                                     "the depth seen from the light, the six faces of a cube side by side (3 x 2)");
+        ResourceDesc desc = map_desc(c, fit.atlas_width, fit.atlas_height);
+        desc.cube = cube_map;
+        const int r = c.add_resource(desc, "",
+                                     cube_map ? "the depth seen from the light, the six faces of a cube map"
+                                              : "the depth seen from the light, the six faces of a cube side by side (3 x 2)");
         for (int f = 0; f < shadow::kCubeFaces; ++f) {
             const shadow::CubeFace& face = fit.faces[static_cast<size_t>(f)];
             if (!face.drawn) continue;
             if (!c.plan.light_frustum) c.plan.light_frustum = face.frustum;
             int cut_outs = 0;
             Pass p = tile_pass(c, face.casters, c.named(kMap) + " face " + shadow::cube_face_name(f),
-                               {r, size, size, face.tile_x, face.tile_y, true}, face.frustum.view_proj(), cut_outs);
+                               {r, size, size, face.tile_x, face.tile_y, true, f}, face.frustum.view_proj(), cut_outs);
             ContentKey key;
             key.add(p.view_proj);
             for (const Draw& d : p.draws) key.add_placement(c.scene, d.object);
@@ -395,10 +408,15 @@ public:
             char depths[64];
             std::snprintf(depths, sizeof depths, "depth %.3g..%.3g", static_cast<double>(fit.znear),
                           static_cast<double>(fit.zfar));
-            p.detail = std::to_string(size) + "x" + std::to_string(size) + " tile at (" + std::to_string(face.tile_x) +
-                       ", " + std::to_string(face.tile_y) + ") " + std::string(shadow::to_string(s.encoding)) +
-                       ", perspective " + percent(fit.tangent - 1.0f) + " wider than 90 degrees (" +
-                       std::to_string(fit.guard) + " texel guard), " + depths + ", " +
+            const std::string where = cube_map ? "cube-map face"
+                                               : "tile at (" + std::to_string(face.tile_x) + ", " +
+                                                     std::to_string(face.tile_y) + ")";
+            const std::string wide = cube_map ? "perspective 90 degrees (drawn for receivers within " +
+                                                    std::to_string(fit.guard) + " texels of it)"
+                                              : "perspective " + percent(fit.tangent - 1.0f) + " wider than 90 degrees (" +
+                                                    std::to_string(fit.guard) + " texel guard)";
+            p.detail = std::to_string(size) + "x" + std::to_string(size) + " " + where + " " +
+                       std::string(shadow::to_string(s.encoding)) + ", " + wide + ", " + depths + ", " +
                        caster_count(p.draws.size(), c.casters.size()) + ", faces " + faces_summary(p) +
                        (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
             c.add_pass(std::move(p));
@@ -410,6 +428,11 @@ public:
     bool own_view(PlanContext& c) const override {
         const int r = c.plan.resource_index(c.named(kMap));
         if (c.settings.aov != Aov::LightDepth || r < 0) return false;
+        if (c.plan.resources[static_cast<size_t>(r)].desc.cube) {
+            c.plan.notes.push_back("--aov light-depth shows a 2D map: with --cube-layout cubemap there is none (the "
+                                   "atlas layout shows the six faces)");
+            return false;
+        }
         const shadow::LightFrustum& f = *c.plan.light_frustum;
         Pass p;
         p.name = "light-depth view";
@@ -448,7 +471,8 @@ public:
         const float texel =
             1.0f / static_cast<float>(cube ? cube->tile : cascades.empty() ? map.width : map.width / 2);
         Binding b{"shadow lookup",
-                  {{"u_shadow_map", kShadowUnit}, {"u_texmapscale", glm::vec2(texel, texel)}, {"u_bias", s.effective_bias()}},
+                  // A cube map is read through its own sampler (u_shadow_map is not declared then).
+                  {{cube && cube->cube_map ? "u_shadow_cube" : "u_shadow_map", kShadowUnit}, {"u_texmapscale", glm::vec2(texel, texel)}, {"u_bias", s.effective_bias()}},
                   {{kShadowUnit, r}}};
         if (cube) add_cube_uniforms(*cube, c.light, b, map);
         else if (cascades.empty()) b.uniforms.push_back({"u_light_matrix", shadow::clip_to_texture() * f.view_proj()});
@@ -489,6 +513,7 @@ public:
             lf.pcss_taps = s.pcss_taps;
             lf.cascades = static_cast<int>(cascades.size());
             lf.cube = cube.has_value();
+            lf.cube_map = cube && cube->cube_map;
             lf.cascades_aov = s.aov == Aov::Cascades;
             it.bindings |= bit;
         }
@@ -499,7 +524,8 @@ public:
             kernel = " (" + std::to_string(s.pcss_search) + " search + " + std::to_string(s.pcss_taps) +
                      " filter taps, light radius " + number(static_cast<double>(c.light.radius)) + ")";
         if (cube)
-            cam.detail += ", a cube of " + std::to_string(cube->drawn()) + " face(s) drawn of 6";
+            cam.detail += std::string(", a cube") + (cube->cube_map ? " map" : "") + " of " +
+                          std::to_string(cube->drawn()) + " face(s) drawn of 6";
         if (!cascades.empty())
             cam.detail += ", " + std::to_string(cascades.size()) + " cascades" +
                           (s.cascade_blend > 0.0f ? ", blended over " + percent(s.cascade_blend) + " of each slice" : "");
