@@ -35,6 +35,7 @@ struct Config {
     int map = 1024;
     bool snap = true;
     float blend = 0.1f;
+    bool cube_map = false;  // a cube as a GL cube map (--cube-layout cubemap), not the atlas
 };
 
 struct CascadeRow {
@@ -52,13 +53,19 @@ constexpr int kShimmerFrames = 6;
 
 std::vector<Config> configs(bool quick, bool point_light) {
     constexpr int kCube = render::Settings::kCube;
-    if (point_light && quick) return {{"1 x 1024", 1, 1024, true, 0.1f}, {"cube 6 x 512", kCube, 512, true, 0.1f}};
+    if (point_light && quick)
+        return {{"1 x 1024", 1, 1024, true, 0.1f},
+                {"cube 6 x 512", kCube, 512, true, 0.1f},
+                {"cube map 6 x 512", kCube, 512, true, 0.1f, true}};
     if (point_light)
         return {{"1 x 2048", 1, 2048, true, 0.1f},
                 {"1 x 4096", 1, 4096, true, 0.1f},
                 {"cube 6 x 512", kCube, 512, true, 0.1f},
                 {"cube 6 x 1024", kCube, 1024, true, 0.1f},
-                {"cube 6 x 2048", kCube, 2048, true, 0.1f}};
+                {"cube 6 x 2048", kCube, 2048, true, 0.1f},
+                {"cube map 6 x 512", kCube, 512, true, 0.1f, true},
+                {"cube map 6 x 1024", kCube, 1024, true, 0.1f, true},
+                {"cube map 6 x 2048", kCube, 2048, true, 0.1f, true}};
     if (quick) return {{"1 x 1024", 1, 1024, true, 0.1f}, {"4 x 512", 4, 512, true, 0.1f}, {"4 x 512 not snapped", 4, 512, false, 0.1f}};
     return {{"1 x 4096", 1, 4096, true, 0.1f},
             {"1 x 2048", 1, 2048, true, 0.1f},
@@ -75,6 +82,7 @@ render::Settings settings_of(const render::Options& base, const Config& c) {
     s.map_size = c.map;
     s.cascade_snap = c.snap;
     s.cascade_blend = c.blend;
+    s.cube_map = c.cube_map;
     return s;
 }
 
