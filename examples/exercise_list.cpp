@@ -265,9 +265,10 @@ std::vector<ExerciseInfo> make_list() {
          "each face of a cube around it (+x, -x, +y, -y, +z, -z), each a perspective view of 90 degrees, so every "
          "direction from the bulb lands in exactly one face: the floor, the ceiling and the four walls all get their "
          "shadows. A fragment's direction from the light picks the face by its largest component and is looked up "
-         "there. WebGL 1 could render into a cube map's faces, but here the six faces are tiles of one 2D texture, "
-         "3 x 2, so each lookup is the same texture2D as every other map's; each tile holds a guard band beyond its "
-         "face's edge so a filter's taps near a seam still read real depth. Only the faces that see a receiver in "
+         "there. The six faces are kept two ways (Cube layout): as tiles of one 2D texture, 3 x 2, read with the "
+         "same texture2D as every other map, each tile holding a guard band beyond its face's edge so a filter's "
+         "taps near a seam still read real depth; or as the faces of a WebGL cube map, read with textureCube by the "
+         "direction itself, whose taps past an edge land in the next face. Only the faces that see a receiver in "
          "view are drawn, and a face whose light and casters did not move is kept from the last frame. The faces "
          "view tints each pixel by the face that shadows it, and the plan below lists each face's pass.",
          "A point light's six shadow maps, the faces of a cube around a bare bulb in a room: show the faces, compare "
@@ -280,6 +281,8 @@ std::vector<ExerciseInfo> make_list() {
          {{"cascades", "Shadows", K::Select, {"cube", "1", "auto"}, "Shadow maps",
            "cube: six faces around the bulb; 1: one perspective map"},
           {"map-size", "Shadows", K::Select, {"256", "512", "1024"}, "Map size", "each face's"},
+          {"cube-layout", "Shadows", K::Select, {"atlas", "cubemap"}, {},
+           "atlas: six tiles of one 2D texture; cubemap: a WebGL cube map (not with a depth texture)"},
           {"filter", "Shadows", K::Select, {"hard", "pcf4x4", "pcss"}, {}, "PCSS: the penumbra from the bulb's size"},
           {"light-radius", "Shadows", K::Slider, {"0", "0.02", "0.05", "0.1", "0.2"}, "Bulb radius",
            "metres; 0 is a point", 0.0, 0.2},
@@ -364,6 +367,7 @@ const std::vector<KeyBinding>& key_bindings() {
         // The bulb exercise: the same letter for its shadow maps; K its filter (F looks down there).
         {'N', "cascades", "bulb: shadow maps cube / one map / auto, Shift+N backwards", Exercise::Bulb},
         {'K', "filter", "bulb: filter hard / PCF 4x4 / PCSS", Exercise::Bulb},
+        {'C', "cube-layout", "bulb: the cube's faces in an atlas / a cube map", Exercise::Bulb},
     };
     return keys;
 }

@@ -354,6 +354,7 @@ render::Settings CourseApp::frame_settings() const {
     if (!offers(exercise_info(exercise_), "cascade-split")) s.cascade_split = d.cascade_split;
     if (!offers(exercise_info(exercise_), "cascade-snap")) s.cascade_snap = d.cascade_snap;
     if (!offers(exercise_info(exercise_), "cascade-blend")) s.cascade_blend = d.cascade_blend;
+    if (!offers(exercise_info(exercise_), "cube-layout")) s.cube_map = d.cube_map;
     if (exercise_ == Exercise::Soft && toggles_.reference) {
         s.filter = shadow::Filter::Hard;
         s.area_samples = kReferenceSamples;

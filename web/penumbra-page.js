@@ -327,7 +327,7 @@
   // A..B, N of M caster(s)") and the camera pass's cascades and blend, or the cube's faces drawn.
   function cascadePlan() {
     const plan = Module.UTF8ToString(Module._penumbra_plan());
-    return plan.split('\n').filter((l) => /cascade|face [+-][xyz]|a cube of/.test(l))
+    return plan.split('\n').filter((l) => /cascade|face [+-][xyz]|a cube (map )?of/.test(l))
       .map((l) => l.trim().replace(/^\d+\.\s*(shadow-map\s*)?/, '').replace(/reused \([^)]*\)/, 'reused')).join('\n');
   }
 

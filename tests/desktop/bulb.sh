@@ -37,7 +37,7 @@ title_has() {  # title_has NAME TEXT: the last title printed holds TEXT
 cd "$here"
 
 shot start ""
-title_has start "A point light's cube | cascades=cube map-size=512 filter=hard light-radius=0.05 aov=cascades"
+title_has start "A point light's cube | cascades=cube map-size=512 cube-layout=atlas filter=hard light-radius=0.05 aov=cascades"
 python3 check_cascades.py faces "$out/start.png" 5
 cli start "${start_options[@]}" --aov cascades
 python3 check_cascades.py match "$out/start.png" "$out/start-cli.png"
@@ -50,9 +50,15 @@ cli one --cascades 1 --map-size 512 --light-radius 0.05 --aov cascades
 python3 check_cascades.py match "$out/one.png" "$out/one-cli.png"
 
 shot settings "km"
-title_has settings "map-size=1024 filter=pcf4x4"
+title_has settings "map-size=1024 cube-layout=atlas filter=pcf4x4"
 cli settings --cascades cube --map-size 1024 --filter pcf4x4 --light-radius 0.05 --aov cascades
 python3 check_cascades.py match "$out/settings.png" "$out/settings-cli.png"
+
+shot cubemap "kc"
+title_has cubemap "cube-layout=cubemap filter=pcf4x4"
+cli cubemap --cascades cube --map-size 512 --cube-layout cubemap --filter pcf4x4 --light-radius 0.05 --aov cascades
+python3 check_cascades.py match "$out/cubemap.png" "$out/cubemap-cli.png"
+python3 check_cascades.py faces "$out/cubemap.png" 5
 
 shot walk "ww"
 title_has walk "camera="

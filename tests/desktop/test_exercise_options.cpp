@@ -31,7 +31,7 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
     EXPECT_EQ(CourseApp(Exercise::Cascades).query(),
               "cascades=4&cascade-split=0.9&cascade-snap=on&cascade-blend=0.1&map-size=1024&aov=cascades");
     // The bulb exercise with the cube's faces tinted, 512 texels a face, a bulb of 5 cm.
-    EXPECT_EQ(CourseApp(Exercise::Bulb).query(), "cascades=cube&map-size=512&filter=hard&light-radius=0.05&aov=cascades");
+    EXPECT_EQ(CourseApp(Exercise::Bulb).query(), "cascades=cube&map-size=512&cube-layout=atlas&filter=hard&light-radius=0.05&aov=cascades");
 }
 
 TEST(ExerciseOptions, EveryChangeReadsBack) {
@@ -636,6 +636,9 @@ TEST(ExerciseBulb, Keys) {
     EXPECT_EQ(a.on_key('N', true), "cascades = cube");
     EXPECT_EQ(a.on_key('K', false), "filter = pcf4x4");
     EXPECT_EQ(a.on_key('K', false), "filter = pcss");
+    EXPECT_EQ(a.on_key('C', false), "cube-layout = cubemap");
+    EXPECT_TRUE(a.frame_settings().cube_map);
+    EXPECT_EQ(a.on_key('C', false), "cube-layout = atlas");
     EXPECT_EQ(a.on_key('M', false), "map-size = 1024");
     EXPECT_EQ(a.on_key('M', false), "map-size = 256");
     EXPECT_EQ(a.on_key('A', false), "aov = color");

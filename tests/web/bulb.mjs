@@ -16,7 +16,7 @@ import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, saveP
 const [cli, outDir] = process.argv.slice(2);
 if (!cli || !outDir) throw new Error('usage: bulb.mjs PENUMBRA_CLI OUT_DIR');
 const SCENE = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../data/bulb_room.gltf');
-const DEFAULTS = 'cascades=cube&map-size=512&filter=hard&light-radius=0.05&aov=cascades';
+const DEFAULTS = 'cascades=cube&map-size=512&cube-layout=atlas&filter=hard&light-radius=0.05&aov=cascades';
 const PRESENT = 0.0005;
 
 function faces(px, what, least) {
@@ -49,6 +49,7 @@ await runTest('web.bulb', async ({ server, browser }) => {
     const start = s.camera;
     await page.selectOption('#cascades', '1');
     await page.selectOption('#map-size', '1024');
+    await page.selectOption('#cube-layout', 'cubemap');
     await page.selectOption('#filter', 'pcf4x4');
     await page.fill('#light-radius-number', '0.1');
     await page.press('#light-radius-number', 'Tab');
@@ -60,7 +61,7 @@ await runTest('web.bulb', async ({ server, browser }) => {
     const c = s.camera;
     const walked = Math.hypot(c.x - start.x, c.y - start.y, c.z - start.z);
     check(c.moved && Math.abs(walked - 0.5) < 0.01, `two steps of 0.25 m moved the camera ${walked.toFixed(3)} m`);
-    const want = { cascades: '1', 'map-size': '1024', filter: 'pcf4x4', 'light-radius': '0.1', aov: 'visibility' };
+    const want = { cascades: '1', 'map-size': '1024', 'cube-layout': 'cubemap', filter: 'pcf4x4', 'light-radius': '0.1', aov: 'visibility' };
     await page.waitForFunction(() => /camera=/.test(location.search), null, { timeout: 5000 });
     const params = new URL(page.url()).searchParams;
     for (const [k, v] of Object.entries(want)) check(params.get(k) === v, `URL ${page.url()}: ${k} is not ${v}`);
@@ -104,6 +105,12 @@ await runTest('web.bulb', async ({ server, browser }) => {
     shot.colorOne = await frameAt(page, 0);
     await setOptions(page, { cascades: 'cube', filter: 'pcf4x4', aov: 'color' });
     shot.pcf = await frameAt(page, 0);
+    // The faces as a WebGL cube map, read with textureCube: the same shadows.
+    await setOptions(page, { 'cube-layout': 'cubemap' });
+    shot.cubemap = await frameAt(page, 0);
+    const cubemapText = await page.textContent('#cascade-plan');
+    check(/a cube map of \d face\(s\) drawn of 6/.test(cubemapText), `the plan's lines with a cube map:\n${cubemapText}`);
+    await setOptions(page, { 'cube-layout': 'atlas' });
     for (const [k, px] of Object.entries(shot)) savePng(px, path.join(outDir, `${k}.browser.png`));
     const one = compare(shot.cube, shot.one, 16);
     check(one.fraction > 0.05, `one map changes only ${(100 * one.fraction).toFixed(2)}% of the faces view`);
@@ -118,6 +125,7 @@ await runTest('web.bulb', async ({ server, browser }) => {
       ['color', ['--cascades', 'cube', '--map-size', '512']],
       ['colorOne', ['--cascades', '1', '--map-size', '512']],
       ['pcf', ['--cascades', 'cube', '--map-size', '512', '--filter', 'pcf4x4']],
+      ['cubemap', ['--cascades', 'cube', '--map-size', '512', '--filter', 'pcf4x4', '--cube-layout', 'cubemap']],
     ];
     for (const [name, args] of egl) {
       const d = compare(shot[name], eglFrame(name, args, shot[name]), 64);
@@ -131,13 +139,15 @@ await runTest('web.bulb', async ({ server, browser }) => {
     const ms = {};
     await setOptions(page, { filter: 'hard' });
     await page.evaluate(() => window.penumbra.resume());
-    for (const n of ['1', 'cube']) {
-      await setOptions(page, { cascades: n });
+    for (const [n, layout] of [['1', 'atlas'], ['cube', 'atlas'], ['cube', 'cubemap']]) {
+      await setOptions(page, { cascades: n, 'cube-layout': layout });
       await waitFrames(page, 70);  // the median is over the last 60 frames
-      ms[n] = (await page.evaluate(() => window.penumbra.state())).ms;
+      ms[n === '1' ? '1' : layout] = (await page.evaluate(() => window.penumbra.state())).ms;
     }
-    console.log(`SwiftShader, 512x512, map 512: ${ms['1'].toFixed(1)} ms/frame with one map, ${ms.cube.toFixed(1)} with the cube ` +
-                `(x${(ms.cube / ms['1']).toFixed(2)}; median of 60 frames of the page's loop, each waited for)`);
+    await setOptions(page, { 'cube-layout': 'atlas' });
+    console.log(`SwiftShader, 512x512, map 512: ${ms['1'].toFixed(1)} ms/frame with one map, ${ms.atlas.toFixed(1)} with the cube ` +
+                `(x${(ms.atlas / ms['1']).toFixed(2)}), ${ms.cubemap.toFixed(1)} with the cube as a cube map ` +
+                `(x${(ms.cubemap / ms['1']).toFixed(2)}; median of 60 frames of the page's loop, each waited for)`);
 
     // The context lost and restored: the cube drawn again, the same frame.
     await setOptions(page, { aov: 'cascades' });
