@@ -16,24 +16,9 @@ here=$(cd "$(dirname "$0")" && pwd)
 data=$(cd "$here/../data" && pwd)
 mkdir -p "$out"
 
-shot() {  # shot NAME KEYS: the exercise from its start, KEYS pressed, the 8th frame's screenshot
-  local name=$1 keys=$2
-  rm -f "$out/$name.png"
-  if ! xvfb-run -a -s "-screen 0 1280x1024x24" "$app" --exercise cascades --frames 8 --keys "$keys" --print-title \
-       --screenshot "$out/$name.png" >"$out/$name.log" 2>&1; then
-    echo "desktop cascades $name: penumbra-desktop failed:"; cat "$out/$name.log"; exit 1
-  fi
-  grep -q "^8 frames" "$out/$name.log" || { echo "desktop cascades $name: did not render 8 frames:"; cat "$out/$name.log"; exit 1; }
-}
-cli() {  # cli NAME [render options...]: the same frame headless
-  local name=$1
-  shift
-  "$cli" render --scene "$data/terrain_km.gltf" --size 512x512 --out "$out/$name-cli.png" "$@" >/dev/null
-}
-title_has() {  # title_has NAME TEXT: the last title printed holds TEXT
-  grep "^title: " "$out/$1.log" | tail -1 | grep -qF -- "$2" || {
-    echo "desktop cascades $1: the title lacks '$2':"; grep "^title: " "$out/$1.log" | tail -1; exit 1; }
-}
+exercise=cascades
+scene=$data/terrain_km.gltf
+source "$here/exercise_shots.sh"
 cd "$here"
 
 shot start ""

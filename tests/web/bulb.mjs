@@ -10,7 +10,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng, waitFrames, tintShares, FACE_TINTS }
+import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng, waitFrames, tintShares, loseAndRestore, FACE_TINTS }
   from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
@@ -151,20 +151,7 @@ await runTest('web.bulb', async ({ server, browser }) => {
 
     // The context lost and restored: the cube drawn again, the same frame.
     await setOptions(page, { aov: 'cascades' });
-    const before = await frameAt(page, 0);
-    await page.evaluate(() => {
-      window.__lose = document.getElementById('canvas').getContext('webgl').getExtension('WEBGL_lose_context');
-      window.__lose.loseContext();
-    });
-    await page.waitForFunction(() => /lost/i.test(document.getElementById('status').textContent), null, { timeout: 10000 });
-    check((await page.evaluate(() => window.penumbra.state())).lost, 'the module does not know its context is lost');
-    await page.evaluate(() => window.__lose.restoreContext());
-    await page.waitForFunction(() => /restored/i.test(document.getElementById('status').textContent), null, { timeout: 10000 });
-    const restored = await page.evaluate(() => window.penumbra.state());
-    check(!restored.lost && restored.generation === 2, `after the restore: lost ${restored.lost}, generation ${restored.generation}`);
-    const after = await frameAt(page, 0);
-    const d = compare(before, after);
-    check(d.differing === 0, `the frame after the restore differs from the one before in ${d.differing} pixels (max ${d.max})`);
+    const after = await loseAndRestore(page);
     faces(after, 'after the restore', 4);
     await page.evaluate(() => window.penumbra.resume());
     await waitFrames(page, 3);

@@ -13,7 +13,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng, waitFrames, tintShares, CASCADE_TINTS }
+import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng, waitFrames, tintShares, loseAndRestore, CASCADE_TINTS }
   from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
@@ -173,20 +173,7 @@ await runTest('web.cascades', async ({ server, browser }) => {
 
     // The context lost and restored: the same frame again.
     await setOptions(page, { aov: 'cascades' });
-    const before = await frameAt(page, 0);
-    await page.evaluate(() => {
-      window.__lose = document.getElementById('canvas').getContext('webgl').getExtension('WEBGL_lose_context');
-      window.__lose.loseContext();
-    });
-    await page.waitForFunction(() => /lost/i.test(document.getElementById('status').textContent), null, { timeout: 10000 });
-    check((await page.evaluate(() => window.penumbra.state())).lost, 'the module does not know its context is lost');
-    await page.evaluate(() => window.__lose.restoreContext());
-    await page.waitForFunction(() => /restored/i.test(document.getElementById('status').textContent), null, { timeout: 10000 });
-    const restored = await page.evaluate(() => window.penumbra.state());
-    check(!restored.lost && restored.generation === 2, `after the restore: lost ${restored.lost}, generation ${restored.generation}`);
-    const after = await frameAt(page, 0);
-    const d = compare(before, after);
-    check(d.differing === 0, `the frame after the restore differs from the one before in ${d.differing} pixels (max ${d.max})`);
+    const after = await loseAndRestore(page);
     checkTints(after, 4, 'after the restore');
     await page.evaluate(() => window.penumbra.resume());
     await waitFrames(page, 3);

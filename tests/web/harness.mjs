@@ -198,3 +198,23 @@ export function tintShares(px, tints) {
   for (const k of Object.keys(count)) count[k] /= n;
   return count;
 }
+
+// The page's WebGL context lost (WEBGL_lose_context) and restored: the status says each, the module
+// knows, its second context draws the frame it drew before, pixel for pixel. Returns that frame.
+export async function loseAndRestore(page) {
+    const before = await frameAt(page, 0);
+    await page.evaluate(() => {
+      window.__lose = document.getElementById('canvas').getContext('webgl').getExtension('WEBGL_lose_context');
+      window.__lose.loseContext();
+    });
+    await page.waitForFunction(() => /lost/i.test(document.getElementById('status').textContent), null, { timeout: 10000 });
+    check((await page.evaluate(() => window.penumbra.state())).lost, 'the module does not know its context is lost');
+    await page.evaluate(() => window.__lose.restoreContext());
+    await page.waitForFunction(() => /restored/i.test(document.getElementById('status').textContent), null, { timeout: 10000 });
+    const restored = await page.evaluate(() => window.penumbra.state());
+    check(!restored.lost && restored.generation === 2, `after the restore: lost ${restored.lost}, generation ${restored.generation}`);
+    const after = await frameAt(page, 0);
+    const d = compare(before, after);
+    check(d.differing === 0, `the frame after the restore differs from the one before in ${d.differing} pixels (max ${d.max})`);
+    return after;
+}
