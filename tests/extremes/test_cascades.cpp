@@ -4,6 +4,7 @@
 // against four 2048 cascades), the shimmer of a slowly moving camera with and without snapping,
 // and every encoding and filter in the cascades.
 #include "gl_fixture.h"
+#include "truth_frame.h"
 
 #include <cstdio>
 
@@ -50,13 +51,7 @@ protected:
         return visibility_frame(scene_, s, kSize, view, plan_out);
     }
 
-    measure::TruthImage truth(const glm::mat4& view_proj) {
-        measure::TruthOptions to;
-        to.width = kSize;
-        to.height = kSize;
-        to.view_proj = view_proj;
-        return measure::RayTracer(scene_).render(to);
-    }
+    measure::TruthImage truth(const glm::mat4& view_proj) { return test::truth_frame(scene_, view_proj, kSize); }
 };
 
 TEST_F(Cascades, NearBandsBeatOneMapAtEqualMemory) {

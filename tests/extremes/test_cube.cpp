@@ -4,6 +4,7 @@
 // cross a face's edge, only the faces that see a visible receiver drawn, still faces kept, every
 // encoding and filter, and the deferred path.
 #include "gl_fixture.h"
+#include "truth_frame.h"
 
 #include <cstdio>
 #include <map>
@@ -56,13 +57,7 @@ protected:
         return visibility_frame(scene_, s, kSize, view, plan_out);
     }
 
-    measure::TruthImage truth(const glm::mat4& view_proj) {
-        measure::TruthOptions to;
-        to.width = kSize;
-        to.height = kSize;
-        to.view_proj = view_proj;
-        return measure::RayTracer(scene_).render(to);
-    }
+    measure::TruthImage truth(const glm::mat4& view_proj) { return test::truth_frame(scene_, view_proj, kSize); }
 
     int object(const char* name) const {
         for (size_t i = 0; i < scene_.objects.size(); ++i)

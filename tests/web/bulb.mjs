@@ -6,11 +6,9 @@
 // is built from); the context lost and restored draws the cube again; no console or GL error.
 // Prints the page's ms/frame (SwiftShader) with the cube and with one map, which it does not check.
 // usage: bulb.mjs PENUMBRA_CLI OUT_DIR
-import { execFileSync } from 'node:child_process';
-import { mkdirSync, readFileSync } from 'node:fs';
+import { mkdirSync } from 'node:fs';
 import path from 'node:path';
-import { PNG } from 'pngjs';
-import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng, waitFrames, tintShares, loseAndRestore, FACE_TINTS }
+import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng, waitFrames, tintShares, loseAndRestore, cliFrame, FACE_TINTS }
   from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
@@ -28,11 +26,8 @@ function faces(px, what, least) {
 }
 
 function eglFrame(name, args, size) {
-  const file = path.join(outDir, `${name}.egl.png`);
-  execFileSync(cli, ['render', '--scene', SCENE, '--size', `${size.width}x${size.height}`, '--light-radius', '0.05', ...args,
-                     '--out', file]);
-  const ref = PNG.sync.read(readFileSync(file));
-  return { width: ref.width, height: ref.height, data: ref.data };
+  return cliFrame(cli, ['--scene', SCENE, '--size', `${size.width}x${size.height}`, '--light-radius', '0.05', ...args],
+                  path.join(outDir, `${name}.egl.png`));
 }
 
 await runTest('web.bulb', async ({ server, browser }) => {

@@ -9,11 +9,9 @@
 // options; the context lost and restored draws the same frame again; no console or GL error.
 // Prints the page's ms/frame (SwiftShader) with 1 and 4 cascades, which it does not check.
 // usage: cascades.mjs PENUMBRA_CLI OUT_DIR
-import { execFileSync } from 'node:child_process';
-import { mkdirSync, readFileSync } from 'node:fs';
+import { mkdirSync } from 'node:fs';
 import path from 'node:path';
-import { PNG } from 'pngjs';
-import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng, waitFrames, tintShares, loseAndRestore, CASCADE_TINTS }
+import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng, waitFrames, tintShares, loseAndRestore, cliFrame, CASCADE_TINTS }
   from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
@@ -42,10 +40,8 @@ async function frame(page, options) {
 }
 
 function eglFrame(name, args, size) {
-  const file = path.join(outDir, `${name}.egl.png`);
-  execFileSync(cli, ['render', '--scene', SCENE, '--size', `${size.width}x${size.height}`, ...args, '--out', file]);
-  const ref = PNG.sync.read(readFileSync(file));
-  return { width: ref.width, height: ref.height, data: ref.data };
+  return cliFrame(cli, ['--scene', SCENE, '--size', `${size.width}x${size.height}`, ...args],
+                  path.join(outDir, `${name}.egl.png`));
 }
 
 await runTest('web.cascades', async ({ server, browser }) => {

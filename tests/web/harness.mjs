@@ -3,7 +3,8 @@
 // records console errors, page errors and failed requests, and pixel helpers.
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
-import { existsSync, writeFileSync } from 'node:fs';
+import { existsSync, readFileSync, writeFileSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
 import { PNG } from 'pngjs';
@@ -217,4 +218,12 @@ export async function loseAndRestore(page) {
     const d = compare(before, after);
     check(d.differing === 0, `the frame after the restore differs from the one before in ${d.differing} pixels (max ${d.max})`);
     return after;
+}
+
+// The frame `penumbra render` (headless EGL) draws with `args`, written to `file` and read back
+// as the pages' pixels are ({ width, height, data }, rows top first).
+export function cliFrame(cli, args, file) {
+  execFileSync(cli, ['render', ...args, '--out', file]);
+  const png = PNG.sync.read(readFileSync(file));
+  return { width: png.width, height: png.height, data: png.data };
 }
