@@ -216,11 +216,13 @@ void run_cascades_bench(const BenchOptions& in) {
     // also moves a millimetre a frame, so that a cube's faces are redrawn every frame as the one
     // map is (a still light's faces are kept: the plan reuses them).
     std::vector<std::vector<double>> rounds(rows.size());
+    render::FrameInputs pan = in0;
+    pan.view.reset();  // the scene's camera, panned below
     for (int k = 0; k < o.rounds; ++k)
         for (size_t i = 0; i < rows.size(); ++i) {
             const render::Settings s = settings_of(base, rows[i].c);
             scene::Scene sc = still;
-            const Timing t = time_frames(r, s, in0, 1, o.frames, [&](int frame) -> const scene::Scene& {
+            const Timing t = time_frames(r, s, pan, 1, o.frames, [&](int frame) -> const scene::Scene& {
                 sc.camera.view = panned(still.camera.view, frame);
                 if (point_light) sc.light.position = still.light.position + glm::vec3(0.001f * static_cast<float>(frame), 0.0f, 0.0f);
                 return sc;
