@@ -71,7 +71,9 @@ uniform vec4 u_depth_map;  // the ray position s = dot(xyz, world) + w: 0 on the
 
 #ifdef SHADOW_MAP
 #include "shadow.glsl"
-#if defined(CASCADES) || defined(CUBE)
+#if defined(CASCADES) && !defined(GBUFFER_READ)
+varying vec4 v_cascade_eye;  // lit.vert: the light's eye space (xyz), the camera's view depth (w)
+#elif defined(CASCADES) || defined(CUBE)
 #elif defined(GBUFFER_READ)
 uniform mat4 u_light_matrix;
 #else
@@ -168,7 +170,11 @@ void main() {
     vec3 l = normalize(u_light.xyz - world * u_light.w);
     float visibility = 1.0;
 #if defined(SHADOW_MAP) && defined(CASCADES)
-    if (receives) visibility = shadowCascades(world, n);
+#ifdef GBUFFER_READ
+    if (receives) visibility = shadowCascades((u_cascade_light * vec4(world, 1.0)).xyz, dot(u_cascade_depth, vec4(world, 1.0)), n);
+#else
+    if (receives) visibility = shadowCascades(v_cascade_eye.xyz, v_cascade_eye.w, n);
+#endif
 #elif defined(SHADOW_MAP) && defined(CUBE)
     if (receives) visibility = shadowCube(world, n);
 #elif defined(SHADOW_MAP) && defined(GBUFFER_READ)

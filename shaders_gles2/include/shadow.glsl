@@ -310,8 +310,9 @@ float cascadeLookup(int k, vec3 eye, vec3 normal) {
 
 // The first cascade whose slice reaches the point's view depth (the last beyond them all); in the
 // band before its far end, blended linearly into the next one's.
-float shadowCascades(vec3 world, vec3 normal) {
-    float depth = dot(u_cascade_depth.xyz, world) + u_cascade_depth.w;
+// eye: the point in the light's eye space (u_cascade_light); depth: its camera view depth
+// (u_cascade_depth), both from the vertex shader (v_cascade_eye) or a G-buffer's point.
+float shadowCascades(vec3 eye, float depth, vec3 normal) {
     int k = CASCADES - 1;
     float t = 0.0;
     for (int i = CASCADES - 1; i >= 0; --i) {
@@ -322,7 +323,6 @@ float shadowCascades(vec3 world, vec3 normal) {
         }
     }
     g_cascade_tint = cascadeTint(k);
-    vec3 eye = (u_cascade_light * vec4(world, 1.0)).xyz;
     float visibility = cascadeLookup(k, eye, normal);
     if (t > 0.0) {
         visibility = mix(visibility, cascadeLookup(k + 1, eye, normal), t);
