@@ -22,7 +22,8 @@ for r in p["resources"]:
         + {None: 0, "depth16": 2, "depth24": 4, "depth24-stencil8": 4, "depth-stencil": 4}[r["depth_buffer"]]), r
 for q in p["passes"]:
     assert q["target"]["resource"] == "window" or any(r["name"] == q["target"]["resource"] for r in p["resources"])
-    assert q["draws"], q["name"] + " draws nothing"
+    # An atlas whose tiles are all drawn is cleared whole first, by a pass that only clears.
+    assert q["draws"] or (q["name"] == "shadow-map clear" and q["clear"] and not q["target"]["clip"]), q["name"] + " draws nothing"
 print(" ".join(q["name"].replace(" ", "_") for q in p["passes"]))' "$name.json") || { echo "FAIL $name: bad plan JSON"; fail=1; return; }
   rendered=$("$penumbra" render -v "$@" 2>&1 >/dev/null | sed -n 's/^[0-9]*\. \([^:]*\):.*/\1/p' | tr ' ' '_' | tr '\n' ' ' | sed 's/ $//')
   if [ "$planned" != "$rendered" ]; then
@@ -41,14 +42,14 @@ check volumes-eye-in-shadow --technique volumes --eye in-shadow --show-volumes o
 check volumes-count --technique volumes --aov stencil-count --volume-method zfail --size 64x64
 check cascades --scene "$data/terrain_km.gltf" --cascades 4 --map-size 256 --size 64x64
 check cascades-aov --scene "$data/terrain_km.gltf" --cascades auto --aov cascades --map-size 256 --size 64x64
-# Cascades: one pass per tile of one atlas, auto's reason printed; a point light gets one map and a note.
+# Cascades: one clear of the atlas, then one pass per tile of it, auto's reason printed; a point light gets one map and a note.
 "$penumbra" plan --scene "$data/terrain_km.gltf" --cascades auto --map-size 256 --size 64x64 --json > auto.json &&
 python3 -c '
 import json
 p = json.load(open("auto.json"))
 c = p["cascades"]
 assert c["why"].startswith("auto: 4 cascades: the receivers in view span view depths"), c["why"]
-assert [q["name"] for q in p["passes"]][:4] == ["shadow-map cascade %d" % i for i in range(4)]
+assert [q["name"] for q in p["passes"]][:5] == ["shadow-map clear"] + ["shadow-map cascade %d" % i for i in range(4)]
 assert [l["tile"] for l in c["list"]] == [[0, 0], [256, 0], [0, 256], [256, 256]], c["list"]
 m = [r for r in p["resources"] if r["name"] == "shadow-map"][0]
 assert (m["width"], m["height"]) == (512, 512), m' && echo "ok cascades auto: 4 tiles, the reason" \
@@ -65,7 +66,7 @@ p = json.load(open("cube.json"))
 assert p["cascades"]["why"] == "auto: a cube: the point light is inside the receivers\x27 bounds", p["cascades"]["why"]
 c = p["cube"]
 faces = [f for f in c["faces"] if f["drawn"]]
-assert [q["name"] for q in p["passes"]][:len(faces)] == ["shadow-map face " + f["face"] for f in faces]
+assert [q["name"] for q in p["passes"]][:len(faces) + 1] == ["shadow-map clear"] + ["shadow-map face " + f["face"] for f in faces]
 assert [f["tile"] for f in c["faces"]] == [[0, 0], [128, 0], [256, 0], [0, 128], [128, 128], [256, 128]], c["faces"]
 m = [r for r in p["resources"] if r["name"] == "shadow-map"][0]
 assert (m["width"], m["height"]) == (384, 256), m' && echo "ok cube auto: the faces in a 3 x 2 atlas, the reason" \

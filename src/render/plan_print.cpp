@@ -265,7 +265,7 @@ std::string FramePlan::to_text() const {
         o << "     " << p.detail << "\n";
         if (p.clear) o << "     clear: " << clear_str(*p.clear) << "\n";
         o << "     state: " << gl::to_string(p.state) << "\n";
-        o << "     per draw: " << object_uniforms_str(p.object_uniforms) << " uniforms\n";
+        if (!p.draws.empty()) o << "     per draw: " << object_uniforms_str(p.object_uniforms) << " uniforms\n";
         for (const Binding& b : p.bindings) {
             o << "     binding " << b.name << ":";
             for (const Uniform& u : b.uniforms) o << " " << u.name;

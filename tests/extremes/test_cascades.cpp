@@ -6,6 +6,7 @@
 #include "gl_fixture.h"
 #include "truth_frame.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -144,6 +145,52 @@ TEST_F(CascadeShimmer, ASidewaysWalkFlipsNoMoreThanTheTruthWhenSnapped) {
     ASSERT_GT(f.truth, 0.0);
     EXPECT_LE(f.snapped, 1.2 * f.truth);
     EXPECT_GT(f.free, 1.5 * f.truth);
+}
+
+// Each cascade's tile has its own content: a still frame draws none again, and a caster that
+// moves redraws only the cascades that draw it; the kept tiles give the frame a fresh renderer
+// draws, to the byte.
+TEST_F(Cascades, StillCascadesAreKeptAndAMovedCasterRedrawsOnlyItsCascades) {
+    const render::Settings s = settings("4", 1024);
+    render::FramePlan first, second, third;
+    const auto a = visibility(s, nullptr, &first);
+    const auto ran = [](const render::FramePlan& p, int object, int* drawing) {
+        int n = 0;
+        *drawing = 0;
+        for (const render::Pass& pass : p.passes)
+            if (pass.name.rfind("shadow-map cascade ", 0) == 0) {
+                n += !pass.skipped;
+                for (const render::Draw& d : pass.draws)
+                    if (d.object == object) ++*drawing;
+            }
+        return n;
+    };
+    int drawing = 0;
+    EXPECT_EQ(ran(first, -1, &drawing), 4);
+    EXPECT_EQ(visibility(s, nullptr, &second), a);
+    EXPECT_EQ(ran(second, -1, &drawing), 0) << "nothing moved: every cascade is kept";
+    // A caster the last cascade draws and the first does not, lifted a metre.
+    const auto draws = [&](const char* name) -> const std::vector<render::Draw>& {
+        const auto it = std::find_if(first.passes.begin(), first.passes.end(),
+                                     [&](const render::Pass& q) { return q.name == name; });
+        EXPECT_NE(it, first.passes.end()) << name;
+        return it->draws;
+    };
+    int far = -1;
+    for (const render::Draw& d : draws("shadow-map cascade 3")) {
+        const auto& near = draws("shadow-map cascade 0");
+        if (std::none_of(near.begin(), near.end(), [&](const render::Draw& n) { return n.object == d.object; })) far = d.object;
+    }
+    ASSERT_GE(far, 0);
+    scene_.objects[static_cast<size_t>(far)].world =
+        glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.0f, 0.0f)) * scene_.objects[static_cast<size_t>(far)].world;
+    const auto c = visibility(s, nullptr, &third);
+    const int redrawn = ran(third, far, &drawing);
+    EXPECT_GE(redrawn, 1);
+    EXPECT_LT(redrawn, 4);
+    EXPECT_EQ(redrawn, drawing) << "exactly the cascades that draw the moved caster run";
+    renderer = std::make_unique<render::Renderer>(gl::probe_caps(test::context()));
+    EXPECT_EQ(visibility(s), c) << "the kept tiles hold what a fresh renderer draws";
 }
 
 // Every encoding with the hard, PCF 4x4 and PCSS lookups in four cascades: the shadows are there

@@ -3,6 +3,7 @@
 // automatic count, and the plan's atlas, passes and lookups.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -211,7 +212,9 @@ struct CascadePlan : ::testing::Test {
     scene::Scene s = field();
     gl::Caps caps = penumbra::testing::full_caps();
     render::Settings settings;
-    render::FramePlan make() { return render::plan(s, settings, caps, render::offscreen(128, 72)); }
+    render::FramePlan make(const render::FramePlan* previous = nullptr) {
+        return render::plan(s, settings, caps, render::offscreen(128, 72), previous);
+    }
 };
 
 TEST_F(CascadePlan, OnePassPerCascadeIntoItsTileAndOneLookup) {
@@ -224,15 +227,27 @@ TEST_F(CascadePlan, OnePassPerCascadeIntoItsTileAndOneLookup) {
     ASSERT_TRUE(map);
     EXPECT_EQ(map->desc.width, 1024);
     EXPECT_EQ(map->desc.height, 1024);
+    // Every tile is drawn this frame: one clear of the whole atlas first (not a scissored clear
+    // per tile), then a pass into each tile, its draws kept inside it.
+    const render::Pass& clear = p.passes[0];
+    EXPECT_EQ(clear.name, "shadow-map clear");
+    EXPECT_EQ(clear.target.resource, p.resource_index("shadow-map"));
+    EXPECT_EQ(clear.target.width, 1024);
+    EXPECT_EQ(clear.target.height, 1024);
+    EXPECT_FALSE(clear.target.clip);
+    ASSERT_TRUE(clear.clear);
+    EXPECT_TRUE(clear.clear->depth);
+    EXPECT_TRUE(clear.draws.empty());
     const int tiles[3][2] = {{0, 0}, {512, 0}, {0, 512}};
     for (int i = 0; i < 3; ++i) {
-        ASSERT_TRUE(p.has_pass("shadow-map cascade " + std::to_string(i)));
-        const render::Pass& pass = p.passes[static_cast<size_t>(i)];
+        const render::Pass& pass = p.passes[static_cast<size_t>(i) + 1];
+        EXPECT_EQ(pass.name, "shadow-map cascade " + std::to_string(i));
         EXPECT_EQ(pass.target.resource, p.resource_index("shadow-map"));
         EXPECT_EQ(pass.target.width, 512);
         EXPECT_EQ(pass.target.x, tiles[i][0]);
         EXPECT_EQ(pass.target.y, tiles[i][1]);
-        EXPECT_TRUE(pass.target.clip) << "each clear stays in its tile";
+        EXPECT_TRUE(pass.target.clip) << "each pass's draws stay in its tile";
+        EXPECT_FALSE(pass.clear) << "the atlas was cleared whole";
         EXPECT_EQ(pass.view_proj, p.cascades[static_cast<size_t>(i)].frustum.view_proj());
     }
     const render::Pass& cam = p.passes.back();
@@ -247,6 +262,51 @@ TEST_F(CascadePlan, OnePassPerCascadeIntoItsTileAndOneLookup) {
     EXPECT_TRUE(matrix);
     EXPECT_NE(p.to_text().find("cascade 2: view depth"), std::string::npos);
     EXPECT_NE(p.to_json().find("\"cascades\":{\"why\":\"--cascades 3\",\"list\":[{"), std::string::npos);
+}
+
+// The cascade passes that run (are not skipped), and those that draw `object`.
+int cascades_run(const render::FramePlan& p, int object = -1, int* drawing = nullptr) {
+    int ran = 0;
+    if (drawing) *drawing = 0;
+    for (const render::Pass& pass : p.passes) {
+        if (pass.name.rfind("shadow-map cascade ", 0) != 0) continue;
+        ran += !pass.skipped;
+        if (drawing)
+            *drawing += std::any_of(pass.draws.begin(), pass.draws.end(), [&](const render::Draw& d) { return d.object == object; });
+    }
+    return ran;
+}
+
+TEST_F(CascadePlan, AStillCascadeIsSkippedAndAMovedCasterRedrawsOnlyTheCascadesThatDrawIt) {
+    ASSERT_EQ(render::parse_option(settings, "cascades", "4"), "");
+    const render::FramePlan first = make();
+    ASSERT_EQ(first.cascades.size(), 4u);
+    EXPECT_EQ(cascades_run(first), 4);
+    const render::FramePlan second = make(&first);
+    EXPECT_EQ(cascades_run(second), 0);
+    // The farthest box moves a little: only the cascades that draw it run again.
+    s.objects[6].world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -0.5f)) * s.objects[6].world;
+    const render::FramePlan third = make(&second);
+    int drawing = 0;
+    const int ran = cascades_run(third, 6, &drawing);
+    EXPECT_EQ(ran, drawing);
+    EXPECT_GE(ran, 1);
+    EXPECT_LT(ran, 4);
+    // Some tiles are kept: each pass that runs clears its own tile, and nothing clears the atlas.
+    EXPECT_FALSE(third.has_pass("shadow-map clear"));
+    for (const render::Pass& pass : third.passes)
+        if (pass.name.rfind("shadow-map cascade ", 0) == 0 && !pass.skipped) {
+            EXPECT_TRUE(pass.clear && pass.target.clip) << pass.name;
+        }
+    // The camera turns: the windows move and every cascade runs.
+    s.camera.view = glm::rotate(glm::mat4(1.0f), glm::radians(2.0f), glm::vec3(0.0f, 1.0f, 0.0f)) * s.camera.view;
+    const render::FramePlan fourth = make(&third);
+    EXPECT_EQ(cascades_run(fourth), 4);
+    const render::FramePlan fifth = make(&fourth);
+    EXPECT_EQ(cascades_run(fifth), 0);
+    // Another packing is another content: every cascade runs.
+    ASSERT_EQ(render::parse_option(settings, "encoding", "r8"), "");
+    EXPECT_EQ(cascades_run(make(&fifth)), 4);
 }
 
 TEST_F(CascadePlan, AutoExplainsItsChoiceAndAPointLightGetsOneMap) {

@@ -118,6 +118,30 @@ Pass tile_pass(const PlanContext& c, const std::vector<int>& fit_casters, std::s
     return p;
 }
 
+// The tiles of an atlas (cascades, a cube's faces) each clear their own region: a scissored
+// clear, which some drivers can only do by drawing a quad over the region (Mesa's llvmpipe: four
+// 2048 tiles cleared so cost 20 ms a frame more than one clear of their atlas). When every tile
+// pass from `first` on is drawn this frame (none is kept from the last), one pass clears the whole
+// atlas before them and they clear nothing.
+void clear_atlas_once(PlanContext& c, size_t first) {
+    std::vector<Pass>& passes = c.plan.passes;
+    if (first >= passes.size()) return;
+    for (size_t i = first; i < passes.size(); ++i)
+        if (passes[i].skipped || !passes[i].clear) return;
+    const int r = passes[first].target.resource;
+    const ResourceDesc& d = c.plan.resources[static_cast<size_t>(r)].desc;
+    Pass q;
+    q.name = c.named(kMap) + " clear";
+    q.module = passes[first].module;
+    q.object_uniforms = ObjectUniforms::None;
+    q.target = {r, d.width, d.height, 0, 0, false};
+    q.clear = passes[first].clear;
+    q.detail = "the whole " + std::to_string(d.width) + "x" + std::to_string(d.height) + " atlas at once, its " +
+               std::to_string(passes.size() - first) + " tiles all drawn this frame (one clear, not one per tile)";
+    for (size_t i = first; i < passes.size(); ++i) passes[i].clear.reset();
+    passes.insert(passes.begin() + static_cast<std::ptrdiff_t>(first), std::move(q));
+}
+
 // The map's texture: packed colour with a depth buffer, or a depth texture; never interpolated
 // (blending two packed values is meaningless).
 ResourceDesc map_desc(const PlanContext& c, int width, int height) {
@@ -321,19 +345,21 @@ public:
         c.plan.light_frustum = fit.cascades.front().frustum;
         c.plan.texel_use = shadow::texel_use(fit.cascades.front().frustum, fit.visible);
 
-        ContentKey key;
-        for (const shadow::Cascade& k : fit.cascades) {
-            key.add(k.frustum.view_proj());
-            for (int i : k.casters) key.add_placement(c.scene, c.casters[static_cast<size_t>(i)]);
-        }
-        add_packing(key, c);
-        const int r = c.add_resource(map_desc(c, fit.atlas_width, fit.atlas_height), key.str(),
+        // Each cascade's tile has its own key: one whose snapped window and casters are where they
+        // were in the last frame is not drawn again (the far ones move least as the camera turns).
+        const int r = c.add_resource(map_desc(c, fit.atlas_width, fit.atlas_height), "",
                                      "the depth seen from the light, " + std::to_string(n) + " cascades side by side");
+        const size_t first = c.plan.passes.size();
         for (size_t i = 0; i < fit.cascades.size(); ++i) {
             const shadow::Cascade& k = fit.cascades[i];
             int cut_outs = 0;
             Pass p = tile_pass(c, k.casters, c.named(kMap) + " cascade " + std::to_string(i), {r, size, size, k.tile_x, k.tile_y, true},
                                k.frustum.view_proj(), cut_outs);
+            ContentKey key;
+            key.add(p.view_proj);
+            for (const Draw& d : p.draws) key.add_placement(c.scene, d.object);
+            add_packing(key, c);
+            p.content = key.str();
             char depths[96];
             std::snprintf(depths, sizeof depths, "view depth %.3g..%.3g, texel %.3g", static_cast<double>(k.begin),
                           static_cast<double>(k.end), static_cast<double>(k.texel));
@@ -344,6 +370,7 @@ public:
                        (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
             c.add_pass(std::move(p));
         }
+        clear_atlas_once(c, first);
         c.plan.cascades = std::move(fit.cascades);
         return true;
     }
@@ -393,6 +420,7 @@ public:
         const int r = c.add_resource(desc, "",
                                      cube_map ? "the depth seen from the light, the six faces of a cube map"
                                               : "the depth seen from the light, the six faces of a cube side by side (3 x 2)");
+        const size_t first = c.plan.passes.size();
         for (int f = 0; f < shadow::kCubeFaces; ++f) {
             const shadow::CubeFace& face = fit.faces[static_cast<size_t>(f)];
             if (!face.drawn) continue;
@@ -421,6 +449,7 @@ public:
                        (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
             c.add_pass(std::move(p));
         }
+        if (!cube_map) clear_atlas_once(c, first);  // a cube map's faces are whole framebuffers
         c.plan.cube = std::move(fit);
         return true;
     }
