@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # `penumbra bench --cascades --quick`: cascades against one map on the terrain, checked for
-# well-formed outputs and for what they must show (never timings): the cascades' error below the
-# one map's at the same memory, and the free windows' flips above the snapped ones'. Then on the
-# bulb in a room: the cube's error below a tenth of the one perspective map's.
+# well-formed outputs and for what they must show (never timings): the maps redrawn in every
+# timed frame of the pan, the cascades' error below the one map's at the same memory, and the free
+# windows' flips above the snapped ones'. Then on the bulb in a room: the cube's error below a
+# tenth of the one perspective map's.
 # usage: bench_cascades_quick.sh PENUMBRA OUT_DIR SOURCE_DIR
 set -euo pipefail
 penumbra=$1 out=$2 src=$3
@@ -23,6 +24,8 @@ assert float(free["flips_pct"]) > float(four["flips_pct"]), (free["flips_pct"], 
 assert len(four["texels"].split(" / ")) == 4
 for r in rows.values():
     assert float(r["ms_per_frame"]) > 0
+    # The pan moves the camera each frame: every map is drawn again in every timed frame.
+    assert float(r["redrawn_pct"]) == 100.0, (r["config"], r["redrawn_pct"])
 print("ok: cascades %s %% vs one map %s %%; flips snapped %s %%, free %s %%" %
       (four["error_pct"], one["error_pct"], four["flips_pct"], free["flips_pct"]))
 PY
@@ -39,6 +42,8 @@ assert cube["cascades"] == "cube" and cube_map["cascades"] == "cube" and one["ca
 for c in (cube, cube_map):
     assert float(c["error_pct"]) < float(one["error_pct"]) / 10, (c["error_pct"], one["error_pct"])
     assert float(c["ms_per_frame"]) > 0
+for c in (one, cube, cube_map):
+    assert float(c["redrawn_pct"]) == 100.0, (c["config"], c["redrawn_pct"])  # the light moves each frame
 # The atlas holds 3 x 2 faces; a cube map six faces: the same colour bytes, one face's depth buffer.
 assert int(cube_map["map_bytes"]) < int(cube["map_bytes"]), (cube_map["map_bytes"], cube["map_bytes"])
 assert float(one["ms_per_frame"]) > 0
