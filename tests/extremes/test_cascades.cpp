@@ -2,11 +2,13 @@
 // sun over a kilometre of hills with 360 objects, the camera 1.9 m above the ground looking along
 // it; make_large_scenes.py): the error per band of view depth at equal map memory (one 4096 map
 // against four 2048 cascades), the shimmer of a slowly moving camera with and without snapping,
-// and every encoding and filter in the cascades.
+// the nearest cascade's texels read back across a sub-texel camera move, still cascades kept, and
+// every encoding and filter in the cascades.
 #include "gl_fixture.h"
 #include "truth_frame.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -16,6 +18,7 @@
 #include "measure/ray_tracer.h"
 #include "render/options.h"
 #include "scene/gltf_loader.h"
+#include "shadow/encoding.h"
 
 using namespace penumbra;
 
@@ -191,6 +194,91 @@ TEST_F(Cascades, StillCascadesAreKeptAndAMovedCasterRedrawsOnlyItsCascades) {
     EXPECT_EQ(redrawn, drawing) << "exactly the cascades that draw the moved caster run";
     renderer = std::make_unique<render::Renderer>(gl::probe_caps(test::context()));
     EXPECT_EQ(visibility(s), c) << "the kept tiles hold what a fresh renderer draws";
+}
+
+// Snapping on the map itself: the camera moves sideways by less than the nearest cascade's texel;
+// its window moves by whole texels, so each texel of its tile holds the depth of the same ray from
+// the sun as before (read back, unpacked into the light's eye depth, compared over the tiles'
+// overlap). Not snapped, the window slides by a fraction of a texel and the texels sample other
+// points of the sloping ground.
+class CascadeSnapGl : public Cascades {
+protected:
+    // The light's eye depth (metres along the sun) of each texel of cascade 0's tile, and the
+    // window's lower-left corner in the light's axes.
+    struct Tile {
+        std::vector<float> depth;
+        glm::vec2 origin{0.0f};
+        float texel = 0.0f;
+        float far = 0.0f;  // what a cleared texel unpacks to
+    };
+    static constexpr int kTile = 1024;
+    Tile tile_of(const render::Settings& s, const glm::mat4& view) {
+        render::FramePlan plan;
+        visibility(s, &view, &plan);
+        EXPECT_EQ(plan.cascades.size(), 4u);
+        const shadow::LightFrustum& f = plan.cascades.front().frustum;
+        gl::Device& dev = renderer->device();
+        dev.bind_target(renderer->pool().whole("shadow-map"));
+        const std::vector<std::uint8_t> rgba = dev.read_rgba(0, 0, kTile, kTile);
+        Tile t;
+        t.texel = plan.cascades.front().texel;
+        t.far = f.zfar;
+        const float w = 2.0f / f.proj[0][0], h = 2.0f / f.proj[1][1];
+        t.origin = {-(f.proj[3][0] + 1.0f) * w / 2.0f, -(f.proj[3][1] + 1.0f) * h / 2.0f};
+        t.depth.resize(static_cast<size_t>(kTile) * kTile);
+        for (size_t i = 0; i < t.depth.size(); ++i) {
+            const float d = shadow::unpack_rgba({rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2], rgba[4 * i + 3]});
+            t.depth[i] = f.znear + d * (f.zfar - f.znear);  // orthographic: window depth is linear
+        }
+        return t;
+    }
+    // The share of the overlap's texels (holding a surface in both) whose depth differs by more
+    // than 2 cm from the texel `shift` away; `shift` the windows' offset in whole texels.
+    static double changed_pct(const Tile& a, const Tile& b, glm::ivec2 shift) {
+        std::size_t compared = 0, changed = 0;
+        for (int y = 0; y < kTile; ++y)
+            for (int x = 0; x < kTile; ++x) {
+                const int xb = x - shift.x, yb = y - shift.y;
+                if (xb < 0 || yb < 0 || xb >= kTile || yb >= kTile) continue;
+                const float da = a.depth[static_cast<size_t>(y * kTile + x)];
+                const float db = b.depth[static_cast<size_t>(yb * kTile + xb)];
+                if (da >= a.far - 0.01f || db >= b.far - 0.01f) continue;  // cleared: nothing drawn there
+                ++compared;
+                changed += std::abs(da - db) > 0.02f;
+            }
+        EXPECT_GT(compared, static_cast<std::size_t>(kTile * kTile / 2));
+        return 100.0 * static_cast<double>(changed) / static_cast<double>(std::max<std::size_t>(compared, 1));
+    }
+};
+
+TEST_F(CascadeSnapGl, ASubTexelCameraMoveChangesNoShadowTexel) {
+    for (bool snap : {true, false}) {
+        render::Settings s = settings("4", kTile);
+        s.cascade_snap = snap;
+        const Tile a = tile_of(s, scene_.camera.view);
+        double worst = 0.0;
+        int moved = 0;
+        // Sideways steps of 0.3 texel: each shifts the snapped window by 0 or 1 texel.
+        for (int step = 1; step <= 4; ++step) {
+            const glm::mat4 view = glm::translate(glm::mat4(1.0f), glm::vec3(-0.3f * a.texel * static_cast<float>(step), 0.0f, 0.0f)) *
+                                   scene_.camera.view;
+            const Tile b = tile_of(s, view);
+            const glm::vec2 d = (b.origin - a.origin) / a.texel;
+            const glm::ivec2 shift(static_cast<int>(std::lround(d.x)), static_cast<int>(std::lround(d.y)));
+            if (snap) {
+                EXPECT_NEAR(d.x, static_cast<float>(shift.x), 1e-2f);
+                EXPECT_NEAR(d.y, static_cast<float>(shift.y), 1e-2f);
+            }
+            moved += shift != glm::ivec2(0);
+            worst = std::max(worst, changed_pct(a, b, shift));
+        }
+        std::printf("%s: the window moved a texel or more in %d of 4 steps; texels whose depth changed: at most %.3f %%\n",
+                    snap ? "snapped" : "not snapped", moved, worst);
+        if (snap)
+            EXPECT_LT(worst, 0.1) << "each texel keeps its ray: edges' rasterisation only";
+        else
+            EXPECT_GT(worst, 5.0) << "a sliding window samples other points of the ground";
+    }
 }
 
 // Every encoding with the hard, PCF 4x4 and PCSS lookups in four cascades: the shadows are there
