@@ -345,8 +345,9 @@ public:
         c.plan.light_frustum = fit.cascades.front().frustum;
         c.plan.texel_use = shadow::texel_use(fit.cascades.front().frustum, fit.visible);
 
-        // Each cascade's tile has its own key: one whose snapped window and casters are where they
-        // were in the last frame is not drawn again (the far ones move least as the camera turns).
+        // Each cascade's tile has its own key: one whose window and casters are where they were in
+        // the last frame is not drawn again, so a caster that moves redraws only the cascades that
+        // draw it.
         const int r = c.add_resource(map_desc(c, fit.atlas_width, fit.atlas_height), "",
                                      "the depth seen from the light, " + std::to_string(n) + " cascades side by side");
         const size_t first = c.plan.passes.size();
