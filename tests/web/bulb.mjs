@@ -8,7 +8,7 @@
 // usage: bulb.mjs PENUMBRA_CLI OUT_DIR
 import { mkdirSync } from 'node:fs';
 import path from 'node:path';
-import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng, waitFrames, tintShares, loseAndRestore, cliFrame, FACE_TINTS }
+import { runTest, openPage, frameAt, compare, check, checkNoGlErrors, checkMatchesCli, loopMs, setOptions, savePng, waitFrames, tintShares, loseAndRestore, cliFrame, FACE_TINTS }
   from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
@@ -77,8 +77,7 @@ await runTest('web.bulb', async ({ server, browser }) => {
     s = await bad.evaluate(() => window.penumbra.state());
     check(s.options['map-size'] === '256' && s.camera.moved === false, `bad link: ${JSON.stringify(s.options)}`);
     check(/room/.test(await bad.textContent('#note')), 'the note does not say the eye must be in the room');
-    const errs = (await glErrors(page)).concat(await glErrors(bad));
-    check(errs.length === 0, `glGetError: ${errs.map((e) => '0x' + e.toString(16)).join(', ')}`);
+    await checkNoGlErrors(page, bad);
     check(problems.length === 0 && badProblems.length === 0, problems.concat(badProblems).join('; '));
     console.log(`controls, camera and URL restored: ${page.url()}`);
   }
@@ -122,23 +121,15 @@ await runTest('web.bulb', async ({ server, browser }) => {
       ['pcf', ['--cascades', 'cube', '--map-size', '512', '--filter', 'pcf4x4']],
       ['cubemap', ['--cascades', 'cube', '--map-size', '512', '--filter', 'pcf4x4', '--cube-layout', 'cubemap']],
     ];
-    for (const [name, args] of egl) {
-      const d = compare(shot[name], eglFrame(name, args, shot[name]), 64);
-      console.log(`${name} against penumbra render: ${(100 * d.fraction).toFixed(3)}% of the pixels differ by more than 64`);
-      check(d.fraction <= 0.005, `${name}: the browser's frame differs from penumbra render's in ${(100 * d.fraction).toFixed(3)}% ` +
-                                 `(images in ${outDir})`);
-    }
+    checkMatchesCli(shot, egl, eglFrame, outDir);
 
     // The page's own loop: ms/frame with the cube and one map (printed, not checked). The bulb
     // stands still, so the cube's faces are drawn once and kept: both loops draw the camera pass.
     const ms = {};
     await setOptions(page, { filter: 'hard' });
     await page.evaluate(() => window.penumbra.resume());
-    for (const [n, layout] of [['1', 'atlas'], ['cube', 'atlas'], ['cube', 'cubemap']]) {
-      await setOptions(page, { cascades: n, 'cube-layout': layout });
-      await waitFrames(page, 70);  // the median is over the last 60 frames
-      ms[n === '1' ? '1' : layout] = (await page.evaluate(() => window.penumbra.state())).ms;
-    }
+    for (const [n, layout] of [['1', 'atlas'], ['cube', 'atlas'], ['cube', 'cubemap']])
+      ms[n === '1' ? '1' : layout] = await loopMs(page, { cascades: n, 'cube-layout': layout });
     await setOptions(page, { 'cube-layout': 'atlas' });
     console.log(`SwiftShader, 512x512, map 512: ${ms['1'].toFixed(1)} ms/frame with one map, ${ms.atlas.toFixed(1)} with the cube ` +
                 `(x${(ms.atlas / ms['1']).toFixed(2)}), ${ms.cubemap.toFixed(1)} with the cube as a cube map ` +
@@ -150,8 +141,7 @@ await runTest('web.bulb', async ({ server, browser }) => {
     faces(after, 'after the restore', 4);
     await page.evaluate(() => window.penumbra.resume());
     await waitFrames(page, 3);
-    const errs = await glErrors(page);
-    check(errs.length === 0, `glGetError: ${errs.map((e) => '0x' + e.toString(16)).join(', ')}`);
+    await checkNoGlErrors(page);
     check(problems.length === 0, problems.join('; '));
     console.log('context lost and restored: the cube drawn again, the same frame, the loop running, no GL error');
     await context.close();

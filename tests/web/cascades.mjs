@@ -11,7 +11,7 @@
 // usage: cascades.mjs PENUMBRA_CLI OUT_DIR
 import { mkdirSync } from 'node:fs';
 import path from 'node:path';
-import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng, waitFrames, tintShares, loseAndRestore, cliFrame, CASCADE_TINTS }
+import { runTest, openPage, frameAt, compare, check, checkNoGlErrors, checkMatchesCli, loopMs, setOptions, savePng, waitFrames, tintShares, loseAndRestore, cliFrame, CASCADE_TINTS }
   from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
@@ -107,8 +107,7 @@ await runTest('web.cascades', async ({ server, browser }) => {
     s = await bad.evaluate(() => window.penumbra.state());
     check(s.options.cascades === '3' && s.camera.moved === false, `bad link: ${JSON.stringify(s.options)}, ${JSON.stringify(s.camera)}`);
     check(/camera/.test(await bad.textContent('#note')), 'the note does not name the bad camera');
-    const errs = (await glErrors(page)).concat(await glErrors(bad));
-    check(errs.length === 0, `glGetError: ${errs.map((e) => '0x' + e.toString(16)).join(', ')}`);
+    await checkNoGlErrors(page, bad);
     check(problems.length === 0 && badProblems.length === 0, problems.concat(badProblems).join('; '));
     console.log(`controls, camera and URL restored: ${page.url()}`);
   }
@@ -148,22 +147,13 @@ await runTest('web.cascades', async ({ server, browser }) => {
       ['color', ['--cascades', '4']],
       ['nosnap', ['--cascades', '4', '--aov', 'cascades', '--cascade-snap', 'off', '--cascade-split', '0.5', '--cascade-blend', '0.2']],
     ];
-    for (const [name, args] of egl) {
-      const d = compare(shot[name], eglFrame(name, args, shot[name]), 64);
-      console.log(`${name} against penumbra render: ${(100 * d.fraction).toFixed(3)}% of the pixels differ by more than 64`);
-      check(d.fraction <= 0.005, `${name}: the browser's frame differs from penumbra render's in ${(100 * d.fraction).toFixed(3)}% ` +
-                                 `(images in ${outDir})`);
-    }
+    checkMatchesCli(shot, egl, eglFrame, outDir);
 
     // The page's own loop: ms/frame with 1 and 4 cascades (printed, not checked).
     const ms = {};
     await setOptions(page, { aov: 'color' });
     await page.evaluate(() => window.penumbra.resume());
-    for (const n of ['1', '4']) {
-      await setOptions(page, { cascades: n });
-      await waitFrames(page, 70);  // the median is over the last 60 frames
-      ms[n] = (await page.evaluate(() => window.penumbra.state())).ms;
-    }
+    for (const n of ['1', '4']) ms[n] = await loopMs(page, { cascades: n });
     console.log(`SwiftShader, 512x512, map 1024: ${ms['1'].toFixed(1)} ms/frame with 1 cascade, ${ms['4'].toFixed(1)} with 4 ` +
                 `(x${(ms['4'] / ms['1']).toFixed(2)}; median of 60 frames of the page's loop, each waited for)`);
 
@@ -173,8 +163,7 @@ await runTest('web.cascades', async ({ server, browser }) => {
     checkTints(after, 4, 'after the restore');
     await page.evaluate(() => window.penumbra.resume());
     await waitFrames(page, 3);
-    const errs = await glErrors(page);
-    check(errs.length === 0, `glGetError: ${errs.map((e) => '0x' + e.toString(16)).join(', ')}`);
+    await checkNoGlErrors(page);
     check(problems.length === 0, problems.join('; '));
     console.log('context lost and restored: the same frame, the loop running, no GL error');
     await context.close();

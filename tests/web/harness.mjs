@@ -138,6 +138,21 @@ export async function glErrors(page) {
   });
 }
 
+// Fails the test if any of the pages has a GL error pending.
+export async function checkNoGlErrors(...pages) {
+  const errs = [];
+  for (const p of pages) errs.push(...(await glErrors(p)));
+  check(errs.length === 0, `glGetError: ${errs.map((e) => '0x' + e.toString(16)).join(', ')}`);
+}
+
+// The page's own loop with `options` set: its ms/frame, the median of the last 60 frames (each
+// waited for). The loop must be running (window.penumbra.resume()).
+export async function loopMs(page, options) {
+  await setOptions(page, options);
+  await waitFrames(page, 70);
+  return (await page.evaluate(() => window.penumbra.state())).ms;
+}
+
 // Sets render options through the page's module (window.penumbra.setOption); fails the test on
 // the first one the page refuses.
 export async function setOptions(page, options) {
@@ -226,4 +241,15 @@ export function cliFrame(cli, args, file) {
   execFileSync(cli, ['render', ...args, '--out', file]);
   const png = PNG.sync.read(readFileSync(file));
   return { width: png.width, height: png.height, data: png.data };
+}
+
+// Each [name, args] of `runs`: the page's frame shot[name] against `frameOf(name, args, size)` (the
+// CLI's), at most 0.5 % of the pixels more than 64 levels apart; the share printed.
+export function checkMatchesCli(shot, runs, frameOf, outDir) {
+  for (const [name, args] of runs) {
+    const d = compare(shot[name], frameOf(name, args, shot[name]), 64);
+    console.log(`${name} against penumbra render: ${(100 * d.fraction).toFixed(3)}% of the pixels differ by more than 64`);
+    check(d.fraction <= 0.005, `${name}: the browser's frame differs from penumbra render's in ${(100 * d.fraction).toFixed(3)}% ` +
+                               `(images in ${outDir})`);
+  }
 }
