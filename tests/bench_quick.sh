@@ -151,6 +151,31 @@ if "$penumbra" bench --from-csv "$work/bench/results.csv" --out-dir "$work/again
 else bad "bench --from-csv lost the volumes' or the effects' tables: $(cat "$work/again.err")"; fi
 cmp -s "$work/bench/results.csv" "$work/again/results.csv" && ok || bad "bench --from-csv does not write the same CSV back"
 
+# The GPU time (EXT_disjoint_timer_query) beside ms/frame: every row has it where `caps` says the
+# context has a timer (a non-negative figure, each timed pass named), none where it has not; the
+# table, or the line saying it is not available. Never a timing check.
+"$penumbra" caps >"$work/caps.txt" 2>/dev/null
+python3 - "$work/bench" "$work/caps.txt" <<'PY' && ok || bad "the GPU columns are wrong"
+import csv, sys
+d, caps = sys.argv[1], open(sys.argv[2]).read()
+rows = list(csv.DictReader(open(d + "/results.csv")))
+md = open(d + "/results.md").read()
+assert "## GPU time per frame and per pass (GL_TIME_ELAPSED_EXT)" in md
+if "GPU timer no" in caps:
+    assert all(r["gpu_ms_moving"] == "" and r["gpu_ms_per_pass"] == "" for r in rows)
+    assert "GPU timer: not available on this context" in md
+    print("GPU timer: not available"); sys.exit(0)
+assert "GPU timer yes" in caps, caps
+assert "| technique | map | ms/frame moving | GPU ms moving | ms/frame still | GPU ms still | GPU ms per pass (moving) |" in md
+for r in rows:
+    assert float(r["gpu_ms_moving"]) >= 0.0 and float(r["gpu_ms_still"]) >= 0.0, r
+    names = [p.split(": ")[0] for p in r["gpu_ms_per_pass"].split("; ")]
+    assert all(names) and all(float(p.split(": ")[1]) >= 0.0 for p in r["gpu_ms_per_pass"].split("; ")), r
+    if r["section"] == "sweep": assert "camera" in names, r
+    if r["section"] == "sweep" and r["map_size"] != "0": assert "shadow-map" in names, r
+print("GPU columns:", len(rows), "rows")
+PY
+
 # `penumbra bench --soft --quick`: the soft methods against the area-light truth (course scene,
 # 128x128, radius 0.15 of the scene): every row there, numbers in range, and what must hold
 # whatever the timings: Heckbert-Herf's error falls from 4 to 64 samples (and with N along the

@@ -201,4 +201,25 @@ assert p["light_frustum"] == json.load(open("mirror-only.json"))["light_frustum"
 # The text form names every pass too, and bad input is refused as render refuses it.
 "$penumbra" plan --technique planar --size 64x64 | grep -q "planar-stencil (planar)" || { echo "FAIL text"; fail=1; }
 if "$penumbra" plan --technique volume 2>/dev/null; then echo "FAIL: a bad technique was planned"; fail=1; fi
+# render --frames 3 -v: after the ms/frame line, each pass's median GPU time (GL_TIME_ELAPSED_EXT),
+# one line per pass of the plan and the total; where `caps` says the context has no timer, one
+# line saying so instead. Never a timing check.
+"$penumbra" plan --frames 3 --size 64x64 --map-size 256 --json > gpu.json &&
+"$penumbra" render --frames 3 -v --size 64x64 --map-size 256 > gpu.out 2> gpu.err &&
+"$penumbra" caps > gpu.caps && python3 -c '
+import json, re, sys
+out = open("gpu.out").read().splitlines()
+assert out[0].startswith("3 frames, median "), out
+if "GPU timer no" in open("gpu.caps").read():
+    assert out[1:] == ["GPU timer: not available on this context (no EXT_disjoint_timer_query)"], out
+    print("ok gpu: not available"); sys.exit(0)
+assert "GPU timer yes" in open("gpu.caps").read()
+assert re.match(r"GPU time per pass \(GL_TIME_ELAPSED_EXT\), median of [1-3] frame\(s\)", out[1]), out
+rows = [re.match(r"  (.+?) +([0-9]+\.[0-9]{3}) ms", l) for l in out[2:]]
+assert all(rows), out
+names = [m.group(1) for m in rows]
+want = [q["name"] for q in json.load(open("gpu.json"))["passes"] if not q["skipped"]]
+assert names == want + ["total"], (names, want)
+assert out[-1].endswith(" ms/frame GPU"), out
+print("ok gpu:", ", ".join(f"{m.group(1)} {m.group(2)}" for m in rows))' || { echo "FAIL gpu: render --frames 3 -v's GPU times: $(cat gpu.out gpu.err)"; fail=1; }
 exit $fail

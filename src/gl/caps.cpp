@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <type_traits>
 
 #include "gl/check.h"
 #include "gl/entry_points.h"
@@ -27,6 +28,41 @@ PrecisionFormat precision(GLenum shader, GLenum type) {
     GLint bits = 0;
     glGetShaderPrecisionFormat(shader, type, range, &bits);
     return {range[0], range[1], bits};
+}
+
+// EXT_disjoint_timer_query's entry points (every one, or the timer is off) and the bits of its
+// TIME_ELAPSED counter.
+void probe_timer(Caps& c, const platform::Platform& context, bool listed) {
+    EntryPoints& e = entry_points();
+#ifdef __EMSCRIPTEN__
+    (void)context;
+    (void)e;
+    // Emscripten (3.1.6) routes glBeginQueryEXT and the others to the extension's object, which
+    // its library fetches only for a context made with every extension enabled; the canvas enables
+    // them one by one (platform/emscripten_canvas.cpp), so the pages have no GPU timer yet: the
+    // canvas would have to fetch that object itself (GLctx.disjointTimerQueryExt) first.
+    listed = false;
+#else
+    const auto load = [&](auto& fn, const char* name) {
+        fn = listed ? reinterpret_cast<std::remove_reference_t<decltype(fn)>>(context.proc_address(name)) : nullptr;
+        return fn != nullptr;
+    };
+    bool all = load(e.gen_queries, "glGenQueriesEXT");
+    all = load(e.delete_queries, "glDeleteQueriesEXT") && all;
+    all = load(e.begin_query, "glBeginQueryEXT") && all;
+    all = load(e.end_query, "glEndQueryEXT") && all;
+    all = load(e.get_query_iv, "glGetQueryivEXT") && all;
+    all = load(e.get_query_object_uiv, "glGetQueryObjectuivEXT") && all;
+    all = load(e.get_query_object_ui64v, "glGetQueryObjectui64vEXT") && all;
+    listed = listed && all;
+#endif
+    c.timer_bits = 0;
+    if (listed) {
+        GLint bits = 0;
+        e.get_query_iv(GL_TIME_ELAPSED_EXT, GL_QUERY_COUNTER_BITS_EXT, &bits);
+        c.timer_bits = bits;
+    }
+    c.timer_query = listed && c.timer_bits > 0;
 }
 
 }  // namespace
@@ -66,6 +102,7 @@ Caps probe_caps(const platform::Platform& context) {
     c.draw_buffers = entry_points().draw_buffers != nullptr;
 #endif
     c.render_mipmap = c.has("GL_OES_fbo_render_mipmap");
+    probe_timer(c, context, either("EXT_disjoint_timer_query"));
 
     c.max_texture_size = get_int(GL_MAX_TEXTURE_SIZE);
     c.max_cube_map_size = get_int(GL_MAX_CUBE_MAP_TEXTURE_SIZE);
@@ -96,7 +133,8 @@ std::string Caps::summary() const {
       << (packed_depth_stencil ? "yes" : "no") << ", depth24 " << (depth24 ? "yes" : "no")
       << ", uint indices " << (element_index_uint ? "yes" : "no") << "\n"
       << "half-float targets " << (half_float_target ? "yes" : "no") << ", draw buffers "
-      << (draw_buffers ? "yes" : "no") << ", render into mip levels " << (render_mipmap ? "yes" : "no");
+      << (draw_buffers ? "yes" : "no") << ", render into mip levels " << (render_mipmap ? "yes" : "no")
+      << ", GPU timer " << (timer_query ? "yes (" + std::to_string(timer_bits) + " bits)" : std::string("no"));
     return s.str();
 }
 

@@ -41,6 +41,11 @@ struct Caps {
     bool half_float_target = false;
     bool draw_buffers = false;
     bool render_mipmap = false;
+    // GPU time per pass (gl/timer.h): EXT_disjoint_timer_query with its entry points and a
+    // TIME_ELAPSED counter of timer_bits > 0 bits (a context may report 0: no timer). Web: not
+    // yet (gl/caps.cpp says why).
+    bool timer_query = false;
+    int timer_bits = 0;
     // The context truncates float colours to unorm8 instead of rounding them: found by the
     // renderer's probe (render/renderer.h), not by probe_caps; the packing shaders aim at the
     // middle of the byte when it is set (PACK_FLOOR).

@@ -19,7 +19,7 @@ void set_uniform(const gl::Program& p, const Uniform& u) {
 
 }  // namespace
 
-Renderer::Renderer(gl::Caps caps) : caps_(std::move(caps)) { probe_unorm_rounding(); }
+Renderer::Renderer(gl::Caps caps) : caps_(std::move(caps)), timer_(caps_.timer_query) { probe_unorm_rounding(); }
 Renderer::~Renderer() = default;
 
 void Renderer::probe_unorm_rounding() {
@@ -138,7 +138,13 @@ void Renderer::execute(const scene::Scene& scene, const FramePlan& plan) {
 void Renderer::run(const scene::Scene& scene, const FramePlan& plan) {
     pool_.prepare(plan);
     device_.forget_textures();
-    for (const Pass& pass : plan.passes) run_pass(scene, plan, pass);
+    timer_.begin_frame();
+    for (const Pass& pass : plan.passes) {
+        if (!pass.skipped) timer_.begin_pass(pass.name);
+        run_pass(scene, plan, pass);
+        timer_.end_pass();
+    }
+    timer_.end_frame();
     device_.apply(gl::PipelineState{});
 }
 

@@ -12,6 +12,7 @@
 #include "gl/caps.h"
 #include "gl/device.h"
 #include "gl/objects.h"
+#include "gl/timer.h"
 #include "render/plan.h"
 #include "render/pool.h"
 #include "render/settings.h"
@@ -59,6 +60,9 @@ public:
     // For work outside a frame plan on the same context (render/mipmaps.h): its state cache.
     gl::Device& device() { return device_; }
     const ResourcePool& pool() const { return pool_; }
+    // GPU time per pass (EXT_disjoint_timer_query, where Caps::timer_query): off until enabled;
+    // each frame executed while it is on brackets its passes that draw, and take() reads them.
+    gl::PassTimer& gpu_timer() { return timer_; }
     // How this context converts float to unorm8, found by a probe when the renderer was made;
     // the packing shaders are compiled for it (PACK_FLOOR when it truncates).
     shadow::UnormRounding unorm_rounding() const {
@@ -84,6 +88,7 @@ private:
     Uploaded scene_, beyond_;
     ResourcePool pool_;
     std::optional<FramePlan> previous_;
+    gl::PassTimer timer_;
     std::vector<float> loaded_;  // fingerprint of the scene whose meshes and images are uploaded
 };
 

@@ -242,6 +242,7 @@ void silhouette_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& 
         glm::vec3 centre{0.0f};
         std::vector<Row> rows;
         std::vector<std::vector<double>> moving, still_ms;
+        std::vector<GpuRounds> gpu;
     };
     std::vector<Case> cases;
     const auto t0 = Clock::now();
@@ -285,6 +286,7 @@ void silhouette_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& 
         }
         c.moving.resize(techniques.size());
         c.still_ms.resize(techniques.size());
+        c.gpu.resize(techniques.size());
         cases.push_back(std::move(c));
     }
     gl::check_errors("the silhouette sweep's accuracy pass");
@@ -299,8 +301,11 @@ void silhouette_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& 
             for (size_t t = 0; t < techniques.size(); ++t) {
                 render::Settings s = techniques[t].settings;
                 s.aov = render::Aov::Color;
-                c.moving[t].push_back(time_frames(r, s, in, 2, o.frames, moving_at).median_ms);
-                c.still_ms[t].push_back(time_frames(r, s, in, 1, o.frames, still_at).median_ms);
+                const Timing moving = time_frames(r, s, in, 2, o.frames, moving_at);
+                const Timing still_t = time_frames(r, s, in, 1, o.frames, still_at);
+                c.moving[t].push_back(moving.median_ms);
+                c.still_ms[t].push_back(still_t.median_ms);
+                c.gpu[t].add(moving, still_t);
             }
             gl::check_errors("the silhouette sweep's timing pass");
         }
@@ -312,6 +317,7 @@ void silhouette_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& 
             row.ms_camera = row.ms_still;
             row.ms_shadow = row.map ? std::max(0.0, row.ms_moving - row.ms_still) : 0.0;
             row.frames = o.frames * o.rounds;
+            c.gpu[t].set(row);
             w.silhouette.push_back(row);
         }
     std::fprintf(stderr, "silhouette sweep: %zu spheres x %zu techniques in %s\n", cases.size(), techniques.size(),
@@ -368,6 +374,7 @@ void run_sweep(Sweep& w) {
         Row row;
         render::Settings s;
         std::vector<double> moving, still;
+        GpuRounds gpu;
     };
     struct SceneState {
         SceneSpec spec;
@@ -458,7 +465,7 @@ void run_sweep(Sweep& w) {
                          row.map ? ("map " + std::to_string(row.map)).c_str() : "", row.score.error_pct,
                          row.score.false_shadow_pct, row.score.false_lit_pct, duration_str(seconds_since(t0)).c_str());
             s.aov = render::Aov::Color;  // time the frame a user sees
-            st->pending.push_back({row, s, {}, {}});
+            st->pending.push_back({row, s, {}, {}, {}});
         }
         gl::check_errors("the bench's accuracy pass");
         states.push_back(std::move(st));
@@ -483,6 +490,7 @@ void run_sweep(Sweep& w) {
                 const Timing still_t = time_frames(r, p.s, in, 1, o.frames, still_at);
                 p.moving.push_back(moving.median_ms);
                 p.still.push_back(still_t.median_ms);
+                p.gpu.add(moving, still_t);
                 p.row.redrawn_moving += moving.redrawn;
                 p.row.redrawn_still += still_t.redrawn;
                 ++done;
@@ -509,6 +517,7 @@ void run_sweep(Sweep& w) {
             row.ms_camera = row.ms_still;
             row.ms_shadow = has_map ? std::max(0.0, row.ms_moving - row.ms_still) : 0.0;
             row.frames = o.frames * o.rounds;
+            p.gpu.set(row);
             if (has_map && (row.redrawn_moving != row.frames || row.redrawn_still != 0))
                 w.notes.push_back(row.scene + ": " + row.technique + " map " + std::to_string(row.map) + ": the map was redrawn in " +
                                   std::to_string(row.redrawn_moving) + " of " + std::to_string(row.frames) + " moving frames and " +

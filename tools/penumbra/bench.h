@@ -5,6 +5,7 @@
 //   truth_command.cpp  penumbra truth, and the truth helpers the sweep uses too
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -18,6 +19,7 @@
 
 #include "measure.h"
 #include "plot.h"
+#include "gl/timer.h"
 #include "measure/image_io.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
@@ -96,6 +98,11 @@ struct Row {
     // The lights section's rows: --shading and --lights.
     std::string shading;
     int lights = 0;
+    // GPU time (EXT_disjoint_timer_query, gl/timer.h): the median ms/frame moving and still, and
+    // each pass's median of the moving frames ("shadow-map: 0.412; camera: 1.203"); < 0 and "":
+    // the context has no timer (or the rows were read from a CSV without them).
+    double gpu_moving = -1.0, gpu_still = -1.0;
+    std::string gpu_passes;
 };
 
 inline constexpr const char* kSilhouetteSection = "silhouette";
@@ -166,16 +173,21 @@ void turn_light(scene::Light& light, const scene::Light& original, const glm::ve
 struct Timing {
     double median_ms = 0.0;
     int redrawn = 0;
+    gl::GpuSummary gpu;  // the timed frames' GPU times (frames 0: no timer on this context)
 };
 
-// Renders `frames` frames after `warmup` untimed ones, each finished with glFinish.
+// Renders `frames` frames after `warmup` untimed ones, each finished with glFinish; the timed
+// ones' GPU time per pass too where the context has a timer (read after the last frame).
 template <typename SceneAt>
 Timing time_frames(render::Renderer& r, const render::Settings& s, const render::FrameInputs& in, int warmup, int frames,
                    SceneAt scene_at) {
     std::vector<double> ms;
     Timing t;
+    gl::PassTimer& timer = r.gpu_timer();
+    timer.take(true);  // nothing of earlier frames
     for (int i = 0; i < warmup + frames; ++i) {
         const scene::Scene& sc = scene_at(i);
+        timer.enable(i >= warmup);
         const auto start = Clock::now();
         const render::FramePlan& plan = r.render(sc, s, in);
         r.finish();
@@ -185,9 +197,41 @@ Timing time_frames(render::Renderer& r, const render::Settings& s, const render:
             t.redrawn += plan.drawn("shadow-map") ? 1 : 0;
         }
     }
+    timer.enable(false);
+    t.gpu = gl::summarize(timer.take(true));
     t.median_ms = measure::median(ms);
     return t;
 }
+
+// A row's GPU times over the timing rounds: each round's moving and still Timing, then set() puts
+// the medians over the rounds on the row (nothing where no round was measured).
+struct GpuRounds {
+    std::vector<double> moving, still;
+    std::vector<gl::GpuSummary> moving_passes;
+    void add(const Timing& moving_t, const Timing& still_t) {
+        if (moving_t.gpu.frames > 0) moving.push_back(moving_t.gpu.total_ms), moving_passes.push_back(moving_t.gpu);
+        if (still_t.gpu.frames > 0) still.push_back(still_t.gpu.total_ms);
+    }
+    void set(Row& row) const {
+        if (!moving.empty()) row.gpu_moving = measure::median(moving);
+        if (!still.empty()) row.gpu_still = measure::median(still);
+        // Each pass's median over the rounds' medians, in the order the passes first ran.
+        gl::GpuSummary s;
+        std::vector<std::vector<double>> per;
+        for (const gl::GpuSummary& round : moving_passes)
+            for (const gl::PassMedian& p : round.passes) {
+                auto it = std::find_if(s.passes.begin(), s.passes.end(), [&](const gl::PassMedian& q) { return q.name == p.name; });
+                if (it == s.passes.end()) {
+                    s.passes.push_back({p.name, 0.0, 0});
+                    per.emplace_back();
+                    it = s.passes.end() - 1;
+                }
+                per[static_cast<size_t>(it - s.passes.begin())].push_back(p.ms);
+            }
+        for (size_t i = 0; i < per.size(); ++i) s.passes[i].ms = measure::median(per[i]);
+        row.gpu_passes = gl::pass_list(s);
+    }
+};
 
 // ---- effects_bench.cpp: the stencil effects on the course frame ---------------------------------
 
@@ -205,6 +249,7 @@ struct PendingRow {
     Row row;
     render::Settings s;
     std::vector<double> moving, still;
+    GpuRounds gpu;
 };
 // Times every pending row in w.o.rounds interleaved rounds of w.o.frames frames, moving (the
 // course animated 1/60 s a frame from `time`) and still (`still` again), and appends the rows,

@@ -48,7 +48,7 @@ std::string csv(const Sweep& w) {
       << ",ms_moving,ms_still,ms_shadow_pass,ms_camera_pass,frames,redrawn_moving,redrawn_still,shadow_map_bytes,texel_use_pct,"
          "silhouette_edges,volume_triangles,fill_per_pixel,zpass_casters,zfail_casters,section,segments,"
          "effects,effect_error_pct,effect_false_shadow_pct,effect_false_lit_pct,effect_valid_pixels,not_modelled_pixels,"
-         "post,shading,lights,settings\n";
+         "post,shading,lights,settings,gpu_ms_moving,gpu_ms_still,gpu_ms_per_pass\n";
     std::vector<const Row*> rows;
     for (const Row& r : w.rows) rows.push_back(&r);
     for (const Row& r : w.silhouette) rows.push_back(&r);
@@ -75,7 +75,8 @@ std::string csv(const Sweep& w) {
         }
         if (r.section == kLightsSection) o << r.shading << "," << r.lights << ",";
         else o << ",,";
-        o << "\"" << r.settings << "\"\n";
+        o << "\"" << r.settings << "\"," << (r.gpu_moving >= 0.0 ? fixed(r.gpu_moving, 3) : "") << ","
+          << (r.gpu_still >= 0.0 ? fixed(r.gpu_still, 3) : "") << ",\"" << r.gpu_passes << "\"\n";
     }
     return o.str();
 }
@@ -311,6 +312,42 @@ std::string volumes_against_map(const Sweep& w, const std::vector<const Row*>& a
     return o.str();
 }
 
+// ms/frame beside the GPU's time of the same frames (EXT_disjoint_timer_query), per technique over
+// the sweep's scene frames, and each pass's GPU time with the light moving (of the first scene
+// frame); a line saying why where no row has them.
+std::string gpu_table(const Sweep& w, const std::vector<const Row*>& all) {
+    std::ostringstream o;
+    o << "\n## GPU time per frame and per pass (GL_TIME_ELAPSED_EXT)\n\n";
+    if (std::none_of(all.begin(), all.end(), [](const Row* r) { return r->gpu_moving >= 0.0; })) {
+        o << "GPU timer: not available on this context (no EXT_disjoint_timer_query)" << (w.from_csv.empty() ? "" : " or not in the CSV")
+          << ".\n";
+        return o.str();
+    }
+    o << "GPU ms: the GPU's time of each pass (GL_TIME_ELAPSED_EXT around it) summed over the frame, per row the median "
+         "of the rounds' medians like ms/frame (the wall time to glFinish), here the mean over the scene frames. Per pass: "
+         "the light moving, "
+      << (all.empty() ? std::string() : "`" + all.front()->scene + "`") << ".\n\n"
+      << "| technique | map | ms/frame moving | GPU ms moving | ms/frame still | GPU ms still | GPU ms per pass (moving) |\n"
+      << "|---|---:|---:|---:|---:|---:|---|\n";
+    for (const Key& k : keys_in_order(all)) {
+        std::vector<double> wall_m, wall_s, gpu_m, gpu_s;
+        std::string passes;
+        for (const Row* r : all) {
+            if (r->technique != k.technique || r->map != k.map) continue;
+            wall_m.push_back(r->ms_moving), wall_s.push_back(r->ms_still);
+            if (r->gpu_moving >= 0.0) gpu_m.push_back(r->gpu_moving);
+            if (r->gpu_still >= 0.0) gpu_s.push_back(r->gpu_still);
+            if (passes.empty() && r->scene == all.front()->scene) passes = r->gpu_passes;
+        }
+        const auto mean = [](const std::vector<double>& v) {
+            return v.empty() ? std::string("-") : fixed(std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size()), 2);
+        };
+        o << "| " << k.technique << " | " << (k.map ? std::to_string(k.map) : "-") << " | " << mean(wall_m) << " | " << mean(gpu_m)
+          << " | " << mean(wall_s) << " | " << mean(gpu_s) << " | " << (passes.empty() ? "-" : passes) << " |\n";
+    }
+    return o.str();
+}
+
 std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& front) {
     std::ostringstream o;
     const auto all = select(w, [](const Row&) { return true; });
@@ -354,6 +391,7 @@ std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& fro
           << " | " << fixed(m.camera, 2) << " | " << bytes_str(m.bytes) << " | "
           << (on_front.count(k) ? "yes" : k.map || is_volumes(k.technique) ? "" : "ref.") << " |\n";
     }
+    o << gpu_table(w, all);
     o << volumes_against_map(w, all);
 
     // The course scene at the default map size: the closing note's figures.
@@ -561,6 +599,9 @@ void read_csv(Sweep& w, const std::string& path) {
         r.zpass_casters = static_cast<int>(num("zpass_casters", 0));
         r.zfail_casters = static_cast<int>(num("zfail_casters", 0));
         r.segments = static_cast<int>(num("segments", 0));
+        r.gpu_moving = num("gpu_ms_moving", -1.0);
+        r.gpu_still = num("gpu_ms_still", -1.0);
+        r.gpu_passes = get("gpu_ms_per_pass");
         if (get("section") == kSilhouetteSection) {
             r.section = kSilhouetteSection;
             w.silhouette.push_back(r);

@@ -77,8 +77,11 @@ void time_course_rows(const Sweep& w, render::Renderer& r, const render::FrameIn
     for (int round = 0; round < o.rounds; ++round) {
         r.load(still);
         for (PendingRow& p : pending) {
-            p.moving.push_back(time_frames(r, p.s, in, 2, o.frames, moving_at).median_ms);
-            p.still.push_back(time_frames(r, p.s, in, 1, o.frames, still_at).median_ms);
+            const Timing moving = time_frames(r, p.s, in, 2, o.frames, moving_at);
+            const Timing still_t = time_frames(r, p.s, in, 1, o.frames, still_at);
+            p.moving.push_back(moving.median_ms);
+            p.still.push_back(still_t.median_ms);
+            p.gpu.add(moving, still_t);
         }
         gl::check_errors(what);
     }
@@ -89,6 +92,7 @@ void time_course_rows(const Sweep& w, render::Renderer& r, const render::FrameIn
         row.ms_camera = row.ms_still;
         row.ms_shadow = row.map ? std::max(0.0, row.ms_moving - row.ms_still) : 0.0;
         row.frames = o.frames * o.rounds;
+        p.gpu.set(row);
         out.push_back(row);
     }
 }
@@ -173,7 +177,7 @@ void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in)
                 if (const render::PlannedResource* m = plan.resource("shadow-map")) row.bytes += m->desc.bytes();
                 std::fprintf(stderr, "post    %-12s %-14s %-22s (timed, not scored)\n", spec->label.c_str(),
                              row.technique.c_str(), set.post);
-                pending.push_back({row, s, {}, {}});
+                pending.push_back({row, s, {}, {}, {}});
                 continue;
             }
             const bool mirror = has(effects, "mirror"), portal = has(effects, "portal");
@@ -200,7 +204,7 @@ void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in)
                          spec->label.c_str(), row.technique.c_str(), effects, row.score.error_pct, row.region.error_pct,
                          row.region.valid);
             s.aov = render::Aov::Color;  // time the frame a user sees
-            pending.push_back({row, s, {}, {}});
+            pending.push_back({row, s, {}, {}, {}});
         }
     gl::check_errors("the effects' accuracy pass");
 

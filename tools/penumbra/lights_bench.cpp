@@ -86,7 +86,7 @@ void lights_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) 
             row.score = measure::score(red_channel(r.read_image()), truth.image.lit, valid);
             std::fprintf(stderr, "lights  %-12s %-9s %3d light(s): error %6.2f %%, targets %s\n", spec->label.c_str(),
                          row.shading.c_str(), n, row.score.error_pct, bytes_str(row.bytes).c_str());
-            pending.push_back({row, s, {}, {}});
+            pending.push_back({row, s, {}, {}, {}});
         }
     gl::check_errors("the lights' accuracy pass");
 

@@ -86,6 +86,7 @@ int run_render(const render::Options& o, bool verbose, const std::vector<std::st
     if (const std::string problem = r.check(src.at(job.time), o.settings, in); !problem.empty()) throw Failure{problem, 2};
 
     std::vector<double> ms;
+    r.gpu_timer().enable(verbose);  // -v: each pass's GPU time too, read after the last frame
     for (int i = 0; i < job.frames; ++i) {
         const double t = job.time + static_cast<double>(i) / 60.0;
         const auto start = std::chrono::steady_clock::now();
@@ -105,6 +106,10 @@ int run_render(const render::Options& o, bool verbose, const std::vector<std::st
         const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
         std::printf("%d frames, median %.3f ms/frame (min %.3f, max %.3f), each finished with glFinish; %s\n",
                     job.frames, median, sorted.front(), sorted.back(), render::to_args(o).c_str());
+    }
+    if (verbose) {
+        const auto gpu = r.gpu_timer().take(true);
+        std::printf("%s", gl::describe(gl::summarize(gpu), r.gpu_timer().available(), r.gpu_timer().discarded()).c_str());
     }
     if (!job.out.empty()) {
         write_image(r, o, job.out);
