@@ -1,24 +1,18 @@
 #include "measure/image_io.h"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <random>
+#include <cstddef>
 
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include "scene/file_write.h"
 #include "scene/printable.h"
 
 namespace penumbra::measure {
 
 namespace {
 void append(void* context, void* data, int size) {
-    auto* out = static_cast<std::vector<std::uint8_t>*>(context);
-    const auto* bytes = static_cast<const std::uint8_t*>(data);
-    out->insert(out->end(), bytes, bytes + size);
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
 }
 }  // namespace
 
@@ -27,36 +21,11 @@ std::string write_png(const std::string& path, const Pixels& px) {
     if (px.width <= 0 || px.height <= 0 || px.channels < 1 || px.channels > 4 ||
         px.data.size() < static_cast<size_t>(px.width) * static_cast<size_t>(px.height) * static_cast<size_t>(px.channels))
         return name + ": no image to write";
-    namespace fs = std::filesystem;
-    const fs::path target(path);
-    std::error_code ec;
-    if (target.has_parent_path() && !fs::is_directory(target.parent_path(), ec))
-        return name + ": folder " + scene::printable(target.parent_path().string()) + " does not exist";
-    if (fs::is_directory(target, ec)) return name + ": cannot write (" + std::strerror(EISDIR) + ")";
-    std::vector<std::uint8_t> encoded;
+    std::string encoded;
     if (!stbi_write_png_to_func(append, &encoded, px.width, px.height, px.channels, px.data.data(),
                                 px.width * px.channels))
         return name + ": could not encode PNG";
-    std::random_device rd;
-    const fs::path tmp = target.string() + ".tmp" + std::to_string(rd() % 1000000u);
-    {
-        std::ofstream f(tmp, std::ios::binary);
-        if (!f) return name + ": cannot write (" + std::strerror(errno) + ")";
-        f.write(reinterpret_cast<const char*>(encoded.data()), static_cast<std::streamsize>(encoded.size()));
-        f.close();
-        if (!f) {
-            const std::string why = std::strerror(errno);
-            fs::remove(tmp, ec);
-            return name + ": write failed (" + why + ")";
-        }
-    }
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        const std::string why = ec.message();
-        fs::remove(tmp, ec);
-        return name + ": cannot move the written file into place (" + why + ")";
-    }
-    return {};
+    return scene::write_file(path, encoded);
 }
 
 std::string read_png(const std::string& path, Pixels& out, int channels) {

@@ -14,9 +14,10 @@ struct Pixels {
     std::vector<std::uint8_t> data;  // top row first
 };
 
-// Encodes in memory, writes a temporary file beside `path` and renames it into place, so a
-// failure never leaves a partial file. Returns "" or one line naming the problem: the path through
-// scene::printable and the system's reason ("out.png: cannot write (Is a directory)").
+// Encodes in memory and writes it with scene::write_file (a temporary file beside `path`, every
+// write and the close checked, renamed into place), so a failure never leaves a partial file.
+// Returns "" or one line naming the problem: the path through scene::printable and the system's
+// reason ("out.png: cannot write (No space left on device)").
 std::string write_png(const std::string& path, const Pixels& px);
 
 // Reads a PNG as `channels` channels (0: as stored). Returns "" or the problem.

@@ -1,11 +1,8 @@
 #include "scene/gltf_writer.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <algorithm>
 #include <map>
 #include <stdexcept>
@@ -14,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <stb_image_write.h>  // implementation compiled in src/thirdparty/thirdparty_impl.cpp
 
+#include "scene/file_write.h"
 #include "scene/printable.h"
 
 namespace penumbra::scene {
@@ -350,24 +348,7 @@ std::string write_gltf(const std::string& path, const Scene& scene, const GltfWr
     std::string error;
     const std::string doc = to_gltf(scene, options, error);
     if (!error.empty()) return name + ": not written: " + error;
-    const std::string tmp = path + ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        if (!f) return name + ": cannot write (" + std::strerror(errno) + ")";
-        f << doc << "\n";
-        f.flush();
-        if (!f) {
-            const std::string why = std::strerror(errno);
-            std::remove(tmp.c_str());
-            return name + ": write failed (" + why + ")";
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        const std::string why = std::strerror(errno);
-        std::remove(tmp.c_str());
-        return name + ": cannot rename into place (" + why + ")";
-    }
-    return {};
+    return write_file(path, doc + "\n");
 }
 
 }  // namespace penumbra::scene

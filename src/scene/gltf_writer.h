@@ -28,8 +28,9 @@ std::string to_gltf(const Scene& scene, const GltfWriteOptions& options, std::st
 // The same; a refused value throws std::invalid_argument with the message.
 std::string to_gltf(const Scene& scene, const GltfWriteOptions& options = {});
 
-// Writes to_gltf(scene) to `path` through a temporary file renamed into place. Returns "" or one
-// line naming the problem (a refused value: nothing is written).
+// Writes to_gltf(scene) to `path` with write_file (a temporary file, every write and the close
+// checked, renamed into place). Returns "" or one line naming the problem (a refused value or a
+// failed write: nothing is written, no temporary file left).
 std::string write_gltf(const std::string& path, const Scene& scene, const GltfWriteOptions& options = {});
 
 }  // namespace penumbra::scene

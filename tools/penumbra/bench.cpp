@@ -413,8 +413,7 @@ void run_sweep(Sweep& w) {
         const auto valid = truth.valid_mask();
         const bool pictures = si == 0 || (spec.name == "teapot" && std::fabs(spec.time - 0.6) < 1e-9);
         if (pictures) {
-            std::error_code ec;
-            fs::create_directories(images, ec);
+            prepare_output_dir("--out-dir", images.string());  // created, or exit status 2 with the reason
             write_or_throw((images / (spec.label + "-truth.png")).string(), classes_image(truth));
         }
 

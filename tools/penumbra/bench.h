@@ -310,7 +310,7 @@ float default_light_radius(const scene::Scene& s);
 glm::mat4 renderer_view_proj(const scene::Scene& s, int width, int height);
 
 void write_or_throw(const std::string& path, const measure::Pixels& px);
-// Writes `text` whole through a temporary file, or throws CommandError (bench_report.cpp).
+// Writes `text` whole through a temporary file, or throws CommandError, exit status 2 (write_output).
 void write_text(const std::filesystem::path& path, const std::string& text);
 
 // The truth as a picture: lit white, shadowed black; pixels left out of the comparison in colour.

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "bench.h"
+#include "cli_options.h"
 #include "measure/metrics.h"
 #include "measure/score_columns.h"
 #include "plot.h"
@@ -26,17 +27,7 @@ namespace fs = std::filesystem;
 
 namespace penumbra::tools::bench {
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-    const fs::path tmp = path.string() + ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        f << text;
-        if (!f) throw CommandError{path.string() + ": cannot write", 1};
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) throw CommandError{path.string() + ": cannot write (" + ec.message() + ")", 1};
-}
+void write_text(const std::filesystem::path& path, const std::string& text) { write_output(path.string(), text); }
 
 namespace {
 

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -120,9 +119,7 @@ void write_chart(const std::string& path, const std::string& title, const std::v
         << "<text x='" << W - right + 40 << "' y='" << legend_end + 10
         << "'>solid/&#9679;: acne</text>\n<text x='" << W - right + 40 << "' y='" << legend_end + 24
         << "'>dashed/&#9633;: peter-panning</text>\n</svg>\n";
-    std::ofstream f(path);
-    f << svg.str();
-    if (!f) throw std::runtime_error(path + ": cannot write");
+    write_output(path, svg.str());
 }
 
 }  // namespace
@@ -190,7 +187,7 @@ int run_bias_sweep(const BiasSweepOptions& o) {
     // CSV: every measurement.
     const std::string csv_path = (fs::path(o.out_dir) / "bias_sweep.csv").string();
     {
-        std::ofstream csv(csv_path);
+        std::ostringstream csv;
         csv << "scene,elevation_deg,encoding,precision,filter,bias,bias_constant,valid_pixels,false_shadow_pct,"
                "false_lit_pct,error_pct\n";
         for (const auto& r : rows)
@@ -198,7 +195,7 @@ int run_bias_sweep(const BiasSweepOptions& o) {
                 << shadow::to_string(r.precision) << ",hard," << r.bias_label << "," << r.bias << "," << r.score.valid
                 << "," << fmt(r.score.false_shadow_pct) << "," << fmt(r.score.false_lit_pct) << ","
                 << fmt(r.score.error_pct) << "\n";
-        if (!csv) throw std::runtime_error(csv_path + ": cannot write");
+        write_output(csv_path, csv.str());
     }
 
     // Markdown: the fixed defaults against auto, per elevation.
@@ -210,7 +207,7 @@ int run_bias_sweep(const BiasSweepOptions& o) {
                    std::string(shadow::to_string(p)) + "|" + b;
         };
         for (const auto& r : rows) find[key(r.scene, r.elevation, r.encoding, r.precision, r.bias_label)] = &r;
-        std::ofstream md(md_path);
+        std::ostringstream md;
         md << "# Bias: the sheet's fixed defaults against --bias auto\n\n"
            << "Acne = false-shadow %, peter-panning = false-lit % of the valid pixels (ray-traced truth), hard filter, "
            << o.size << "x" << o.size << ", map " << o.map_size << ". Regenerate: `build/penumbra bias-sweep"
@@ -230,7 +227,7 @@ int run_bias_sweep(const BiasSweepOptions& o) {
                     }
             md << "\n";
         }
-        if (!md) throw std::runtime_error(md_path + ": cannot write");
+        write_output(md_path, md.str());
     }
 
     // One chart per scene, encoding and precision.

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "measure.h"
+#include "scene/file_write.h"
 #include "scene/printable.h"
 
 namespace fs = std::filesystem;
@@ -100,6 +101,10 @@ void prepare_output_dir(const std::string& option, const std::string& dir) {
     if (!fs::is_directory(dir, ec)) throw CommandError{what + "not a folder (" + reason(ENOTDIR) + ")", 2};
     if (const std::string why = try_create_in(dir, "penumbra"); !why.empty())
         throw CommandError{what + "cannot write in it (" + why + ")", 2};
+}
+
+void write_output(const std::string& path, std::string_view bytes) {
+    if (const std::string err = scene::write_file(path, bytes); !err.empty()) throw CommandError{err, 2};
 }
 
 std::string one_line(std::string_view m) {

@@ -51,6 +51,12 @@ void check_output_file(const std::string& option, const std::string& path, const
 // A folder the command will write into: created when missing, then tried as above.
 void prepare_output_dir(const std::string& option, const std::string& dir);
 
+// Writes `bytes` to `path` whole or not at all (scene::write_file: every write and the close
+// checked, a temporary file renamed into place); a failure throws CommandError (exit status 2)
+// naming the path and the system's reason. Every file the command line writes goes through it or
+// through measure::write_png / scene::write_gltf, which use the same writer.
+void write_output(const std::string& path, std::string_view bytes);
+
 // A message as one line of valid UTF-8: control characters and bytes that are not UTF-8 escaped
 // (\n, \xNN), the rest (backslashes too) left as it is: the last guard before stderr, after the
 // names in it went through scene::printable.

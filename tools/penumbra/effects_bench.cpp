@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bench.h"
+#include "cli_options.h"
 #include "gl/check.h"
 #include "measure/effect_truth.h"
 #include "measure/metrics.h"
@@ -138,8 +139,7 @@ void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in)
                      mirror ? " mirror" : "", portal ? " portal" : "", seconds_since(tt), class_summary(t.image).c_str(),
                      t.mirror_pixels, t.opening_pixels);
         if (mirror || portal) {
-            std::error_code ec;
-            fs::create_directories(images, ec);
+            prepare_output_dir("--out-dir", images.string());  // created, or exit status 2 with the reason
             write_or_throw((images / (spec->label + "-truth" + (mirror ? "-mirror" : "") + (portal ? "-portal" : "") + ".png")).string(),
                            classes_image(t.image));
         }

@@ -15,7 +15,6 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -166,7 +165,6 @@ int run_gallery(const std::string& dir, const render::Options& base, const std::
         rows.push_back({std::string(render::to_string(t)), o});
     }
 
-    std::ofstream html;
     const std::string index = (fs::path(dir) / "index.html").string();
     std::string body;
     size_t done = 0, written = 0;
@@ -197,9 +195,7 @@ int run_gallery(const std::string& dir, const render::Options& base, const std::
         "<h1>The course scene at t = " + std::to_string(base.job.time) + "</h1>\n<p>" + r.caps().renderer +
         "; hover an image for its exact settings.</p>\n<table><tr><th></th><th>colour</th><th>visibility</th>"
         "<th>light depth</th></tr>\n" + body + "</table>\n";
-    std::ofstream f(index);
-    f << page;
-    if (!f) throw Failure{scene::printable(index) + ": cannot write", 2};
+    tools::write_output(index, page);
     std::printf("wrote %zu images and %s\n", written, scene::printable(index).c_str());
     return 0;
 }
@@ -210,9 +206,7 @@ int run_shaders(const std::string& dir) {
     tools::prepare_output_dir("--out", dir);
     size_t n = 0;
     const auto write = [&](const std::string& file, const std::string& text) {
-        std::ofstream f(fs::path(dir) / file);
-        f << text;
-        if (!f) throw Failure{scene::printable(dir) + "/" + file + ": cannot write", 2};
+        tools::write_output((fs::path(dir) / file).string(), text);
         ++n;
     };
     // Each file as it is (no defines), then each variant; the extension tells the stage.

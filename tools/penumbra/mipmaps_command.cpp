@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <sstream>
 #include <vector>
@@ -219,14 +218,8 @@ int run_mipmaps(const MipmapsOptions& o) {
         page << "</tr>\n";
     }
     page << "</table>\n";
-    const auto write_text = [&](const std::string& name, const std::string& text) {
-        const std::string path = (fs::path(o.out_dir) / name).string();
-        std::ofstream f(path);
-        f << text;
-        if (!f) throw CommandError{scene::printable(path) + ": cannot write", 2};
-    };
-    write_text("index.html", page.str());
-    write_text("mipmaps.csv", csv.str());
+    write_output((fs::path(o.out_dir) / "index.html").string(), page.str());
+    write_output((fs::path(o.out_dir) / "mipmaps.csv").string(), csv.str());
     std::printf("wrote %d levels x 3 chains, index.html and mipmaps.csv to %s\n", levels, scene::printable(o.out_dir).c_str());
     return 0;
 }
