@@ -132,6 +132,15 @@ LoadResult load_gltf_memory(const std::string& name, const unsigned char* bytes,
         if (size > options.limits.max_file_bytes || size > 0xFFFFFFFFu)
             gltf_internal::fail("is " + std::to_string(size) + " bytes, over the limit of " +
                                 std::to_string(std::min<std::size_t>(options.limits.max_file_bytes, 0xFFFFFFFFu)));
+        if (ext == ".glb" && size >= 12 && std::memcmp(bytes, "glTF", 4) == 0) {
+            // tinygltf reads any header version as glTF 2.0's layout: a GLB 1 (KHR_binary_glTF,
+            // another layout and a glTF 1.0 document) would be misread, not refused.
+            std::uint32_t version = 0;
+            std::memcpy(&version, bytes + 4, 4);  // little-endian, as the machine
+            if (version != 2)
+                gltf_internal::fail("GLB header version is " + std::to_string(version) +
+                                    ": only version 2 (glTF 2.0) is read");
+        }
         gltf_internal::FileAccess files(base_dir, options);
         const auto [json_text, json_size] = json_chunk(ext, bytes, size);
         if (json_text) gltf_internal::validate_json(json_text, json_size, options.limits, files);

@@ -168,6 +168,15 @@ case("deep_nesting.glb", 2, "nested deeper than 64 levels",
 case("glb_traversal.glb", 2, "buffers[0].uri '../../../../../../../../etc/passwd' is outside the scene's folder",
      glb(spoil(lambda g: g["buffers"][0].update(uri="../../../../../../../../etc/passwd"))))
 
+# The GLB header's own version: 1 (KHR_binary_glTF's layout, a glTF 1.0 document) was read as 2.
+def glb_version(version, doc):
+    data = glb(doc)
+    return data[:4] + struct.pack("<I", version) + data[8:]
+
+
+case("glb_header_version_1.glb", 2, "GLB header version is 1: only version 2 (glTF 2.0) is read",
+     glb_version(1, triangle()))
+
 # A damaged texture costs the texture, not the scene (exit 0, a note).
 case("truncated_png.gltf", 0, "image 0 in",
      textured("data:image/png;base64," + base64.b64encode(png(32, 32)[:500]).decode()))
