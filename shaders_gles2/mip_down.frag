@@ -15,7 +15,7 @@ uniform vec2 u_texel;       // one texel of it: (1 / width, 1 / height)
 varying vec2 v_uv;
 
 // A texel's channels as bytes 0..255; a byte as a colour that a context that rounds and one that
-// truncates (PACK_FLOOR's case) both store as that byte.
+// truncates both store as that byte (pack.glsl's UNORM_OFFSET).
 vec4 byte_of(vec4 v) { return floor(v * 255.0 + 0.5); }
 vec4 stored(vec4 b) { return (b + 0.25) / 255.0; }
 

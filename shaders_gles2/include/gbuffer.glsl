@@ -5,8 +5,8 @@
 //   depth:  rgb where the surface lies on the pixel's ray between the near and far planes (0..1,
 //           24 bits, linear in the camera's depth), a 128 if it receives shadows + shininess / 2
 // Cleared to all ones: a depth of 255, 255, 255 is no surface (a surface's is at most 255, 255, 254).
-// Bytes are written as (byte + UNORM_OFFSET) / 255 (pack.glsl: exact whether the context rounds or
-// truncates) and read back as whole bytes; render/deferred.cpp's CPU mirror is the tests' reference.
+// Bytes are written as (byte + UNORM_OFFSET) / 255 (pack.glsl: the same byte whether the context
+// rounds or truncates) and read back as whole bytes; render/deferred.cpp's CPU mirror is the tests' reference.
 #include "pack.glsl"
 
 vec4 gbufferOut(vec4 bytes) { return (bytes + UNORM_OFFSET) / 255.0; }

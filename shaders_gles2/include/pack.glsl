@@ -1,18 +1,18 @@
 // Bit-shift packing of a depth in [0,1] into four unorm8 channels, most significant in red.
-// Byte i is floor(fract(d * 256^i) * 256), written as byte/255 so that the unorm8 conversion
-// (round(c * 255)) stores the byte exactly. Under float32 every step is exact, so the round trip
-// is exact to 2^-24; src/shadow/encoding.cpp mirrors this on the CPU for the tests.
+// Byte i is floor(fract(d * 256^i) * 256), written as (byte + 0.25)/255 so that every conversion
+// GLES allows stores the byte itself (UNORM_OFFSET below). Under float32 every step is exact (a
+// scale by a power of two, fract and floor lose nothing), so the bytes are the same on every
+// context and the round trip is exact to 2^-24; src/shadow/encoding.cpp mirrors this on the CPU.
 
 #ifndef PACK_GLSL
 #define PACK_GLSL 1  // included by shadow.glsl and gbuffer.glsl, both in lit.frag
 
-// PACK_FLOOR: the start-up probe found that this context truncates float -> unorm8 instead of
-// rounding; aim at the middle of each byte so the intended byte is stored either way.
-#ifdef PACK_FLOOR
-const float UNORM_OFFSET = 0.5;
-#else
-const float UNORM_OFFSET = 0.0;
-#endif
+// A byte b written as (b + UNORM_OFFSET)/255 reaches the store as b + 0.25 (give or take float32's
+// 1e-5 of a step): the nearest integer (GLES 2.0 2.1.2 asks for round(c * 255)), truncation, and
+// "either of the two closest" (ES 3.0 2.1.6.2) all give b, and so does a store that converts
+// with an error of up to a quarter step (NVIDIA's rounds 0.06 step off at the ties). Written as
+// b/255 instead, a context that truncates may store b - 1 where b/255 * 255 lands below b.
+const float UNORM_OFFSET = 0.25;
 
 #ifdef EMULATE_MEDIUMP
 const float MAX_PACKED_DEPTH = 0.99951171875;  // 1 - 2^-11: the largest half below 1
@@ -30,8 +30,10 @@ float unpackDepth(vec4 rgba) {
     return MP(dot(MP(rgba), MP(vec4(255.0 / 256.0, 255.0 / 65536.0, 255.0 / 16777216.0, 255.0 / 4294967296.0))));
 }
 
-// r8: the depth in red, aimed at the middle of the byte when the context truncates.
+// r8: the depth in red, rounded to its byte here rather than by the store (whose rounding near
+// the ties differs between contexts), then written as that byte.
 vec4 packDepthR8(float depth) {
-    return vec4(MP(MP(depth) + UNORM_OFFSET / 255.0), 0.0, 0.0, 1.0);
+    float byte = floor(MP(depth) * 255.0 + 0.5);
+    return vec4(MP((byte + UNORM_OFFSET) / 255.0), 0.0, 0.0, 1.0);
 }
 #endif  // PACK_GLSL

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <set>
 #include <string>
 
@@ -46,9 +47,12 @@ struct Caps {
     // yet (gl/caps.cpp says why).
     bool timer_query = false;
     int timer_bits = 0;
-    // The context truncates float colours to unorm8 instead of rounding them: found by the
-    // renderer's probe (render/renderer.h), not by probe_caps; the packing shaders aim at the
-    // middle of the byte when it is set (PACK_FLOOR).
+    // How the context turns float colours into unorm8: the bytes it stored for 0.6/255,
+    // 128.6/255 and 254.6/255 (1, 129, 255 when it rounds; 0, 128, 254 when it truncates;
+    // GLES 3.0 2.1.6.2 allows either of the two closest), found by the renderer's probe
+    // (render/renderer.h), not by probe_caps. unorm_floor: all three truncated. Informative only:
+    // the packing shaders write bytes that any of these stores keeps (pack.glsl's UNORM_OFFSET).
+    std::array<int, 3> unorm_probe{-1, -1, -1};
     bool unorm_floor = false;
 
     // The stencil bits a frame's uses share (render::StencilUse): the packed depth-stencil

@@ -241,7 +241,7 @@ struct Planning {
             (blend ? ctx.translucent : ctx.drawable).push_back(static_cast<int>(i));
             if (casts(scene, o, s.blend_shadows)) ctx.casters.push_back(static_cast<int>(i));
         }
-        ctx.depth_path = {s.precision == shadow::Precision::Mediump, caps.unorm_floor};
+        ctx.depth_path = {s.precision == shadow::Precision::Mediump};
         if (s.light_radius) ctx.light.radius = *s.light_radius;
         plan.camera = camera_view(scene, in);
         // The mirror and the portal show surfaces: in the visibility AOV, the visibility of the surface

@@ -51,12 +51,17 @@ void Renderer::probe_unorm_rounding() {
     probe.passes.push_back(p);
     run(scene::Scene{}, probe);
     const auto px = read_image(d.name);
-    const bool rounds = px[0] == 1 && px[1] == 129 && px[2] == 255;
-    const bool floors = px[0] == 0 && px[1] == 128 && px[2] == 254;
-    if (!rounds && !floors)
-        throw gl::Error("unorm8 probe: the context stored 0.6/255, 128.6/255, 254.6/255 as " + std::to_string(px[0]) +
-                        ", " + std::to_string(px[1]) + ", " + std::to_string(px[2]) + ": neither rounding nor truncation");
-    caps_.unorm_floor = floors;
+    caps_.unorm_probe = {px[0], px[1], px[2]};
+    caps_.unorm_floor = px[0] == 0 && px[1] == 128 && px[2] == 254;
+}
+
+std::string Renderer::unorm_report() const {
+    const auto& b = caps_.unorm_probe;
+    const bool rounds = b[0] == 1 && b[1] == 129 && b[2] == 255;
+    const std::string kind = rounds ? "round" : caps_.unorm_floor ? "floor" : "mixed (either closest byte)";
+    return "float -> unorm8 conversion: " + kind + " (probed: 0.6/255, 128.6/255, 254.6/255 stored as " +
+           std::to_string(b[0]) + ", " + std::to_string(b[1]) + ", " + std::to_string(b[2]) +
+           "; the packing stores the same bytes under each)";
 }
 
 std::string Renderer::check(const scene::Scene& scene, const Settings& s, const FrameInputs& in) const {

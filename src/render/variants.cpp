@@ -140,7 +140,6 @@ void add_alpha(Variant& v, AlphaTest alpha) {
 Variant depth_variant(shadow::Encoding e, const DepthPath& path, AlphaTest alpha) {
     Variant v{"depth.vert", "depth.frag", {encoding_define(e)}};
     if (path.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
-    if (path.pack_floor) v.defines.emplace_back("PACK_FLOOR");
     add_alpha(v, alpha);
     return v;
 }
@@ -216,7 +215,6 @@ Variant gbuffer_view_variant(Aov aov) {
 Variant ramp_variant(shadow::Encoding e, const DepthPath& path) {
     Variant v{"light_depth.vert", "ramp.frag", {encoding_define(e)}};
     if (path.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
-    if (path.pack_floor) v.defines.emplace_back("PACK_FLOOR");
     return v;
 }
 
@@ -285,13 +283,11 @@ std::vector<Variant> all_variants() {
         }
     for (auto e : shadow::kAllEncodings)
         for (bool mediump : {false, true}) {
-            for (bool pack_floor : {false, true}) {
-                out.push_back(depth_variant(e, {mediump, pack_floor}));
-                for (bool textured : {false, true}) out.push_back(depth_variant(e, {mediump, pack_floor}, {true, textured}));
-                if (e != shadow::Encoding::DepthTex) out.push_back(ramp_variant(e, {mediump, pack_floor}));
-            }
-            out.push_back(light_depth_variant(e, false, {mediump, false}));
-            out.push_back(light_depth_variant(e, true, {mediump, false}));
+            out.push_back(depth_variant(e, {mediump}));
+            for (bool textured : {false, true}) out.push_back(depth_variant(e, {mediump}, {true, textured}));
+            if (e != shadow::Encoding::DepthTex) out.push_back(ramp_variant(e, {mediump}));
+            out.push_back(light_depth_variant(e, false, {mediump}));
+            out.push_back(light_depth_variant(e, true, {mediump}));
         }
     out.push_back(probe_variant());
     out.push_back(volume_variant());

@@ -86,11 +86,10 @@ struct AlphaTest {
     bool textured = false;
 };
 
-// How the depth path is compiled on this context: the emulated precision and what the unorm8
-// probe found (PACK_FLOOR when the context truncates).
+// How the depth path is compiled: in emulated mediump or not. (The packing is the same on every
+// context: pack.glsl writes bytes that any unorm8 conversion keeps.)
 struct DepthPath {
     bool mediump = false;
-    bool pack_floor = false;
 };
 
 Variant lit_variant(const LitFeatures& f);

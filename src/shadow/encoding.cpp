@@ -52,19 +52,20 @@ namespace {
 
 float mp(float x, const PackContext& c) { return c.precision == Precision::Mediump ? round_mediump(x) : x; }
 
-// GLES 2.0 section 2.1.2: a float written to a normalized fixed-point channel becomes
-// round(clamp(c,0,1) * 255); an implementation that truncates gives floor instead.
-std::uint8_t to_unorm8(float v, UnormRounding r) {
+// pack.glsl's UNORM_OFFSET: a byte b is written as (b + 0.25) / 255.
+constexpr float kUnormOffset = 0.25f;
+
+}  // namespace
+
+std::uint8_t store_unorm8(float v, UnormRounding r) {
     const float x = std::clamp(v, 0.0f, 1.0f) * 255.0f;
     return static_cast<std::uint8_t>(r == UnormRounding::Round ? std::lround(x) : static_cast<long>(std::floor(x)));
 }
 
-float unorm_offset(const PackContext& c) { return c.rounding == UnormRounding::Floor ? 0.5f : 0.0f; }
-
-}  // namespace
+float r8_byte(float depth, PackContext c) { return std::floor(mp(depth, c) * 255.0f + 0.5f); }
 
 std::uint8_t pack_r8(float depth, PackContext c) {
-    return to_unorm8(mp(mp(depth, c) + unorm_offset(c) / 255.0f, c), c.rounding);
+    return store_unorm8(mp((r8_byte(depth, c) + kUnormOffset) / 255.0f, c), c.rounding);
 }
 
 float unpack_r8(std::uint8_t byte, PackContext c) { return mp(static_cast<float>(byte) / 255.0f, c); }
@@ -78,7 +79,7 @@ std::array<std::uint8_t, 4> pack_rgba(float depth, PackContext c) {
         const float scaled = mp(d * shift[i], c);        // exact under highp: a power-of-two scale
         const float e = mp(scaled - std::floor(scaled), c);  // fract
         const float byte = std::floor(e * 256.0f);       // exact
-        out[static_cast<size_t>(i)] = to_unorm8(mp((byte + unorm_offset(c)) / 255.0f, c), c.rounding);
+        out[static_cast<size_t>(i)] = store_unorm8(mp((byte + kUnormOffset) / 255.0f, c), c.rounding);
     }
     return out;
 }

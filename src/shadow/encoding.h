@@ -54,11 +54,17 @@ inline constexpr float kMaxPackedDepthMediump = 0.99951171875f;
 enum class Precision { Highp, Mediump };
 std::string_view to_string(Precision p);
 
-// How the context turns a float colour into a unorm8 byte: GLES 2.0 asks for round(c * 255), but
-// an implementation may truncate. Probed at start-up (render/probe.h); the packing aims at the
-// middle of the byte (+0.5/255) when it truncates, so the stored byte is the intended one either way.
+// How a context may turn a float colour into a unorm8 byte: GLES 2.0 (2.1.2) asks for
+// round(c * 255), ES 3.0 (2.1.6.2) allows either of the two closest integers, and some
+// implementations truncate. The packing does not depend on it: every byte is written as
+// (byte + 0.25) / 255 (pack.glsl's UNORM_OFFSET), which each of these stores keeps as that byte.
+// The renderer still probes what its context does (`penumbra caps` prints it), and the CPU mirror
+// takes the store as a parameter so the tests can show the bytes are the same under both.
 enum class UnormRounding { Round, Floor };
 std::string_view to_string(UnormRounding r);
+
+// What a store of this kind keeps of the colour v: round(clamp(v) * 255) or floor(clamp(v) * 255).
+std::uint8_t store_unorm8(float v, UnormRounding r);
 
 struct PackContext {
     Precision precision = Precision::Highp;
@@ -69,12 +75,15 @@ struct PackContext {
 // ties away from zero; magnitudes below 2^-14 (fp16's smallest normal) flush to 0; clamp at 65504.
 float round_mediump(float x);
 
-// r8: what a unorm8 red channel stores for d, and what the shader reads back.
+// r8: the byte the shader rounds d to (floor(d * 255 + 0.5), in float32; not left to the
+// store, whose rounding at the ties differs between contexts), what a unorm8 red channel
+// stores for d, and what the shader reads back.
+float r8_byte(float depth, PackContext c = {});
 std::uint8_t pack_r8(float depth, PackContext c = {});
 float unpack_r8(std::uint8_t byte, PackContext c = {});
 
 // rgba bit-shift packing: byte i = floor(fract(d * 256^i) * 256), i = 0 most significant,
-// written as byte/255 so the unorm8 conversion keeps it exactly; unpacked as
+// written as (byte + 0.25)/255 so any unorm8 conversion keeps it exactly; unpacked as
 // dot(texel, 255 / 256^(i+1)). Exact to 2^-24 for every d in [0,1] under float32; under
 // mediump every step is rounded as the shader's emulation rounds it.
 std::array<std::uint8_t, 4> pack_rgba(float depth, PackContext c = {});

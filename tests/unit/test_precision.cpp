@@ -1,6 +1,6 @@
 // The precision model (docs/precision.md), checked exhaustively on the CPU mirror of the shaders:
 // every one of the 2^24 depths through pack and unpack, under highp and emulated mediump, with a
-// context that rounds and one that truncates float -> unorm8.
+// context that rounds and one that truncates float -> unorm8 (the same bytes either way).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -83,18 +83,51 @@ TEST(Precision, R8IsBoundedByHalfAStep) {
         }
 }
 
-TEST(Precision, TruncatingContextWithoutTheOffsetWouldLoseAByte) {
-    // The reason for PACK_FLOOR: byte/255 * 255 can land just below the byte, and a context that
-    // truncates stores the byte below. With the +0.5 offset every byte survives.
-    int lost_without = 0;
-    for (int b = 0; b < 256; ++b) {
-        const float stored = static_cast<float>(b) / 255.0f * 255.0f;
-        lost_without += static_cast<int>(std::floor(stored)) != b;
-        const float with = (static_cast<float>(b) + 0.5f) / 255.0f * 255.0f;
-        EXPECT_EQ(static_cast<int>(std::floor(with)), b);
+TEST(Precision, EveryStoreKeepsTheSameBytes) {
+    // The packing does not depend on how the context converts float -> unorm8: for every 24-bit
+    // depth, a store that rounds and one that truncates keep the same bytes (rgba and r8, highp
+    // and mediump).
+    for (auto p : {Precision::Highp, Precision::Mediump}) {
+        const PackContext round{p, UnormRounding::Round}, floor{p, UnormRounding::Floor};
+        std::uint32_t differ = 0;
+        for (std::uint32_t i = 0; i < (1u << 24); ++i) {
+            const float d = static_cast<float>(i) * kQ24;
+            differ += pack_rgba(d, round) != pack_rgba(d, floor);
+            differ += pack_r8(d, round) != pack_r8(d, floor);
+        }
+        EXPECT_EQ(differ, 0u) << to_string(p);
     }
-    // On float32 some bytes do survive by luck; the offset makes all of them safe. Count for the record.
-    RecordProperty("bytes_lost_without_offset", lost_without);
+}
+
+TEST(Precision, EveryByteReachesTheStoreAQuarterIntoItsStep) {
+    // Why any conversion keeps it: byte b is written as (b + 0.25)/255, which reaches the store as
+    // b + 0.25 within float32's rounding (mediump's: 2^-12 of 255, 0.06 of a step), a quarter step
+    // from both the tie (b + 0.5, where rounding could go up) and the byte below (where truncation
+    // would go). A store whose conversion is off by less than 0.1 step (NVIDIA's rounding is about
+    // 0.06 off at the ties) keeps every byte.
+    for (int b = 0; b < 256; ++b) {
+        const float written = (static_cast<float>(b) + 0.25f) / 255.0f;
+        for (float v : {written, round_mediump(written)}) {
+            const float at = v * 255.0f - static_cast<float>(b);
+            EXPECT_GE(at, 0.15f) << b;
+            EXPECT_LE(at, 0.35f) << b;
+        }
+    }
+}
+
+TEST(Precision, ControlTruncatingByteOver255LosesBytes) {
+    // The control: written as b/255 (no offset) by a shader whose output is a half (mediump), the
+    // colour reaches the store below b for about half of the bytes, and a store that truncates
+    // keeps b - 1 there (one that rounds keeps b). Without the offset the tests above would fail.
+    int lost = 0, lost_rounding = 0;
+    for (int b = 0; b < 256; ++b) {
+        const float stored = round_mediump(static_cast<float>(b) / 255.0f) * 255.0f;
+        lost += static_cast<int>(std::floor(stored)) != b;
+        lost_rounding += static_cast<int>(std::lround(stored)) != b;
+    }
+    EXPECT_GT(lost, 64);
+    EXPECT_EQ(lost_rounding, 0);
+    RecordProperty("bytes_lost_without_offset", lost);
 }
 
 TEST(Precision, QuantaAndAutoBiasConstants) {

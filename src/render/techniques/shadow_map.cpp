@@ -163,7 +163,6 @@ void add_packing(ContentKey& key, const PlanContext& c) {
     key.add(c.settings.encoding);
     key.add(c.settings.map_faces);
     key.add(c.depth_path.mediump);
-    key.add(c.depth_path.pack_floor);
 }
 
 // --cascades N > 1 or auto (0): how many this frame has and why; c.plan.cascades_why says it.
