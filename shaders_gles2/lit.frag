@@ -227,6 +227,10 @@ void main() {
 #ifdef ALPHA_BLEND
     gl_FragColor.a = alpha;
 #endif
+    // What an RGBA8 target keeps (GLES 2.0 3.8.2 clamps the colour to [0,1] before blending and
+    // storing), made explicit: the mirror's share below is of the colour seen, and Mesa softpipe,
+    // which blends over the unclamped colour an earlier pass left in its tile cache, agrees.
+    gl_FragColor = clamp(gl_FragColor, 0.0, 1.0);
 #ifdef REFLECTED
     gl_FragColor = vec4(gl_FragColor.rgb * u_reflectivity, u_reflectivity);
 #endif
