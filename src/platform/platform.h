@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace penumbra::platform {
 
@@ -48,6 +49,9 @@ public:
     virtual ~Platform() = default;
     // One line: API, version, renderer.
     virtual std::string description() const = 0;
+    // More lines naming the implementation, for `penumbra caps` (headless EGL: its vendor, version,
+    // client APIs and the display's device); empty where there is nothing more.
+    virtual std::string details() const { return {}; }
     // Which API the context speaks (the gl layer's capability probe needs it).
     virtual Api api() const = 0;
     // An extension's entry point in this context ("glDrawBuffersEXT"), or null: the gl layer looks
@@ -81,8 +85,27 @@ public:
 };
 
 // A GLES 2 context on EGL's surfaceless platform (no X server, no GPU needed), made current on
-// this thread. Returns null and sets `error` to one line naming the failing EGL call when it fails.
+// this thread; or, when an EGL device is chosen (below), on that device through
+// EGL_PLATFORM_DEVICE_EXT. Returns null and sets `error` to one line naming the failing EGL call
+// (or the bad choice) when it fails.
 std::unique_ptr<Platform> create_headless(std::string& error);
+
+// The EGL devices (EGL_EXT_device_enumeration) in eglQueryDevicesEXT's order, each with a name
+// (its DRM node, renderer, CUDA index or "software" where EGL says); `error` is set, and the list
+// empty, where EGL cannot enumerate them.
+struct EglDevice {
+    int index = 0;
+    std::string name;
+};
+std::vector<EglDevice> egl_devices(std::string& error);
+// Chooses the device create_headless uses from now on: `value` is an index into egl_devices(),
+// given by `source` ("--egl-device", "PENUMBRA_EGL_DEVICE"; named in the message). Returns "" or
+// one line naming the problem (not an index, or out of range: how many devices there are); the
+// default is kept then. Until it is called, create_headless reads PENUMBRA_EGL_DEVICE (when set
+// and not empty) the first time; unset, the default: the surfaceless Mesa platform.
+std::string choose_egl_device(const std::string& value, const std::string& source);
+// The index in use, or -1 for the default.
+int chosen_egl_device();
 
 // A desktop window (GLFW) with a GLES 2 context made through EGL, a depth and a stencil buffer,
 // made current on this thread; run() polls events, calls back and swaps until the callback

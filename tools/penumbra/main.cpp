@@ -31,6 +31,7 @@
 #include "bias_sweep.h"
 #endif
 #include "cli_options.h"
+#include "egl_device.h"
 #include "measure/image_io.h"
 #include "render/options.h"
 #include "render/renderer.h"
@@ -225,6 +226,7 @@ int run_shaders(const std::string& dir) {
 int run_caps() {
     auto ctx = make_context();
     std::printf("%s\n%s\n", ctx->description().c_str(), gl::probe_caps(*ctx).summary().c_str());
+    tools::print_implementation(*ctx, gl::probe_caps(*ctx));
     return 0;
 }
 
@@ -297,6 +299,9 @@ int run(int argc, char** argv) {
     sweep_cmd->add_option("--map-size", sweep.map_size, "shadow map size (default 1024)")->check(CLI::Range(16, 8192));
 #endif
 
+    // --egl-device N on every command that opens a context.
+    const tools::EglDeviceOption egl_device(app, {"shaders", "export"});
+
     // The first word must be a subcommand: CLI11 would call an unknown one a missing one.
     std::string subcommands;
     bool known = false;
@@ -325,6 +330,12 @@ int run(int argc, char** argv) {
         return 2;
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "penumbra: error: %s (see penumbra --help)\n", tools::one_line(e.what()).c_str());
+        return 2;
+    }
+
+    // A chosen EGL device (or PENUMBRA_EGL_DEVICE's) is checked before any work: a bad one is bad input.
+    if (const std::string problem = egl_device.apply(); !problem.empty()) {
+        std::fprintf(stderr, "penumbra: error: %s\n", tools::one_line(problem).c_str());
         return 2;
     }
 
