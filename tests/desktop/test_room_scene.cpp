@@ -6,6 +6,7 @@
 
 #include "scene/gltf_loader.h"
 #include "scene/room_scene.h"
+#include "../test_paths.h"
 #include "scene_match.h"
 
 #ifndef PENUMBRA_TEST_DATA
@@ -17,7 +18,7 @@ namespace {
 using penumbra::scene::Scene;
 
 TEST(RoomScene, MatchesTheGltfFile) {
-    const auto loaded = penumbra::scene::load_gltf(std::string(PENUMBRA_TEST_DATA) + "/bulb_room.gltf");
+    const auto loaded = penumbra::scene::load_gltf(penumbra::test::test_data_dir() + "/bulb_room.gltf");
     ASSERT_TRUE(loaded.ok) << loaded.error;
     const Scene made = penumbra::scene::make_bulb_room_scene();
     // Six panels, four objects on the floor, four on stands and two hanging (each with its stand or rod).

@@ -8,6 +8,7 @@
 
 #include "scene/gltf_loader.h"
 #include "scene/terrain_scene.h"
+#include "../test_paths.h"
 #include "scene_match.h"
 
 #ifndef PENUMBRA_TEST_DATA
@@ -19,7 +20,7 @@ namespace {
 using penumbra::scene::Scene;
 
 TEST(TerrainScene, MatchesTheGltfFile) {
-    const auto loaded = penumbra::scene::load_gltf(std::string(PENUMBRA_TEST_DATA) + "/terrain_km.gltf");
+    const auto loaded = penumbra::scene::load_gltf(penumbra::test::test_data_dir() + "/terrain_km.gltf");
     ASSERT_TRUE(loaded.ok) << loaded.error;
     const Scene made = penumbra::scene::make_terrain_km_scene();
     ASSERT_EQ(made.objects.size(), 361u);  // the terrain and 360 objects

@@ -18,7 +18,7 @@ namespace {
 constexpr int kSize = 256;
 
 scene::Scene alpha_scene() {
-    const scene::LoadResult r = scene::load_gltf(std::string(PENUMBRA_TEST_DATA) + "/alpha_cutouts.gltf");
+    const scene::LoadResult r = scene::load_gltf(test::test_data_dir() + "/alpha_cutouts.gltf");
     EXPECT_TRUE(r.ok) << r.error;
     return r.scene;
 }

@@ -29,7 +29,7 @@ constexpr int kSize = 512;
 const std::vector<double> kBands = {0.0, 10.0, 20.0, 50.0, 1e9};
 
 scene::Scene terrain() {
-    const scene::LoadResult r = scene::load_gltf(std::string(PENUMBRA_TEST_DATA) + "/terrain_km.gltf");
+    const scene::LoadResult r = scene::load_gltf(test::test_data_dir() + "/terrain_km.gltf");
     EXPECT_TRUE(r.ok) << r.error;
     return r.scene;
 }

@@ -27,7 +27,7 @@ constexpr int kSize = 512;
 constexpr double kGoalPct = 0.5;
 
 scene::Scene room() {
-    const scene::LoadResult r = scene::load_gltf(std::string(PENUMBRA_TEST_DATA) + "/bulb_room.gltf");
+    const scene::LoadResult r = scene::load_gltf(test::test_data_dir() + "/bulb_room.gltf");
     EXPECT_TRUE(r.ok) << r.error;
     return r.scene;
 }

@@ -177,7 +177,7 @@ TEST_F(Volumes, TheBenchScenesAreExact) {
     const std::pair<const char*, double> scenes[] = {{"bench_easy", kExact},  {"bench_medium", kExact}, {"bench_hard", 0.5},
                                                      {"bench_curved", kExact}, {"sphere_over_plane", kExact}};
     for (const auto& [name, bound] : scenes) {
-        const scene::LoadResult l = scene::load_gltf(std::string(PENUMBRA_TEST_DATA) + "/" + name + ".gltf");
+        const scene::LoadResult l = scene::load_gltf(test::test_data_dir() + "/" + name + ".gltf");
         ASSERT_TRUE(l.ok) << l.error;
         const Result r = run(l.scene, "auto", name);
         EXPECT_LE(r.score.error_pct, bound) << name;

@@ -46,8 +46,8 @@ ImageDiff compare(const measure::Pixels& a, const measure::Pixels& b) {
 void expect_matches_golden(const std::string& name, const measure::Pixels& actual, int max_threshold,
                            double mean_threshold) {
     namespace fs = std::filesystem;
-    const std::string golden_path = std::string(PENUMBRA_GOLDEN_DIR) + "/" + name + ".png";
-    const fs::path out_dir = fs::path(PENUMBRA_TEST_OUT) / "golden";
+    const std::string golden_path = golden_dir() + "/" + name + ".png";
+    const fs::path out_dir = fs::path(test_out_dir()) / "golden";
     fs::create_directories(out_dir);
     const std::string actual_path = (out_dir / (name + ".actual.png")).string();
     const std::string diff_path = (out_dir / (name + ".diff.png")).string();

@@ -15,6 +15,7 @@
 #include "measure/image_io.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
+#include "../test_paths.h"
 
 namespace penumbra::test {
 

@@ -270,7 +270,7 @@ TEST_F(RendererGl, GltfSceneRendersWithAShadow) {
     scene::SceneSource src;
     std::string error;
     std::vector<std::string> warnings;
-    ASSERT_TRUE(src.open(std::string(PENUMBRA_TEST_DATA) + "/sphere_over_plane.gltf", error, warnings)) << error;
+    ASSERT_TRUE(src.open(test::test_data_dir() + "/sphere_over_plane.gltf", error, warnings)) << error;
     render::Settings s;
     s.aov = render::Aov::Visibility;
     const auto& plan = renderer->render(src.at(0.0), s, render::offscreen(128, 128));

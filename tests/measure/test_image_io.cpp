@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "measure/image_io.h"
+#include "../test_paths.h"
 
 using namespace penumbra::measure;
 namespace fs = std::filesystem;
@@ -14,7 +15,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path out_dir() {
-    const fs::path d = fs::path(PENUMBRA_TEST_OUT) / "measure";
+    const fs::path d = fs::path(penumbra::test::test_out_dir()) / "measure";
     fs::create_directories(d);
     return d;
 }

@@ -21,6 +21,7 @@
 #include "render/plan.h"
 #include "scene/gltf_loader.h"
 #include "scene/gltf_writer.h"
+#include "../test_paths.h"
 
 using namespace penumbra;
 using scene::AlphaMode;
@@ -28,7 +29,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kScene = std::string(PENUMBRA_TEST_DATA) + "/alpha_cutouts.gltf";
+const std::string kScene = test::test_data_dir() + "/alpha_cutouts.gltf";
 
 scene::Scene load() {
     const scene::LoadResult r = scene::load_gltf(kScene);
@@ -79,7 +80,7 @@ std::string load_error(const std::string& material_json) {
     std::string text = doc.dump();
     if (big != std::string::npos) text.replace(text.find("987654321"), 9, "1e400");
     const scene::LoadResult r = scene::load_gltf_memory(
-        "m.gltf", reinterpret_cast<const unsigned char*>(text.data()), text.size(), PENUMBRA_TEST_DATA);
+        "m.gltf", reinterpret_cast<const unsigned char*>(text.data()), text.size(), test::test_data_dir());
     return r.ok ? "" : r.error;
 }
 

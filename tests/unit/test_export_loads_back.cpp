@@ -17,6 +17,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/gltf_writer.h"
 #include "scene/printable.h"
+#include "../test_paths.h"
 
 using namespace penumbra::scene;
 namespace fs = std::filesystem;
@@ -68,7 +69,7 @@ TEST(ExportLoadsBack, TheCourseSceneAtManyTimes) {
 
 TEST(ExportLoadsBack, EveryGoodFileOfTheTestData) {
     size_t files = 0;
-    for (const auto& entry : fs::directory_iterator(PENUMBRA_TEST_DATA)) {
+    for (const auto& entry : fs::directory_iterator(penumbra::test::test_data_dir())) {
         const fs::path p = entry.path();
         const std::string name = p.filename().string();
         if (name.rfind("bad_", 0) == 0 || (p.extension() != ".gltf" && p.extension() != ".glb")) continue;

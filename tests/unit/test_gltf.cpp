@@ -14,12 +14,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/gltf_loader.h"
+#include "../test_paths.h"
 
 using namespace penumbra::scene;
 
 namespace {
 
-std::string data(const std::string& name) { return std::string(PENUMBRA_TEST_DATA) + "/" + name; }
+std::string data(const std::string& name) { return penumbra::test::test_data_dir() + "/" + name; }
 
 LoadResult load_ok(const std::string& name) {
     LoadResult r = load_gltf(data(name));

@@ -16,13 +16,14 @@
 
 #include "scene/gltf_loader.h"
 #include "scene/printable.h"
+#include "../test_paths.h"
 
 namespace fs = std::filesystem;
 using namespace penumbra::scene;
 
 namespace {
 
-std::string data(const std::string& name) { return std::string(PENUMBRA_TEST_DATA) + "/" + name; }
+std::string data(const std::string& name) { return penumbra::test::test_data_dir() + "/" + name; }
 
 std::string read(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
