@@ -1,5 +1,7 @@
 #include "gl/objects.h"
 
+#include <algorithm>
+#include <map>
 #include <vector>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -276,6 +278,21 @@ GLuint compile(GLenum stage, const std::string& source, const std::string& label
     return s;
 }
 
+// Every program's attributes at the same locations, bound before linking.
+void bind_attributes(GLuint p) {
+    glBindAttribLocation(p, kPosition, "a_position");
+    glBindAttribLocation(p, kNormal, "a_normal");
+    glBindAttribLocation(p, kUV, "a_uv");
+}
+
+std::string program_log(GLuint p) {
+    GLint len = 0;
+    glGetProgramiv(p, GL_INFO_LOG_LENGTH, &len);
+    std::vector<char> log(static_cast<size_t>(len > 1 ? len : 1), '\0');
+    glGetProgramInfoLog(p, isize(log.size()), nullptr, log.data());
+    return log.data();
+}
+
 }  // namespace
 
 Program::Program(const std::string& vs, const std::string& fs, const std::string& label) : label_(label) {
@@ -295,23 +312,87 @@ Program::Program(const std::string& vs, const std::string& fs, const std::string
     h_ = Handle<ProgramDeleter>(p);
     glAttachShader(p, v);
     glAttachShader(p, f);
-    glBindAttribLocation(p, kPosition, "a_position");
-    glBindAttribLocation(p, kNormal, "a_normal");
-    glBindAttribLocation(p, kUV, "a_uv");
+    bind_attributes(p);
     glLinkProgram(p);
     // The program keeps its compiled code; the shader objects can go now.
     glDeleteShader(v);
     glDeleteShader(f);
     GLint ok = GL_FALSE;
     glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        GLint len = 0;
-        glGetProgramiv(p, GL_INFO_LOG_LENGTH, &len);
-        std::vector<char> log(static_cast<size_t>(len > 1 ? len : 1), '\0');
-        glGetProgramInfoLog(p, isize(log.size()), nullptr, log.data());
-        throw Error(label + ": program failed to link: " + log.data());
-    }
+    if (ok != GL_TRUE) throw Error(label + ": program failed to link: " + program_log(p));
     check_errors(label.c_str(), __FILE__, __LINE__);
+}
+
+// MAX_SHADER_COMPILER_THREADS_KHR is left as it is: its initial value, 0xFFFFFFFF, lets the
+// driver use as many threads as it likes (NVIDIA compiles in parallel; llvmpipe one at a time).
+std::vector<std::string> check_programs(const std::vector<ProgramSources>& programs, std::size_t batch) {
+    // One shader object per distinct (stage, source), and the last program that uses it.
+    struct Shader {
+        GLuint id = 0;
+        std::size_t last_use = 0;
+        bool checked = false;
+        std::string error;  // "vertex shader failed to compile: LOG"
+    };
+    std::map<std::pair<GLenum, std::string>, Shader> shaders;
+    for (std::size_t i = 0; i < programs.size(); ++i) {
+        shaders[{GL_VERTEX_SHADER, programs[i].vertex}].last_use = i;
+        shaders[{GL_FRAGMENT_SHADER, programs[i].fragment}].last_use = i;
+    }
+    const auto shader = [&](GLenum stage, const std::string& source) -> Shader& {
+        Shader& sh = shaders[{stage, source}];
+        if (sh.id == 0) {  // issued now, its status read after the batch's links are issued
+            sh.id = glCreateShader(stage);
+            const char* text = source.c_str();
+            glShaderSource(sh.id, 1, &text, nullptr);
+            glCompileShader(sh.id);
+        }
+        return sh;
+    };
+    const auto compiled = [](GLenum stage, Shader& sh) {
+        if (!sh.checked) {
+            GLint ok = GL_FALSE;
+            glGetShaderiv(sh.id, GL_COMPILE_STATUS, &ok);
+            if (ok != GL_TRUE)
+                sh.error = std::string(stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+                           " shader failed to compile: " + shader_log(sh.id);
+            sh.checked = true;
+        }
+        return sh.error.empty();
+    };
+    std::vector<std::string> errors(programs.size());
+    batch = std::max<std::size_t>(batch, 1);
+    for (std::size_t first = 0; first < programs.size(); first += batch) {
+        const std::size_t end = std::min(first + batch, programs.size());
+        std::vector<GLuint> ids;
+        for (std::size_t i = first; i < end; ++i) {
+            const GLuint p = glCreateProgram();
+            glAttachShader(p, shader(GL_VERTEX_SHADER, programs[i].vertex).id);
+            glAttachShader(p, shader(GL_FRAGMENT_SHADER, programs[i].fragment).id);
+            bind_attributes(p);
+            glLinkProgram(p);
+            ids.push_back(p);
+        }
+        for (std::size_t i = first; i < end; ++i) {
+            const GLuint p = ids[i - first];
+            Shader& v = shaders[{GL_VERTEX_SHADER, programs[i].vertex}];
+            Shader& f = shaders[{GL_FRAGMENT_SHADER, programs[i].fragment}];
+            const bool v_ok = compiled(GL_VERTEX_SHADER, v), f_ok = compiled(GL_FRAGMENT_SHADER, f);
+            GLint ok = GL_FALSE;
+            glGetProgramiv(p, GL_LINK_STATUS, &ok);
+            if (!v_ok || !f_ok)
+                errors[i] = programs[i].label + ": " + (v_ok ? f.error : v.error);
+            else if (ok != GL_TRUE)
+                errors[i] = programs[i].label + ": program failed to link: " + program_log(p);
+            glDeleteProgram(p);
+            for (Shader* sh : {&v, &f})
+                if (sh->last_use == i && sh->id) {
+                    glDeleteShader(sh->id);
+                    sh->id = 0;
+                }
+        }
+        check_errors("check_programs", __FILE__, __LINE__);
+    }
+    return errors;
 }
 
 int Program::location(const char* name) const {

@@ -8,6 +8,7 @@
 #include <string>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -206,5 +207,16 @@ private:
     std::set<std::string> declared_;
     mutable std::unordered_map<std::string, int> locations_;
 };
+
+// Many programs linked to see whether they link (the every-variant test): each distinct shader
+// source compiled once, a batch's compiles and links all issued before any status is read (so
+// that a context with GL_KHR_parallel_shader_compile works on them at once), each program deleted
+// once its status is read, each shader once no later program uses it. The programs bind the
+// attributes as Program does. Returns, for each program, "" or the error Program would throw
+// ("LABEL: fragment shader failed to compile: LOG", "LABEL: program failed to link: LOG").
+struct ProgramSources {
+    std::string vertex, fragment, label;
+};
+std::vector<std::string> check_programs(const std::vector<ProgramSources>& programs, std::size_t batch = 64);
 
 }  // namespace penumbra::gl

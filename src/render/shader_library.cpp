@@ -1,5 +1,9 @@
 #include "render/shader_library.h"
 
+#include <cctype>
+#include <map>
+#include <set>
+
 #include "gl/check.h"
 #include "render/shader_sources.h"
 
@@ -20,6 +24,69 @@ std::string variant_source(const std::string& file, const std::vector<std::strin
         return text;
     }
     throw gl::Error("shader '" + file + "' is not embedded");
+}
+
+namespace {
+
+// The identifiers in `text` (comments and all: a name is never dropped for being only there).
+std::set<std::string> words(const std::string& text) {
+    std::set<std::string> out;
+    const auto head = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+    const auto tail = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    for (size_t i = 0; i < text.size();) {
+        if (!head(text[i])) {
+            // Skip a number's letters too (1e5, 0x1F): they are not names.
+            if (tail(text[i]))
+                while (i < text.size() && tail(text[i])) ++i;
+            else
+                ++i;
+            continue;
+        }
+        size_t end = i;
+        while (end < text.size() && tail(text[end])) ++end;
+        out.insert(text.substr(i, end - i));
+        i = end;
+    }
+    return out;
+}
+
+// "NAME", "NAME TEXT", "NAME(ARGS) TEXT": the name.
+std::string define_name(const std::string& d) { return d.substr(0, d.find_first_of(" (")); }
+
+}  // namespace
+
+std::vector<std::string> defines_read_by(const std::string& file, const std::vector<std::string>& defines) {
+    static std::map<std::string, std::set<std::string>> file_words;
+    auto it = file_words.find(file);
+    if (it == file_words.end()) it = file_words.emplace(file, words(variant_source(file, {}))).first;
+    std::set<std::string> read = it->second;
+    std::vector<bool> keep(defines.size(), false);
+    // A kept define's text may name another: repeat until nothing more is kept.
+    for (bool more = true; more;) {
+        more = false;
+        for (size_t i = 0; i < defines.size(); ++i) {
+            const std::string name = define_name(defines[i]);
+            if (keep[i] || (name != "GBUFFER_MRT" && !read.count(name))) continue;
+            keep[i] = more = true;
+            if (defines[i].size() > name.size()) read.merge(words(defines[i].substr(name.size())));
+        }
+    }
+    std::vector<std::string> out;
+    for (size_t i = 0; i < defines.size(); ++i)
+        if (keep[i]) out.push_back(defines[i]);
+    return out;
+}
+
+std::vector<std::string> check_variants(const std::vector<Variant>& variants) {
+    std::vector<gl::ProgramSources> programs;
+    programs.reserve(variants.size());
+    for (const Variant& v : variants)
+        programs.push_back({variant_source(v.vertex, defines_read_by(v.vertex, v.defines)),
+                            variant_source(v.fragment, defines_read_by(v.fragment, v.defines)), v.key()});
+    std::vector<std::string> failed;
+    for (std::string& e : gl::check_programs(programs))
+        if (!e.empty()) failed.push_back(std::move(e));
+    return failed;
 }
 
 const gl::Program& ShaderLibrary::get(const Variant& v) {

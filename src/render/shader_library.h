@@ -15,6 +15,19 @@ namespace penumbra::render {
 // `#version 100`. Throws gl::Error when the file is not embedded.
 std::string variant_source(const std::string& file, const std::vector<std::string>& defines);
 
+// The #defines of `defines` that can change `file`'s code: those whose name is a word of the file
+// (after its includes are spliced) or of a kept define's text, and GBUFFER_MRT (it also adds an
+// #extension line). The others are #defined and never read: leaving them out compiles the same
+// shader, so the every-variant test compiles each stage's distinct code once.
+std::vector<std::string> defines_read_by(const std::string& file, const std::vector<std::string>& defines);
+
+// Every variant of `variants` compiled and linked on the current context with the sources and
+// attribute bindings ShaderLibrary::get uses (less the #defines the file never reads), through
+// gl::check_programs (each distinct source compiled once, in batches, with the driver free to
+// compile in parallel), and nothing kept. Returns one line per variant that failed: its key, the
+// stage and the log, as get() would throw it.
+std::vector<std::string> check_variants(const std::vector<Variant>& variants);
+
 class ShaderLibrary {
 public:
     const gl::Program& get(const Variant& v);

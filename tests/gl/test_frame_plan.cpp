@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <set>
 
 #include "gl/objects.h"
 #include "render/options.h"
+#include "render/shader_library.h"
 #include "scene/course_scene.h"
 #include "scene/scene_source.h"
 
@@ -122,11 +124,22 @@ TEST_F(RendererGl, MapSizeBeyondTheContextIsClampedWithANote) {
     auto course = scene::make_course_scene(2);
     render::Settings s;
     s.map_size = renderer->caps().max_target_size() * 2;
-    const auto& plan = renderer->render(course.scene, s, render::offscreen(32, 32));
+    const auto plan = renderer->plan(course.scene, s, render::offscreen(32, 32));
     ASSERT_NE(plan.resource("shadow-map"), nullptr);
     EXPECT_EQ(plan.resource("shadow-map")->desc.width, renderer->caps().max_target_size());
     ASSERT_FALSE(plan.notes.empty());
     EXPECT_NE(plan.notes[0].find("clamped"), std::string::npos);
+    // Drawn: a map of the largest size the context names may still be more memory than it has
+    // (softpipe: 16384^2, 2 GiB with its depth), and GLES 2.0 (2.5) lets any allocation end in
+    // GL_OUT_OF_MEMORY. Either it draws, or the error names that and the pass.
+    try {
+        renderer->execute(course.scene, plan);
+    } catch (const gl::Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("GL_OUT_OF_MEMORY"), std::string::npos) << what;
+        EXPECT_NE(what.find("shadow-map"), std::string::npos) << what;
+        RecordProperty("largest_map", what);
+    }
 }
 
 TEST_F(RendererGl, ChecksNameTheProblem) {
@@ -166,11 +179,19 @@ TEST_F(RendererGl, EveryCombinationRendersWithoutGlErrors) {
                 }
 }
 
+// Every variant compiles and links on the context, as ShaderLibrary::get builds it; each stage's
+// distinct code compiled once (3264 variants, 15 distinct vertex shaders), in batches the driver
+// may compile in parallel (GL_KHR_parallel_shader_compile), nothing kept. Through get(), one by
+// one and all kept, it took 45 s on llvmpipe with Mesa's shader cache cold; this way 31 s.
 TEST_F(RendererGl, EveryShaderVariantCompilesOnTheContext) {
     const auto variants = render::all_variants();
     ASSERT_GT(variants.size(), 50u);
-    for (const auto& v : variants) EXPECT_NO_THROW(renderer->shaders().get(v)) << v.key();
-    EXPECT_EQ(renderer->shaders().compiled(), variants.size());
+    std::set<std::string> keys;
+    for (const auto& v : variants) keys.insert(v.key());
+    EXPECT_EQ(keys.size(), variants.size()) << "two variants with one key: the library would compile one of them";
+    const std::vector<std::string> failed = render::check_variants(variants);
+    for (const auto& f : failed) ADD_FAILURE() << f;
+    EXPECT_EQ(failed.size(), 0u) << "of " << variants.size() << " variants";
 }
 
 TEST_F(RendererGl, ABrokenShaderNamesItsStageAndLog) {
