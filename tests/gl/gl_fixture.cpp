@@ -31,20 +31,7 @@ platform::Platform& context() {
     return *ctx;
 }
 
-ImageDiff compare(const measure::Pixels& a, const measure::Pixels& b) {
-    ImageDiff d;
-    double sum = 0.0;
-    for (size_t i = 0; i < a.data.size(); ++i) {
-        const int v = std::abs(int(a.data[i]) - int(b.data[i]));
-        d.max = std::max(d.max, v);
-        sum += v;
-    }
-    d.mean = a.data.empty() ? 0.0 : sum / static_cast<double>(a.data.size());
-    return d;
-}
-
-void expect_matches_golden(const std::string& name, const measure::Pixels& actual, int max_threshold,
-                           double mean_threshold) {
+void expect_matches_golden(const std::string& name, const measure::Pixels& actual, const measure::CompareRules& rules) {
     namespace fs = std::filesystem;
     const std::string golden_path = golden_dir() + "/" + name + ".png";
     const fs::path out_dir = fs::path(test_out_dir()) / "golden";
@@ -63,28 +50,15 @@ void expect_matches_golden(const std::string& name, const measure::Pixels& actua
     ASSERT_EQ(measure::read_png(golden_path, golden, actual.channels), "");
     ASSERT_EQ(golden.width, actual.width) << golden_path;
     ASSERT_EQ(golden.height, actual.height) << golden_path;
-    const ImageDiff d = compare(actual, golden);
-    if (d.max <= max_threshold && d.mean <= mean_threshold) return;
-
-    // The diff image: per pixel the largest channel difference, amplified x4, as grey.
-    measure::Pixels diff;
-    diff.width = actual.width;
-    diff.height = actual.height;
-    diff.channels = 1;
-    const size_t n = static_cast<size_t>(actual.width) * static_cast<size_t>(actual.height);
-    diff.data.resize(n);
-    for (size_t p = 0; p < n; ++p) {
-        int m = 0;
-        for (int c = 0; c < actual.channels; ++c) {
-            const size_t i = p * static_cast<size_t>(actual.channels) + static_cast<size_t>(c);
-            m = std::max(m, std::abs(int(actual.data[i]) - int(golden.data[i])));
-        }
-        diff.data[p] = static_cast<std::uint8_t>(std::min(255, m * 4));
-    }
+    const measure::ImageComparison c = measure::compare_images(actual, golden, rules);
+    ::testing::Test::RecordProperty("golden_" + name, c.summary());
+    if (c.passed) return;
     EXPECT_EQ(measure::write_png(actual_path, actual), "");
-    EXPECT_EQ(measure::write_png(diff_path, diff), "");
-    ADD_FAILURE() << name << ": max difference " << d.max << " (threshold " << max_threshold << "), mean " << d.mean
-                  << " (threshold " << mean_threshold << ")\n  actual: " << actual_path << "\n  diff:   " << diff_path
+    EXPECT_EQ(measure::write_png(diff_path, measure::comparison_map(actual, golden, rules)), "");
+    ADD_FAILURE() << name << ": " << c.summary() << " (allowed: " << 100.0 * rules.max_off_share << " % off, "
+                  << 100.0 * rules.max_unexplained_share << " % unexplained, groups of " << rules.max_cluster
+                  << ")\n  actual: " << actual_path << "\n  diff:   " << diff_path
+                  << " (grey: off within one pixel of the golden's colour; white: unexplained)"
                   << "\n  look at both; if the change is right, run tools/approve_goldens.sh";
 }
 

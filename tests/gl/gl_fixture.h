@@ -12,6 +12,7 @@
 #include "gl/caps.h"
 #include "gl/check.h"
 #include "platform/platform.h"
+#include "measure/image_compare.h"
 #include "measure/image_io.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
@@ -38,11 +39,6 @@ struct GlTest : ::testing::Test {
     std::unique_ptr<render::Renderer> renderer;
 };
 
-struct ImageDiff {
-    int max = 0;        // largest per-channel difference
-    double mean = 0.0;  // mean per-channel difference over all pixels
-};
-
 // An object of the test scenes: `mesh` at `world`, material 0, casting and receiving shadows.
 inline scene::Object object(const char* name, int mesh, const glm::mat4& world) {
     scene::Object o;
@@ -53,16 +49,17 @@ inline scene::Object object(const char* name, int mesh, const glm::mat4& world) 
     return o;
 }
 
-ImageDiff compare(const measure::Pixels& a, const measure::Pixels& b);
-
 // Every technique, and the settings that plan their passes differently (PCSS, r8 light samples
 // over the shadow map, volumes and planar, Gooch's planes and texture, z-fail volumes shown), each
 // with a name: what the effects' tests walk.
 std::vector<std::pair<std::string, render::Settings>> every_technique_case();
 
-// Compares `actual` with tests/golden/NAME.png. On a mismatch (or a missing golden) writes
-// NAME.actual.png and NAME.diff.png under build/test-output/golden and fails with their paths.
-void expect_matches_golden(const std::string& name, const measure::Pixels& actual, int max_threshold,
-                           double mean_threshold);
+// Compares `actual` with tests/golden/NAME.png by measure::compare_images (what any conformant
+// implementation may do differently passes: measure/image_compare.h names the rules). On a
+// mismatch (or a missing golden) writes NAME.actual.png and NAME.diff.png (grey: off but within
+// one pixel of the golden's colour; white: unexplained) under build/test-output/golden and fails
+// with the figures and their paths.
+void expect_matches_golden(const std::string& name, const measure::Pixels& actual,
+                           const measure::CompareRules& rules = {});
 
 }  // namespace penumbra::test

@@ -189,9 +189,19 @@ TEST_F(RendererGl, EveryShaderVariantCompilesOnTheContext) {
     std::set<std::string> keys;
     for (const auto& v : variants) keys.insert(v.key());
     EXPECT_EQ(keys.size(), variants.size()) << "two variants with one key: the library would compile one of them";
-    const std::vector<std::string> failed = render::check_variants(variants);
+    // A variant that requires an extension the context lacks is never asked of it: GBUFFER_MRT's
+    // `#extension GL_EXT_draw_buffers : require` must fail to compile there (GLSL ES 1.00 3.4), and
+    // the plan draws one G-buffer pass per target instead (NVIDIA's GLES 2 has no EXT_draw_buffers).
+    std::vector<render::Variant> wanted;
+    for (const auto& v : variants) {
+        const bool mrt = std::find(v.defines.begin(), v.defines.end(), "GBUFFER_MRT") != v.defines.end();
+        if (!mrt || renderer->caps().draw_buffers) wanted.push_back(v);
+    }
+    RecordProperty("variants_checked", static_cast<int>(wanted.size()));
+    RecordProperty("variants_without_their_extension", static_cast<int>(variants.size() - wanted.size()));
+    const std::vector<std::string> failed = render::check_variants(wanted);
     for (const auto& f : failed) ADD_FAILURE() << f;
-    EXPECT_EQ(failed.size(), 0u) << "of " << variants.size() << " variants";
+    EXPECT_EQ(failed.size(), 0u) << "of " << wanted.size() << " variants";
 }
 
 TEST_F(RendererGl, ABrokenShaderNamesItsStageAndLog) {

@@ -81,8 +81,7 @@ int run_render(const render::Options& o, bool verbose, const std::vector<std::st
     const render::FrameInputs in = render::offscreen(job.width, job.height);
     if (verbose)
         std::cerr << ctx->description() << "\n"
-                  << r.caps().summary() << "\nfloat -> unorm8 conversion: " << shadow::to_string(r.unorm_rounding())
-                  << " (probed; the packing is compiled for it)\nsettings: " << render::to_args(o) << "\n";
+                  << r.caps().summary() << "\n" << r.unorm_report() << "\nsettings: " << render::to_args(o) << "\n";
     if (const std::string problem = r.check(src.at(job.time), o.settings, in); !problem.empty()) throw Failure{problem, 2};
 
     std::vector<double> ms;
@@ -226,6 +225,8 @@ int run_shaders(const std::string& dir) {
 int run_caps() {
     auto ctx = make_context();
     std::printf("%s\n%s\n", ctx->description().c_str(), gl::probe_caps(*ctx).summary().c_str());
+    const render::Renderer r(gl::probe_caps(*ctx));
+    std::printf("%s\n", r.unorm_report().c_str());
     tools::print_implementation(*ctx, gl::probe_caps(*ctx));
     return 0;
 }
