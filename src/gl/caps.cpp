@@ -8,6 +8,18 @@
 #include "gl/entry_points.h"
 #include "gl/gl_headers.h"
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten.h>
+
+// Whether the canvas fetched EXT_disjoint_timer_query's object for Emscripten's query functions
+// (platform/emscripten_canvas.cpp).
+// clang-format off
+EM_JS(int, penumbra_timer_query_fetched, (), {
+    return (typeof GLctx !== 'undefined' && GLctx && GLctx.disjointTimerQueryExt) ? 1 : 0;
+})
+// clang-format on
+#endif
+
 namespace penumbra::gl {
 
 namespace {
@@ -36,12 +48,18 @@ void probe_timer(Caps& c, const platform::Platform& context, bool listed) {
     EntryPoints& e = entry_points();
 #ifdef __EMSCRIPTEN__
     (void)context;
-    (void)e;
-    // Emscripten (3.1.6) routes glBeginQueryEXT and the others to the extension's object, which
-    // its library fetches only for a context made with every extension enabled; the canvas enables
-    // them one by one (platform/emscripten_canvas.cpp), so the pages have no GPU timer yet: the
-    // canvas would have to fetch that object itself (GLctx.disjointTimerQueryExt) first.
-    listed = false;
+    // Emscripten (3.1.6) links the entry points, and routes them to the extension's object,
+    // GLctx.disjointTimerQueryExt, which its library fetches only for a context made with every
+    // extension enabled; the canvas enables them one by one and fetches that object itself
+    // (platform/emscripten_canvas.cpp). Without it, glGenQueriesEXT would throw: no timer.
+    listed = listed && penumbra_timer_query_fetched() != 0;
+    e.gen_queries = listed ? &glGenQueriesEXT : nullptr;
+    e.delete_queries = listed ? &glDeleteQueriesEXT : nullptr;
+    e.begin_query = listed ? &glBeginQueryEXT : nullptr;
+    e.end_query = listed ? &glEndQueryEXT : nullptr;
+    e.get_query_iv = listed ? &glGetQueryivEXT : nullptr;
+    e.get_query_object_uiv = listed ? &glGetQueryObjectuivEXT : nullptr;
+    e.get_query_object_ui64v = listed ? &glGetQueryObjectui64vEXT : nullptr;
 #else
     const auto load = [&](auto& fn, const char* name) {
         fn = listed ? reinterpret_cast<std::remove_reference_t<decltype(fn)>>(context.proc_address(name)) : nullptr;

@@ -9,6 +9,15 @@
 
 #include "platform/platform.h"
 
+// EXT_disjoint_timer_query's object, where Emscripten's query functions look for it (see
+// WebCanvas::enable_timer_query), on the current context.
+// clang-format off
+EM_JS(void, penumbra_fetch_timer_query, (), {
+    if (typeof GLctx !== 'undefined' && GLctx)
+        GLctx.disjointTimerQueryExt = GLctx.getExtension('EXT_disjoint_timer_query') || null;
+})
+// clang-format on
+
 namespace penumbra::platform {
 
 namespace {
@@ -17,6 +26,7 @@ namespace {
 // After a restore they are off again and are asked for again.
 // The half-float ones give the post passes' targets (render/post.h) where all three are there;
 // WEBGL_draw_buffers the deferred G-buffer's three attachments in one pass (render/deferred.h).
+// EXT_disjoint_timer_query is enabled apart (enable_timer_query): Emscripten needs its object.
 constexpr const char* kExtensions[] = {"WEBGL_depth_texture", "OES_element_index_uint", "OES_texture_half_float",
                                        "OES_texture_half_float_linear", "EXT_color_buffer_half_float",
                                        "WEBGL_draw_buffers"};
@@ -78,7 +88,15 @@ public:
 private:
     void enable_extensions() {
         for (const char* e : kExtensions) emscripten_webgl_enable_extension(context_, e);
+        enable_timer_query();
     }
+
+    // EXT_disjoint_timer_query (gl/timer.h: each pass's GPU time). Emscripten 3.1.6 routes
+    // glGenQueriesEXT, glBeginQueryEXT and the others to GLctx.disjointTimerQueryExt, which its
+    // library sets only for a context made with every extension enabled: the canvas sets it here
+    // (null where the browser has no such extension; probe_caps then says no timer). After a restore
+    // the old extension object is dead, and the new one is fetched again.
+    static void enable_timer_query() { penumbra_fetch_timer_query(); }
 
     static void tick(void* user) {
         auto* self = static_cast<WebCanvas*>(user);
