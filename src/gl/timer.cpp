@@ -113,6 +113,10 @@ void PassTimer::drop_current() {
 
 void PassTimer::begin_frame() {
     if (!available_) return;
+    if (grouped_) {  // one more plan of the group's frame
+        end_pass();
+        return;
+    }
     if (in_frame_) drop_current();
     if (!enabled_) return;
     poll(false);
@@ -126,7 +130,7 @@ void PassTimer::begin_pass(const std::string& name) {
     if (in_pass_) end_pass();
     const std::uint32_t q = make_query();
     entry_points().begin_query(GL_TIME_ELAPSED_EXT, q);
-    current_.queries.emplace_back(name, q);
+    current_.queries.emplace_back(prefix_ + name, q);
     in_pass_ = true;
 }
 
@@ -137,11 +141,26 @@ void PassTimer::end_pass() {
 }
 
 void PassTimer::end_frame() {
+    if (grouped_) {
+        end_pass();
+        return;
+    }
     if (!in_frame_) return;
     end_pass();
     pending_.push_back(std::move(current_));
     current_ = {};
     in_frame_ = false;
+}
+
+void PassTimer::begin_group() {
+    grouped_ = false;
+    begin_frame();
+    grouped_ = in_frame_;
+}
+
+void PassTimer::end_group() {
+    grouped_ = false;
+    end_frame();
 }
 
 std::vector<GpuFrame> PassTimer::take(bool wait) {

@@ -47,6 +47,15 @@ public:
     void end_pass();
     void end_frame();
 
+    // Several renderer frames timed as one (an app's frame that draws two plans, each through
+    // Renderer::run): between begin_group and end_group, begin_frame and end_frame only end the
+    // pass timed. begin_group starts the frame as begin_frame does (dropping an unfinished one: a
+    // group whose plan threw), end_group ends it. An app that groups its frames groups each one.
+    void begin_group();
+    void end_group();
+    // Put before the names of the passes begun from now on ("texture: " + "camera"); "" for none.
+    void set_prefix(std::string prefix) { prefix_ = std::move(prefix); }
+
     // The frames whose results have arrived since the last take, oldest first, without waiting;
     // with `wait`, every frame still pending too (glGetQueryObject waits for the GPU).
     std::vector<GpuFrame> take(bool wait = false);
@@ -72,6 +81,8 @@ private:
     bool enabled_ = false;
     bool in_frame_ = false;
     bool in_pass_ = false;
+    bool grouped_ = false;  // in a group: the renderer's frames join the group's
+    std::string prefix_;
     Frame current_;
     std::deque<Frame> pending_;
     std::deque<GpuFrame> done_;
