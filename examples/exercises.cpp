@@ -309,6 +309,8 @@ void CourseApp::create_gl(const platform::Platform& context) {
     renderer_->load(scene());
     ++generation_;
     ms_.clear();  // frame times of the old context say nothing about this one
+    gpu_frames_.clear();
+    renderer_->gpu_timer().enable(gpu_timing_);
     if (settings_.encoding == shadow::Encoding::DepthTex && !renderer_->caps().depth_texture)
         settings_.encoding = shadow::Encoding::RGBA;
 }
@@ -333,9 +335,13 @@ void CourseApp::set_time(double t) { light_time_ = jump_time_ = t; }
 
 // ---- drawing --------------------------------------------------------------------------------
 
-void CourseApp::render(render::Settings s, const render::FrameInputs& in) { render(course_.scene, s, in); }
+void CourseApp::render(render::Settings s, const render::FrameInputs& in, const char* label) {
+    render(course_.scene, s, in, label);
+}
 
-void CourseApp::render(const scene::Scene& sc, const render::Settings& s, const render::FrameInputs& in) {
+void CourseApp::render(const scene::Scene& sc, const render::Settings& s, const render::FrameInputs& in,
+                       const char* label) {
+    renderer_->gpu_timer().set_prefix(*label ? std::string(label) + ": " : std::string());
     const render::FramePlan& p = renderer_->render(sc, s, in);
     plan_text_ += p.describe();
     if (p.area && !area_) area_ = p.area;
@@ -396,6 +402,10 @@ void CourseApp::draw(int width, int height) {
     area_.reset();
     render::FrameInputs in;
     in.output = window;
+    // The frame's plans are timed as one GPU frame (a plan that throws leaves it unfinished: the
+    // next frame drops it).
+    gl::PassTimer& timer = renderer_->gpu_timer();
+    timer.begin_group();
     switch (exercise_) {
         case Exercise::W09P1:
             s.aov = render::Aov::Color;
@@ -438,7 +448,7 @@ void CourseApp::draw(int width, int height) {
             render::FrameInputs into;
             if (toggles_.fbo_light) into = light_view(into_output, false, window);
             else into.output = into_output;
-            render(s, into);
+            render(s, into, "texture");
             in.objects.push_back({course_.table, fbo_mesh_, fbo_material_});
             in.images.push_back({fbo_image_, texture});
             render(s, in);
@@ -454,7 +464,7 @@ void CourseApp::draw(int width, int height) {
             if (side + margin > width || side + margin > height) break;
             s.aov = render::Aov::LightDepth;
             in.output = render::Output::window_region(width - side - margin, height - side - margin, side, side);
-            render(s, in);
+            render(s, in, "map view");
             break;
         }
         case Exercise::Volumes:  // colour, visibility or the stencil count; the volumes drawn or not
@@ -485,6 +495,8 @@ void CourseApp::draw(int width, int height) {
             break;
         }
     }
+    timer.end_group();
+    timer.set_prefix("");
     // Wait for the frame before the clock stops. glFinish would do on the desktop, but WebGL's
     // finish() returns at once in Chromium (it only flushes); reading one pixel back waits for the
     // rendering everywhere.
@@ -493,6 +505,18 @@ void CourseApp::draw(int width, int height) {
     if (ms_.size() < kTimingWindow) ms_.push_back(ms);
     else ms_[static_cast<size_t>(frames_drawn_) % kTimingWindow] = ms;
     ++frames_drawn_;
+    // The GPU times that have arrived (a few frames old), without waiting.
+    for (gl::GpuFrame& f : timer.take(false)) gpu_frames_.push_back(std::move(f));
+    while (gpu_frames_.size() > kGpuWindow) gpu_frames_.pop_front();
+}
+
+void CourseApp::set_gpu_timing(bool on) {
+    gpu_timing_ = on;
+    if (renderer_) renderer_->gpu_timer().enable(on);
+}
+
+gl::GpuSummary CourseApp::gpu_summary() const {
+    return gl::summarize(std::vector<gl::GpuFrame>(gpu_frames_.begin(), gpu_frames_.end()));
 }
 
 std::vector<std::uint8_t> CourseApp::read_pixels(int width, int height) {

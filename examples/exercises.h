@@ -28,6 +28,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -38,6 +39,7 @@
 #include "exercise_list.h"
 #include "fly_camera.h"
 #include "gl/caps.h"
+#include "gl/timer.h"
 #include "render/plan.h"
 #include "render/renderer.h"
 #include "render/settings.h"
@@ -113,6 +115,18 @@ public:
     std::vector<std::uint8_t> read_pixels(int width, int height);
     // Median ms/frame over the last 60 frames (draw + wait), 0 before the first.
     double median_ms() const;
+    // GPU time per pass (gl/timer.h, where the context has EXT_disjoint_timer_query): off until
+    // switched on; on, each frame's plans are timed as one frame (a second plan's passes named
+    // "texture: camera", "map view: light-depth view"), read back without waiting a few frames later, and
+    // the last kGpuWindow frames kept. It stays on across a context restore.
+    void set_gpu_timing(bool on);
+    bool gpu_timing() const { return gpu_timing_; }
+    bool gpu_timer_available() const { return renderer_ && renderer_->caps().timer_query; }
+    // Each pass's median over the kept frames, and their totals' (frames 0: none read yet).
+    gl::GpuSummary gpu_summary() const;
+    // Frames dropped for GL_GPU_DISJOINT_EXT on this context.
+    int gpu_discarded() const { return renderer_ ? renderer_->gpu_timer().discarded() : 0; }
+    static constexpr std::size_t kGpuWindow = 30;
     long frames_drawn() const { return frames_drawn_; }
     // The passes of the last frame (each plan's), for --verbose and the pages.
     std::string last_plan() const;
@@ -144,8 +158,10 @@ public:
 private:
     // set_option's rule for the values a control lists (see there): "" or the refusal.
     std::string keep_to_the_list(render::Settings& t, std::string_view name);
-    void render(render::Settings s, const render::FrameInputs& in);
-    void render(const scene::Scene& sc, const render::Settings& s, const render::FrameInputs& in);
+    // `label`: a second plan's, put before its passes' names in the GPU times ("texture").
+    void render(render::Settings s, const render::FrameInputs& in, const char* label = "");
+    void render(const scene::Scene& sc, const render::Settings& s, const render::FrameInputs& in,
+                const char* label = "");
     // A scene built in code with its fly camera: made the first time an exercise needs it.
     struct OwnScene {
         std::unique_ptr<scene::Scene> scene;
@@ -181,6 +197,8 @@ private:
     double jump_time_ = 0.0;
     bool paused_ = false;
     std::vector<double> ms_;  // ring of the last frame times
+    bool gpu_timing_ = false;
+    std::deque<gl::GpuFrame> gpu_frames_;  // the last kGpuWindow frames' GPU times
     long frames_drawn_ = 0;
     std::string note_;  // of the last set_option
     std::string plan_text_;  // this frame's passes, for --verbose

@@ -3,7 +3,8 @@
 // applies the URL's options, binds the controls, keeps the URL in step with them
 // (history.replaceState), shows the status (context lost / restored, errors), the note of the last
 // change (a value refused, or changed to one offered; it clears with the next good change),
-// ms/frame, the first frame's time and the picture's size, and offers a small test hook,
+// ms/frame, each pass's GPU time (where the browser has EXT_disjoint_timer_query), the first frame's
+// time and the picture's size, and offers a small test hook,
 // window.penumbra.
 //
 // The controls are generated with the page (web/pages.py, from examples/exercise_list.cpp and the
@@ -28,6 +29,7 @@
   const canvas = document.getElementById('canvas');
   const statusEl = document.getElementById('status');
   const msEl = document.getElementById('ms');
+  const gpuEl = document.getElementById('gpu');
   const noteEl = document.getElementById('note');
   const firstEl = document.getElementById('first-frame');
   const pictureEl = document.getElementById('picture');
@@ -331,6 +333,18 @@
       .map((l) => l.trim().replace(/^\d+\.\s*(shadow-map\s*)?/, '').replace(/reused \([^)]*\)/, 'reused')).join('\n');
   }
 
+  // Each pass's median GPU ms, a line each (and in how many frames, where not in all: a shadow map
+  // drawn once and reused), and their frames' total (state's gpu: null without a timer).
+  function gpuText(s) {
+    if (s.lost) return '– (no context)';
+    const g = s.gpu;
+    if (!g) return 'GPU timer: not available';
+    if (!g.frames) return '–';
+    return g.passes.map((p) => p.name + ' ' + p.ms.toFixed(2) + ' ms' +
+      (p.frames < g.frames ? ' (' + p.frames + ' of ' + g.frames + ' frames)' : '')).join('\n') +
+      '\ntotal ' + g.total.toFixed(2) + ' ms/frame';
+  }
+
   function poll() {
     const s = state();
     showCamera(s);
@@ -340,6 +354,8 @@
       if (planEl.textContent !== lines) planEl.textContent = lines;
     }
     msEl.textContent = s.lost ? '– (no context)' : s.ms > 0 ? s.ms.toFixed(2) + ' ms/frame' : '–';
+    const gpu = gpuText(s);
+    if (gpuEl.textContent !== gpu) gpuEl.textContent = gpu;
     lostEl.hidden = !s.lost;
     // What the frame had to change for this canvas (W09P2b: a copy no larger than the canvas).
     if (frameNoteEl.textContent !== s.frameNote) frameNoteEl.textContent = s.frameNote;
