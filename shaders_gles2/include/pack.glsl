@@ -10,8 +10,8 @@
 // A byte b written as (b + UNORM_OFFSET)/255 reaches the store as b + 0.25 (give or take float32's
 // 1e-5 of a step): the nearest integer (GLES 2.0 2.1.2 asks for round(c * 255)), truncation, and
 // "either of the two closest" (ES 3.0 2.1.6.2) all give b, and so does a store that converts
-// with an error of up to a quarter step (NVIDIA's rounds 0.06 step off at the ties). Written as
-// b/255 instead, a context that truncates may store b - 1 where b/255 * 255 lands below b.
+// with an error of up to a quarter step (the H100 log suggests NVIDIA's is 0.06 off at the ties).
+// Written as b/255 instead, a context that truncates may store b - 1 where b/255 * 255 lands below b.
 const float UNORM_OFFSET = 0.25;
 
 #ifdef EMULATE_MEDIUMP

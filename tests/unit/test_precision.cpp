@@ -103,8 +103,8 @@ TEST(Precision, EveryByteReachesTheStoreAQuarterIntoItsStep) {
     // Why any conversion keeps it: byte b is written as (b + 0.25)/255, which reaches the store as
     // b + 0.25 within float32's rounding (mediump's: 2^-12 of 255, 0.06 of a step), a quarter step
     // from both the tie (b + 0.5, where rounding could go up) and the byte below (where truncation
-    // would go). A store whose conversion is off by less than 0.1 step (NVIDIA's rounding is about
-    // 0.06 off at the ties) keeps every byte.
+    // would go). A store whose conversion is off by less than 0.1 step (the H100 log suggests
+    // NVIDIA's is about 0.06 off at the ties) keeps every byte.
     for (int b = 0; b < 256; ++b) {
         const float written = (static_cast<float>(b) + 0.25f) / 255.0f;
         for (float v : {written, round_mediump(written)}) {
