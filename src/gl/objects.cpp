@@ -254,12 +254,23 @@ Framebuffer::Framebuffer(const FramebufferDesc& d) {
 
 namespace {
 
-std::string shader_log(GLuint shader) {
+// A shader's or a program's info log (glGetShaderiv + glGetShaderInfoLog, or the program's pair).
+template <typename GetIv, typename GetLog>
+std::string info_log(GLuint id, GetIv get_iv, GetLog get_log) {
     GLint len = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &len);
+    get_iv(id, GL_INFO_LOG_LENGTH, &len);
     std::vector<char> log(static_cast<size_t>(len > 1 ? len : 1), '\0');
-    glGetShaderInfoLog(shader, isize(log.size()), nullptr, log.data());
+    get_log(id, isize(log.size()), nullptr, log.data());
     return log.data();
+}
+
+// "" when shader `s` compiled, else "vertex shader failed to compile: LOG".
+std::string compile_error(GLenum stage, GLuint s) {
+    GLint ok = GL_FALSE;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (ok == GL_TRUE) return "";
+    return std::string(stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+           " shader failed to compile: " + info_log(s, glGetShaderiv, glGetShaderInfoLog);
 }
 
 GLuint compile(GLenum stage, const std::string& source, const std::string& label) {
@@ -267,13 +278,9 @@ GLuint compile(GLenum stage, const std::string& source, const std::string& label
     const char* text = source.c_str();
     glShaderSource(s, 1, &text, nullptr);
     glCompileShader(s);
-    GLint ok = GL_FALSE;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        const std::string log = shader_log(s);
+    if (const std::string error = compile_error(stage, s); !error.empty()) {
         glDeleteShader(s);
-        throw Error(label + (stage == GL_VERTEX_SHADER ? ": vertex" : ": fragment") +
-                    " shader failed to compile: " + log);
+        throw Error(label + ": " + error);
     }
     return s;
 }
@@ -285,13 +292,7 @@ void bind_attributes(GLuint p) {
     glBindAttribLocation(p, kUV, "a_uv");
 }
 
-std::string program_log(GLuint p) {
-    GLint len = 0;
-    glGetProgramiv(p, GL_INFO_LOG_LENGTH, &len);
-    std::vector<char> log(static_cast<size_t>(len > 1 ? len : 1), '\0');
-    glGetProgramInfoLog(p, isize(log.size()), nullptr, log.data());
-    return log.data();
-}
+std::string program_log(GLuint p) { return info_log(p, glGetProgramiv, glGetProgramInfoLog); }
 
 }  // namespace
 
@@ -349,14 +350,8 @@ std::vector<std::string> check_programs(const std::vector<ProgramSources>& progr
         return sh;
     };
     const auto compiled = [](GLenum stage, Shader& sh) {
-        if (!sh.checked) {
-            GLint ok = GL_FALSE;
-            glGetShaderiv(sh.id, GL_COMPILE_STATUS, &ok);
-            if (ok != GL_TRUE)
-                sh.error = std::string(stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
-                           " shader failed to compile: " + shader_log(sh.id);
-            sh.checked = true;
-        }
+        if (!sh.checked) sh.error = compile_error(stage, sh.id);
+        sh.checked = true;
         return sh.error.empty();
     };
     std::vector<std::string> errors(programs.size());

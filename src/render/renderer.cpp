@@ -52,13 +52,13 @@ void Renderer::probe_unorm_rounding() {
     run(scene::Scene{}, probe);
     const auto px = read_image(d.name);
     caps_.unorm_probe = {px[0], px[1], px[2]};
-    caps_.unorm_floor = px[0] == 0 && px[1] == 128 && px[2] == 254;
 }
 
 std::string Renderer::unorm_report() const {
     const auto& b = caps_.unorm_probe;
-    const bool rounds = b[0] == 1 && b[1] == 129 && b[2] == 255;
-    const std::string kind = rounds ? "round" : caps_.unorm_floor ? "floor" : "mixed (either closest byte)";
+    const std::string kind = caps_.unorm_rounds()   ? "round"
+                             : caps_.unorm_floors() ? "floor"
+                                                    : "mixed (either closest byte)";
     return "float -> unorm8 conversion: " + kind + " (probed: 0.6/255, 128.6/255, 254.6/255 stored as " +
            std::to_string(b[0]) + ", " + std::to_string(b[1]) + ", " + std::to_string(b[2]) +
            "; the packing stores the same bytes under each)";

@@ -24,7 +24,7 @@ namespace penumbra::render {
 class Renderer {
 public:
     // `caps` from gl::probe_caps on the current context; the renderer adds what its unorm8 probe
-    // finds (Caps::unorm_floor, Caps::unorm_probe).
+    // finds (Caps::unorm_probe).
     explicit Renderer(gl::Caps caps);
     ~Renderer();
     Renderer(const Renderer&) = delete;
@@ -63,12 +63,9 @@ public:
     // GPU time per pass (EXT_disjoint_timer_query, where Caps::timer_query): off until enabled;
     // each frame executed while it is on brackets its passes that draw, and take() reads them.
     gl::PassTimer& gpu_timer() { return timer_; }
-    // How this context converts float to unorm8, found by a probe when the renderer was made:
-    // for `penumbra caps` and the tests (the packing stores the same bytes either way).
-    shadow::UnormRounding unorm_rounding() const {
-        return caps_.unorm_floor ? shadow::UnormRounding::Floor : shadow::UnormRounding::Round;
-    }
-    // One line for people: "float -> unorm8 conversion: round (0.6/255 -> 1, ...)".
+    // How this context converts float to unorm8, found by a probe when the renderer was made, in
+    // one line for `penumbra caps` and `render -v` (the packing stores the same bytes either way):
+    // "float -> unorm8 conversion: round (probed: ... stored as 1, 129, 255; ...)".
     std::string unorm_report() const;
 
 private:
