@@ -1,3 +1,4 @@
+#include "render/frames/area_light.h"
 #include "exercises.h"
 
 #include <algorithm>
@@ -344,7 +345,7 @@ void CourseApp::render(const scene::Scene& sc, const render::Settings& s, const 
     renderer_->gpu_timer().set_prefix(*label ? std::string(label) + ": " : std::string());
     const render::FramePlan& p = renderer_->render(sc, s, in);
     plan_text_ += p.describe();
-    if (p.area && !area_) area_ = p.area;
+    if (const render::AreaStats* a = render::area_of(p); a && !area_) area_ = *a;
 }
 
 render::Settings CourseApp::frame_settings() const {

@@ -40,6 +40,7 @@
 #include "fly_camera.h"
 #include "gl/caps.h"
 #include "gl/timer.h"
+#include "render/frames/area_light.h"
 #include "render/plan.h"
 #include "render/renderer.h"
 #include "render/settings.h"

@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include <glm/gtc/type_ptr.hpp>
+
 namespace penumbra::render {
 
 inline std::string json_quote(std::string_view s) {
@@ -40,5 +42,15 @@ inline std::string json_number(double v) {
 }
 
 inline std::string json_bool(bool v) { return v ? "true" : "false"; }
+
+// A glm vector or matrix as a JSON array of its floats (column-major for a matrix).
+template <typename T>
+std::string json_floats(const T& v) {
+    const float* f = glm::value_ptr(v);
+    std::string s = "[";
+    for (int i = 0; i < static_cast<int>(sizeof(T) / sizeof(float)); ++i)
+        s += (i ? "," : "") + json_number(static_cast<double>(f[i]));
+    return s + "]";
+}
 
 }  // namespace penumbra::render

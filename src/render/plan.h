@@ -10,6 +10,7 @@
 // this file's plan() builds what every frame has (the camera's view and its pass) around them.
 #pragma once
 
+#include <any>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -25,8 +26,6 @@
 #include "render/settings.h"
 #include "render/variants.h"
 #include "scene/scene.h"
-#include "shadow/cascades.h"
-#include "shadow/cube.h"
 #include "shadow/light_frustum.h"
 
 namespace penumbra::render {
@@ -270,23 +269,26 @@ struct StateCounts {
     int draws = 0;
 };
 
-// What the shadow volumes of a frame cost (technique volumes).
-struct VolumeStats {
-    int zpass_casters = 0, zfail_casters = 0;
-    int silhouette_edges = 0;
-    int triangles = 0;           // sides and caps
-    double fill = 0.0;           // stencil fragments rasterised (covered pixels, every layer, no depth test)
-    double fill_per_pixel = 0.0;  // fill / the image's pixels
+// A module's statistics of the frame (the shadow map's light frustum and texel use, its cascades,
+// a cube's faces, the shadow volumes' cost, the light samples' progress): a value of the module's
+// own type, and how it prints (its lines for `penumbra plan`, its JSON value), both the module's.
+// The plan holds them as a list: it knows no technique's results. The module's header says the
+// type (T::kKey is the report's key; render/techniques/reports.h, render/frames/area_light.h).
+struct Report {
+    std::string key;
+    std::any value;
+    std::string (*text)(const std::any&) = nullptr;  // lines, each ending in a newline ("" none)
+    std::string (*json)(const std::any&) = nullptr;  // its JSON value
 };
 
-// Heckbert and Herf's soft shadows (--area-samples N): how far the accumulation of light samples
-// has come. A still frame keeps what earlier frames added (progressive with --area-per-frame).
-struct AreaStats {
-    int total = 0;          // samples asked for
-    int done = 0;           // in the accumulation after this frame
-    int added = 0;          // drawn by this frame (0: the accumulation was complete and still)
-    std::string key;        // what the accumulation depends on (camera, light, objects, settings)
+// Where a report of this key goes in `penumbra plan`'s text and JSON, and the JSON written when no
+// module reported it this frame (the registry's list, render/techniques/techniques.cpp): each key
+// is always in the JSON. Keys not in the list follow, in the order they were reported.
+struct ReportSlot {
+    std::string_view key;
+    std::string_view absent_json;
 };
+const std::vector<ReportSlot>& report_slots();
 
 struct FramePlan {
     Settings settings;
@@ -295,18 +297,8 @@ struct FramePlan {
     std::vector<Pass> passes;
     std::vector<std::string> notes;  // e.g. a clamped map size
     CameraView camera;
-    std::optional<shadow::LightFrustum> light_frustum;  // when a shadow map is drawn or read (cascades: the first's)
-    // With it: the share of the map (0..1) covered by the receivers the camera sees.
-    std::optional<float> texel_use;
-    // --cascades: the cascades of the shadow map, tiles of its atlas (empty: one map), and how
-    // their count was chosen ("--cascades 4", or auto's reason).
-    std::vector<shadow::Cascade> cascades;
-    std::string cascades_why;
-    // --cascades cube (or auto's choice of it): a point light's six faces, tiles of the shadow
-    // map's atlas; those drawn have a pass each (cascades_why says why a cube).
-    std::optional<shadow::CubeFit> cube;
-    std::optional<VolumeStats> volumes;  // with technique volumes
-    std::optional<AreaStats> area;       // with --area-samples > 1 and a light with a radius
+    // The modules' statistics of this frame (Report), at most one of each key.
+    std::vector<Report> reports;
     // The frame's stencil uses with their bits (empty: the frame uses no stencil) out of
     // stencil_bits, the target's.
     std::vector<StencilUse> stencil;
@@ -318,6 +310,31 @@ struct FramePlan {
     bool has_pass(std::string_view name) const;
     // A pass into the resource ran in this plan (false when it was reused or is absent).
     bool drawn(std::string_view name) const;
+
+    // The report of type T (its key T::kKey), or null.
+    template <typename T>
+    const T* find() const {
+        for (const Report& r : reports)
+            if (r.key == T::kKey) return std::any_cast<T>(&r.value);
+        return nullptr;
+    }
+    template <typename T>
+    T* find() {
+        for (Report& r : reports)
+            if (r.key == T::kKey) return std::any_cast<T>(&r.value);
+        return nullptr;
+    }
+    // Reports `value` (in place of a report of the same key), printed by T::text and T::json; the
+    // reference holds until the next put.
+    template <typename T>
+    T& put(T value) {
+        drop(T::kKey);
+        reports.push_back({T::kKey, std::any(std::move(value)),
+                           [](const std::any& a) { return T::text(*std::any_cast<T>(&a)); },
+                           [](const std::any& a) { return T::json(*std::any_cast<T>(&a)); }});
+        return *std::any_cast<T>(&reports.back().value);
+    }
+    void drop(std::string_view key);
 
     StateCounts state_counts() const;
     std::string describe() const;  // one line per pass (render -v)

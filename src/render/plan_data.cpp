@@ -146,6 +146,11 @@ StateCounts FramePlan::state_counts() const {
     return n;
 }
 
+void FramePlan::drop(std::string_view key) {
+    reports.erase(std::remove_if(reports.begin(), reports.end(), [&](const Report& r) { return r.key == key; }),
+                  reports.end());
+}
+
 int FramePlan::resource_index(std::string_view name) const {
     for (size_t i = 0; i < resources.size(); ++i)
         if (resources[i].desc.name == name) return static_cast<int>(i);

@@ -1,5 +1,6 @@
 // A plan for people (describe: one line per pass; to_text: everything) and for programs (to_json).
 // `penumbra render -v` prints describe(), `penumbra plan` to_text() or to_json() of the same plan.
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -8,6 +9,7 @@
 #include "render/json.h"
 #include "render/options.h"
 #include "render/plan.h"
+#include "shadow/cube.h"
 
 namespace penumbra::render {
 
@@ -62,16 +64,22 @@ std::string binding_names(const Pass& pass, std::uint32_t bits) {
     return s.empty() ? "-" : s;
 }
 
-// ---- JSON -----------------------------------------------------------------------------------
-
-template <typename T>
-std::string json_floats(const T& v) {
-    const float* f = glm::value_ptr(v);
-    std::string s = "[";
-    for (glm::length_t i = 0; i < static_cast<glm::length_t>(sizeof(T) / sizeof(float)); ++i)
-        s += (i ? "," : "") + json_number(static_cast<double>(f[i]));
-    return s + "]";
+// Each report in the registry's order (report_slots(): a slot with r null where no module reported
+// it), then any other in the order reported.
+template <typename F>
+void for_each_report(const FramePlan& p, F f) {
+    const std::vector<ReportSlot>& slots = report_slots();
+    for (const ReportSlot& slot : slots) {
+        const Report* found = nullptr;
+        for (const Report& r : p.reports)
+            if (r.key == slot.key) found = &r;
+        f(&slot, found);
+    }
+    for (const Report& r : p.reports)
+        if (std::none_of(slots.begin(), slots.end(), [&](const ReportSlot& s) { return s.key == r.key; })) f(nullptr, &r);
 }
+
+// ---- JSON -----------------------------------------------------------------------------------
 
 std::string json_value(const UniformValue& v) {
     return std::visit(
@@ -183,57 +191,9 @@ std::string FramePlan::to_text() const {
     std::snprintf(buf, sizeof buf, "camera at (%.3g, %.3g, %.3g)\n", static_cast<double>(camera.position.x),
                   static_cast<double>(camera.position.y), static_cast<double>(camera.position.z));
     o << buf;
-    if (light_frustum) {
-        std::snprintf(buf, sizeof buf, "light: %s frustum, near %.4g, far %.4g",
-                      light_frustum->perspective ? "perspective" : "orthographic", static_cast<double>(light_frustum->znear),
-                      static_cast<double>(light_frustum->zfar));
-        o << buf;
-        // A cube's faces each cover their own share: none is given for the whole.
-        if (texel_use) {
-            std::snprintf(buf, sizeof buf, ", texel use %.1f%%", 100.0 * static_cast<double>(*texel_use));
-            o << buf;
-        }
-        o << "\n";
-    }
-    if (!cascades_why.empty()) o << "cascades: " << cascades_why << "\n";
-    for (size_t i = 0; i < cascades.size(); ++i) {
-        const shadow::Cascade& c = cascades[i];
-        char line[320];
-        std::snprintf(line, sizeof line,
-                      "  cascade %zu: view depth %.4g..%.4g (blend band %.3g), sphere radius %.4g, texel %.4g "
-                      "(%.3g texels per unit), tile at (%d, %d), %zu caster(s)\n",
-                      i, static_cast<double>(c.begin), static_cast<double>(c.end), static_cast<double>(c.band),
-                      static_cast<double>(c.radius), static_cast<double>(c.texel), 1.0 / static_cast<double>(c.texel),
-                      c.tile_x, c.tile_y, c.casters.size());
-        o << line;
-    }
-    if (cube) {
-        std::snprintf(buf, sizeof buf, "cube: %d of 6 faces drawn (%dx%d each, %s %d texel%s), depth %.4g..%.4g:",
-                      cube->drawn(), cube->tile, cube->tile, cube->cube_map ? "a GL cube map, the filter's taps up to" : "an atlas,",
-                      cube->guard, cube->cube_map ? "s into the next face" : " guard", static_cast<double>(cube->znear),
-                      static_cast<double>(cube->zfar));
-        o << buf;
-        for (int f = 0; f < shadow::kCubeFaces; ++f) {
-            const shadow::CubeFace& face = cube->faces[static_cast<size_t>(f)];
-            o << " " << shadow::cube_face_name(f)
-              << (face.drawn ? " (" + std::to_string(face.casters.size()) + " caster(s))" : std::string(" (sees nothing in view)"));
-        }
-        o << "\n";
-    }
-    if (volumes) {
-        std::snprintf(buf, sizeof buf,
-                      "shadow volumes: %d caster(s) depth-pass, %d depth-fail; %d silhouette edge(s), %d triangle(s), "
-                      "fill %.0f px (%.2f per pixel)\n",
-                      volumes->zpass_casters, volumes->zfail_casters, volumes->silhouette_edges, volumes->triangles,
-                      volumes->fill, volumes->fill_per_pixel);
-        o << buf;
-    }
-    if (area) {
-        std::snprintf(buf, sizeof buf,
-                      "light samples (Heckbert-Herf): %d of %d in the sum, %d drawn this frame%s\n", area->done,
-                      area->total, area->added, area->added == 0 ? " (still: the sum is reused)" : "");
-        o << buf;
-    }
+    for_each_report(*this, [&](const ReportSlot*, const Report* r) {
+        if (r && r->text) o << r->text(r->value);
+    });
     if (!stencil.empty()) {
         o << "stencil uses (" << stencil_bits << " bits):\n";
         for (const StencilUse& u : stencil) {
@@ -296,53 +256,9 @@ std::string FramePlan::to_json() const {
     for (size_t i = 0; i < pairs.size(); ++i) j += std::string(i ? "," : "") + json_quote(pairs[i].first) + ":" + json_quote(pairs[i].second);
     j += "},\"output\":" + json_quote(output);
     j += ",\"camera\":{\"position\":" + json_floats(camera.position) + ",\"view_proj\":" + json_floats(camera.view_proj) + "}";
-    if (light_frustum)
-        j += ",\"light_frustum\":{\"perspective\":" + json_bool(light_frustum->perspective) +
-             ",\"near\":" + json_number(static_cast<double>(light_frustum->znear)) +
-             ",\"far\":" + json_number(static_cast<double>(light_frustum->zfar)) +
-             ",\"texel_use\":" + (texel_use ? json_number(static_cast<double>(*texel_use)) : std::string("null")) +
-             ",\"view_proj\":" + json_floats(light_frustum->view_proj()) + "}";
-    else
-        j += ",\"light_frustum\":null";
-    j += ",\"cascades\":{\"why\":" + json_quote(cascades_why) + ",\"list\":[";
-    for (size_t i = 0; i < cascades.size(); ++i) {
-        const shadow::Cascade& c = cascades[i];
-        j += std::string(i ? "," : "") + "{\"begin\":" + json_number(static_cast<double>(c.begin)) +
-             ",\"end\":" + json_number(static_cast<double>(c.end)) + ",\"band\":" + json_number(static_cast<double>(c.band)) +
-             ",\"radius\":" + json_number(static_cast<double>(c.radius)) +
-             ",\"texel\":" + json_number(static_cast<double>(c.texel)) + ",\"tile\":[" + std::to_string(c.tile_x) + "," +
-             std::to_string(c.tile_y) + "],\"casters\":" + std::to_string(c.casters.size()) +
-             ",\"view_proj\":" + json_floats(c.frustum.view_proj()) + "}";
-    }
-    j += "]}";
-    if (cube) {
-        j += ",\"cube\":{\"layout\":" + json_quote(cube->cube_map ? "cubemap" : "atlas") +
-             ",\"tile\":" + std::to_string(cube->tile) + ",\"guard\":" + std::to_string(cube->guard) +
-             ",\"near\":" + json_number(static_cast<double>(cube->znear)) +
-             ",\"far\":" + json_number(static_cast<double>(cube->zfar)) + ",\"faces\":[";
-        for (int f = 0; f < shadow::kCubeFaces; ++f) {
-            const shadow::CubeFace& face = cube->faces[static_cast<size_t>(f)];
-            j += std::string(f ? "," : "") + "{\"face\":" + json_quote(shadow::cube_face_name(f)) +
-                 ",\"drawn\":" + json_bool(face.drawn) + ",\"tile\":[" + std::to_string(face.tile_x) + "," +
-                 std::to_string(face.tile_y) + "],\"casters\":" + std::to_string(face.casters.size()) + "}";
-        }
-        j += "]}";
-    } else {
-        j += ",\"cube\":null";
-    }
-    if (volumes)
-        j += ",\"volumes\":{\"zpass_casters\":" + std::to_string(volumes->zpass_casters) +
-             ",\"zfail_casters\":" + std::to_string(volumes->zfail_casters) +
-             ",\"silhouette_edges\":" + std::to_string(volumes->silhouette_edges) +
-             ",\"triangles\":" + std::to_string(volumes->triangles) + ",\"fill\":" + json_number(volumes->fill) +
-             ",\"fill_per_pixel\":" + json_number(volumes->fill_per_pixel) + "}";
-    else
-        j += ",\"volumes\":null";
-    if (area)
-        j += ",\"area\":{\"total\":" + std::to_string(area->total) + ",\"done\":" + std::to_string(area->done) +
-             ",\"added\":" + std::to_string(area->added) + ",\"key\":" + json_quote(area->key) + "}";
-    else
-        j += ",\"area\":null";
+    for_each_report(*this, [&](const ReportSlot* slot, const Report* r) {
+        j += ",\"" + (r ? r->key : std::string(slot->key)) + "\":" + (r ? r->json(r->value) : std::string(slot->absent_json));
+    });
     j += ",\"stencil_bits\":" + std::to_string(stencil_bits) + ",\"stencil\":[";
     for (size_t i = 0; i < stencil.size(); ++i) {
         const StencilUse& u = stencil[i];

@@ -16,6 +16,7 @@
 #include "gl/check.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
+#include "render/techniques/reports.h"
 #include "render/options.h"
 #include "scene/gltf_loader.h"
 #include "shadow/encoding.h"
@@ -62,8 +63,8 @@ TEST_F(Cascades, NearBandsBeatOneMapAtEqualMemory) {
     render::FramePlan one_plan, four_plan;
     const auto one = visibility(settings("1", 4096), nullptr, &one_plan);
     const auto four = visibility(settings("4", 2048), nullptr, &four_plan);
-    ASSERT_TRUE(one_plan.cascades.empty());
-    ASSERT_EQ(four_plan.cascades.size(), 4u);
+    ASSERT_TRUE(render::cascades_of(one_plan).empty());
+    ASSERT_EQ(render::cascades_of(four_plan).size(), 4u);
     ASSERT_EQ(four_plan.resource("shadow-map")->desc.width, 4096);  // the same memory as the one map
     ASSERT_EQ(four_plan.resource("shadow-map")->desc.height, 4096);
     const measure::TruthImage t = truth(four_plan.camera.view_proj);
@@ -215,13 +216,13 @@ protected:
     Tile tile_of(const render::Settings& s, const glm::mat4& view) {
         render::FramePlan plan;
         visibility(s, &view, &plan);
-        EXPECT_EQ(plan.cascades.size(), 4u);
-        const shadow::LightFrustum& f = plan.cascades.front().frustum;
+        EXPECT_EQ(render::cascades_of(plan).size(), 4u);
+        const shadow::LightFrustum& f = render::cascades_of(plan).front().frustum;
         gl::Device& dev = renderer->device();
         dev.bind_target(renderer->pool().whole("shadow-map"));
         const std::vector<std::uint8_t> rgba = dev.read_rgba(0, 0, kTile, kTile);
         Tile t;
-        t.texel = plan.cascades.front().texel;
+        t.texel = render::cascades_of(plan).front().texel;
         t.far = f.zfar;
         const float w = 2.0f / f.proj[0][0], h = 2.0f / f.proj[1][1];
         t.origin = {-(f.proj[3][0] + 1.0f) * w / 2.0f, -(f.proj[3][1] + 1.0f) * h / 2.0f};

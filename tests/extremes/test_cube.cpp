@@ -14,6 +14,7 @@
 #include "gl/check.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
+#include "render/techniques/reports.h"
 #include "render/options.h"
 #include "scene/gltf_loader.h"
 #include "shadow/cube.h"
@@ -114,16 +115,16 @@ TEST_F(Cube, ABulbInARoomIsWithinHalfAPercentOfTheTruthOnEveryWall) {
         const auto cube = visibility(settings("cube"), &view, &cube_plan);
         const auto one = visibility(settings("1"), &view, &one_plan);
         const auto map = visibility(settings("cube", "hard", "rgba", "cubemap"), &view, &map_plan);
-        ASSERT_TRUE(cube_plan.cube.has_value());
-        ASSERT_FALSE(one_plan.cube.has_value());
-        ASSERT_TRUE(map_plan.cube.has_value() && map_plan.cube->cube_map);
+        ASSERT_TRUE((render::cube_of(cube_plan) != nullptr));
+        ASSERT_FALSE((render::cube_of(one_plan) != nullptr));
+        ASSERT_TRUE((render::cube_of(map_plan) != nullptr) && render::cube_of(map_plan)->cube_map);
         const measure::TruthImage t = truth(cube_plan.camera.view_proj);
         const auto valid = t.valid_mask();
         const measure::Score c = measure::score(cube, t.lit, valid);
         const measure::Score o = measure::score(one, t.lit, valid);
         const measure::Score m = measure::score(map, t.lit, valid);
         std::printf("cube (%d faces): error %.3f %% (as a GL cube map %.3f %%); one perspective map: %.3f %%\n",
-                    cube_plan.cube->drawn(), c.error_pct, m.error_pct, o.error_pct);
+                    render::cube_of(cube_plan)->drawn(), c.error_pct, m.error_pct, o.error_pct);
         EXPECT_LE(m.error_pct, kGoalPct);
         RecordProperty(std::string(&view == &views[0] ? "scene" : "opposite") + "_cube_error_pct", std::to_string(c.error_pct));
         RecordProperty(std::string(&view == &views[0] ? "scene" : "opposite") + "_one_map_error_pct", std::to_string(o.error_pct));
@@ -164,12 +165,12 @@ TEST_F(Cube, OnlyTheFacesThatSeeAVisibleReceiverAreDrawn) {
         glm::lookAt(glm::vec3(-2.5f, 2.8f, 1.5f), glm::vec3(-2.5f, 0.0f, 1.0f), glm::vec3(0.0f, 0.0f, -1.0f));
     render::FramePlan plan;
     const auto v = visibility(settings("cube"), &view, &plan);
-    ASSERT_TRUE(plan.cube.has_value());
-    const int drawn = plan.cube->drawn();
+    ASSERT_TRUE((render::cube_of(plan) != nullptr));
+    const int drawn = render::cube_of(plan)->drawn();
     EXPECT_EQ(face_passes(plan), drawn);
     EXPECT_LT(drawn, 6);
-    EXPECT_TRUE(plan.cube->faces[3].drawn) << "the floor is below the light";
-    EXPECT_FALSE(plan.cube->faces[2].drawn) << "the ceiling is out of view";
+    EXPECT_TRUE(render::cube_of(plan)->faces[3].drawn) << "the floor is below the light";
+    EXPECT_FALSE(render::cube_of(plan)->faces[2].drawn) << "the ceiling is out of view";
     const measure::TruthImage t = truth(plan.camera.view_proj);
     const measure::Score s = measure::score(v, t.lit, t.valid_mask());
     std::printf("%d faces drawn, error %.3f %%\n", drawn, s.error_pct);
@@ -223,7 +224,7 @@ TEST_F(Cube, EveryEncodingFilterAndPathLooksUpTheFaces) {
                     render::FramePlan p;
                     const auto v = visibility(s, nullptr, &p);
                     const bool cube_map = std::string(layout) == "cubemap" && std::string(e) != "depthtex";
-                    EXPECT_EQ(p.cube->cube_map, cube_map) << layout << " " << e;
+                    EXPECT_EQ(render::cube_of(p)->cube_map, cube_map) << layout << " " << e;
                     const measure::Score sc = measure::score(v, t.lit, t.valid_mask());
                     std::printf("--cube-layout %-7s --encoding %-8s --filter %-6s --precision %-7s error %.3f %%\n",
                                 layout, e, f, precision, sc.error_pct);
@@ -261,7 +262,7 @@ TEST_F(Cube, ACubeMapFaceHoldsTheAtlasTileTurnedHalfAround) {
     visibility(s);
     ASSERT_TRUE(renderer->last_plan()->resource("shadow-map")->desc.cube);
     for (int f = 0; f < 6; ++f) {
-        if (!renderer->last_plan()->cube->faces[static_cast<size_t>(f)].drawn) continue;
+        if (!render::cube_of(*renderer->last_plan())->faces[static_cast<size_t>(f)].drawn) continue;
         const auto face = read(renderer->pool().whole("shadow-map", f), 0, 0, 128);
         int differ = 0, deep = 0;
         for (int y = 0; y < 128; ++y)

@@ -3,6 +3,7 @@
 // against the ray-traced truth (src/truth). The bounds were set from measured values with margin;
 // the measured error is recorded as a test property (see the XML output) and printed.
 #include "gl_fixture.h"
+#include "render/techniques/reports.h"
 #include "render/options.h"
 
 #include <cmath>
@@ -40,8 +41,8 @@ protected:
         map_size = map ? map->desc.width : 0;
         const glm::mat4 view_proj = plan.camera.view_proj;
         EXPECT_TRUE(finite(view_proj)) << label;
-        if (plan.light_frustum) {
-            EXPECT_TRUE(finite(plan.light_frustum->view_proj())) << label << ": light frustum";
+        if (render::light_frustum_of(plan)) {
+            EXPECT_TRUE(finite(render::light_frustum_of(plan)->view_proj())) << label << ": light frustum";
         }
         const auto rgba = renderer->read_image();
         std::vector<std::uint8_t> vis(rgba.size() / 4);

@@ -19,6 +19,7 @@
 #include "measure/image_io.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
+#include "render/frames/area_light.h"
 #include "render/options.h"
 #include "scene/course_scene.h"
 #include "scene/primitives.h"
@@ -275,7 +276,7 @@ TEST_F(Soft, AtRadiusZeroEveryMethodIsItsHardCounterpart) {
         area.area_samples = 64;
         const auto got = frame(sc, area, in);
         EXPECT_EQ(got, want) << technique << " with 64 samples of a point light";
-        EXPECT_FALSE(renderer->render(sc, area, in).area) << "a point light needs one sample";
+        EXPECT_FALSE(render::area_of(renderer->render(sc, area, in))) << "a point light needs one sample";
     }
     render::Settings hard = settings("technique=shadowmap");
     hard.light_radius = 0.0f;
@@ -298,9 +299,9 @@ TEST_F(Soft, AStillFrameConvergesToAllSamplesAtOnce) {
     std::vector<std::uint8_t> first, got;
     for (int k = 1; k <= 5; ++k) {
         const render::FramePlan& p = renderer->render(sc, progressive, in);
-        ASSERT_TRUE(p.area);
-        EXPECT_EQ(p.area->done, std::min(32, 8 * k)) << "frame " << k;
-        EXPECT_EQ(p.area->added, k <= 4 ? 8 : 0) << "frame " << k;
+        ASSERT_TRUE(render::area_of(p));
+        EXPECT_EQ(render::area_of(p)->done, std::min(32, 8 * k)) << "frame " << k;
+        EXPECT_EQ(render::area_of(p)->added, k <= 4 ? 8 : 0) << "frame " << k;
         got = renderer->read_image();
         if (k == 1) first = got;
     }
@@ -310,12 +311,12 @@ TEST_F(Soft, AStillFrameConvergesToAllSamplesAtOnce) {
     EXPECT_NE(first, want) << "8 of 32 samples";
     EXPECT_EQ(got, want);
     // The finished sum is kept by a still frame, whatever the frames add.
-    EXPECT_EQ(fresh.render(sc, progressive, in).area->added, 0);
+    EXPECT_EQ(render::area_of(fresh.render(sc, progressive, in))->added, 0);
     // Anything moving starts the sum again.
     scene::Scene moved = sc;
     moved.light.position.x += 0.1f;
     const render::FramePlan& p = renderer->render(moved, progressive, in);
-    EXPECT_EQ(p.area->done, 8);
+    EXPECT_EQ(render::area_of(p)->done, 8);
 }
 
 // A thin pole standing on the ground, lit from the side by a sphere light: its shadow runs along +x

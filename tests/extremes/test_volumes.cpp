@@ -13,6 +13,7 @@
 #include "measure/image_io.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
+#include "render/techniques/reports.h"
 #include "render/options.h"
 #include "scene/course_scene.h"
 #include "scene/gltf_loader.h"
@@ -124,7 +125,7 @@ protected:
         EXPECT_EQ(renderer->check(sc, s, in), "");
         const auto& plan = renderer->render(sc, s, in);
         Result r;
-        if (plan.volumes) r.stats = *plan.volumes;
+        if (render::volumes_of(plan)) r.stats = *render::volumes_of(plan);
         r.score = score_frame(sc, renderer->read_image());
         std::printf("%-34s --volume-method %-5s error %.3f%% (false shadow %.3f%%, false lit %.3f%%), %d depth-pass, "
                     "%d depth-fail caster(s), %d silhouette edge(s), fill %.2f per pixel\n",

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/check.h"
+#include "render/techniques/reports.h"
 #include "render/options.h"
 #include "scene/primitives.h"
 
@@ -54,7 +55,7 @@ protected:
         EXPECT_EQ(render::parse_option(s, "aov", aov), "");
         s.map_size = 256;
         const render::FramePlan& plan = renderer->render(scene_, s, render::offscreen(kW, kH));
-        EXPECT_EQ(plan.cascades.size(), 4u);
+        EXPECT_EQ(render::cascades_of(plan).size(), 4u);
         gl::check_errors("a cascaded frame");
         return renderer->read_image();
     }

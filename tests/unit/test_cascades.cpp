@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "full_caps.h"
+#include "render/techniques/reports.h"
 #include "render/options.h"
 #include "render/plan.h"
 #include "scene/course_scene.h"
@@ -221,8 +222,8 @@ TEST_F(CascadePlan, OnePassPerCascadeIntoItsTileAndOneLookup) {
     ASSERT_EQ(render::parse_option(settings, "cascades", "3"), "");
     settings.map_size = 512;
     const render::FramePlan p = make();
-    ASSERT_EQ(p.cascades.size(), 3u);
-    EXPECT_EQ(p.cascades_why, "--cascades 3");
+    ASSERT_EQ(render::cascades_of(p).size(), 3u);
+    EXPECT_EQ(render::cascades_why_of(p), "--cascades 3");
     const render::PlannedResource* map = p.resource("shadow-map");
     ASSERT_TRUE(map);
     EXPECT_EQ(map->desc.width, 1024);
@@ -248,7 +249,7 @@ TEST_F(CascadePlan, OnePassPerCascadeIntoItsTileAndOneLookup) {
         EXPECT_EQ(pass.target.y, tiles[i][1]);
         EXPECT_TRUE(pass.target.clip) << "each pass's draws stay in its tile";
         EXPECT_FALSE(pass.clear) << "the atlas was cleared whole";
-        EXPECT_EQ(pass.view_proj, p.cascades[static_cast<size_t>(i)].frustum.view_proj());
+        EXPECT_EQ(pass.view_proj, render::cascades_of(p)[static_cast<size_t>(i)].frustum.view_proj());
     }
     const render::Pass& cam = p.passes.back();
     ASSERT_EQ(cam.name, "camera");
@@ -280,7 +281,7 @@ int cascades_run(const render::FramePlan& p, int object = -1, int* drawing = nul
 TEST_F(CascadePlan, AStillCascadeIsSkippedAndAMovedCasterRedrawsOnlyTheCascadesThatDrawIt) {
     ASSERT_EQ(render::parse_option(settings, "cascades", "4"), "");
     const render::FramePlan first = make();
-    ASSERT_EQ(first.cascades.size(), 4u);
+    ASSERT_EQ(render::cascades_of(first).size(), 4u);
     EXPECT_EQ(cascades_run(first), 4);
     const render::FramePlan second = make(&first);
     EXPECT_EQ(cascades_run(second), 0);
@@ -312,17 +313,17 @@ TEST_F(CascadePlan, AStillCascadeIsSkippedAndAMovedCasterRedrawsOnlyTheCascadesT
 TEST_F(CascadePlan, AutoExplainsItsChoiceAndAPointLightGetsOneMap) {
     ASSERT_EQ(render::parse_option(settings, "cascades", "auto"), "");
     render::FramePlan p = make();
-    EXPECT_EQ(p.cascades.size(), 3u);
-    EXPECT_EQ(p.cascades_why.rfind("auto: 3 cascades: the receivers in view span view depths", 0), 0u) << p.cascades_why;
+    EXPECT_EQ(render::cascades_of(p).size(), 3u);
+    EXPECT_EQ(render::cascades_why_of(p).rfind("auto: 3 cascades: the receivers in view span view depths", 0), 0u) << render::cascades_why_of(p);
     s.light.type = scene::LightType::Point;
     s.light.position = glm::vec3(0.0f, 50.0f, 0.0f);
     p = make();
-    EXPECT_TRUE(p.cascades.empty());
-    EXPECT_FALSE(p.cube.has_value());
-    EXPECT_EQ(p.cascades_why, "auto: one map: the point light is outside the scene's bounds");
+    EXPECT_TRUE(render::cascades_of(p).empty());
+    EXPECT_FALSE((render::cube_of(p) != nullptr));
+    EXPECT_EQ(render::cascades_why_of(p), "auto: one map: the point light is outside the scene's bounds");
     ASSERT_EQ(render::parse_option(settings, "cascades", "4"), "");
     p = make();
-    EXPECT_TRUE(p.cascades.empty());
+    EXPECT_TRUE(render::cascades_of(p).empty());
     ASSERT_FALSE(p.notes.empty());
     EXPECT_EQ(p.notes.back(), "--cascades 4: one map instead, cascades need a directional light");
     EXPECT_TRUE(p.has_pass("shadow-map"));
@@ -333,7 +334,7 @@ TEST_F(CascadePlan, TheAtlasIsCutToTheContextsMaximum) {
     settings.map_size = 16384;
     caps.max_texture_size = caps.max_renderbuffer_size = caps.max_viewport_width = caps.max_viewport_height = 8192;
     const render::FramePlan p = make();
-    ASSERT_EQ(p.cascades.size(), 4u);
+    ASSERT_EQ(render::cascades_of(p).size(), 4u);
     EXPECT_EQ(p.resource("shadow-map")->desc.width, 8192);
     bool noted = false;
     for (const auto& n : p.notes) noted = noted || n.find("each map cut to 4096") != std::string::npos;

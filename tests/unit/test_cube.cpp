@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "full_caps.h"
+#include "render/techniques/reports.h"
 #include "render/options.h"
 #include "render/plan.h"
 #include "scene/primitives.h"
@@ -182,13 +183,13 @@ TEST_F(CubePlan, OnePassPerDrawnFaceIntoItsTileOfOneAtlas) {
     ASSERT_EQ(render::parse_option(settings, "cascades", "cube"), "");
     settings.map_size = 512;
     const render::FramePlan p = make();
-    ASSERT_TRUE(p.cube.has_value());
-    EXPECT_EQ(p.cascades_why, "--cascades cube");
+    ASSERT_TRUE((render::cube_of(p) != nullptr));
+    EXPECT_EQ(render::cascades_why_of(p), "--cascades cube");
     const render::PlannedResource* map = p.resource("shadow-map");
     ASSERT_NE(map, nullptr);
     EXPECT_EQ(map->desc.width, 1536);
     EXPECT_EQ(map->desc.height, 1024);
-    EXPECT_EQ(face_passes(p), p.cube->drawn());
+    EXPECT_EQ(face_passes(p), render::cube_of(p)->drawn());
     for (const render::Pass& pass : p.passes)
         if (pass.name.rfind("shadow-map face ", 0) == 0) {
             EXPECT_TRUE(pass.target.clip);
@@ -208,12 +209,12 @@ TEST_F(CubePlan, ACubeMapLayoutIsOneSquareTextureOfSixFacesEachDrawnIntoItsFace)
     ASSERT_EQ(render::parse_option(settings, "filter", "pcf4x4"), "");
     settings.map_size = 512;
     const render::FramePlan p = make();
-    ASSERT_TRUE(p.cube.has_value());
-    EXPECT_TRUE(p.cube->cube_map);
+    ASSERT_TRUE((render::cube_of(p) != nullptr));
+    EXPECT_TRUE(render::cube_of(p)->cube_map);
     // Exactly 90 degrees a face; the faces are drawn for receivers within the filter's guard.
-    EXPECT_EQ(p.cube->tangent, 1.0f);
-    EXPECT_GT(p.cube->reach, 1.0f);
-    EXPECT_EQ(p.cube->guard, 2);
+    EXPECT_EQ(render::cube_of(p)->tangent, 1.0f);
+    EXPECT_GT(render::cube_of(p)->reach, 1.0f);
+    EXPECT_EQ(render::cube_of(p)->guard, 2);
     const render::PlannedResource* map = p.resource("shadow-map");
     ASSERT_NE(map, nullptr);
     EXPECT_TRUE(map->desc.cube);
@@ -229,15 +230,15 @@ TEST_F(CubePlan, ACubeMapLayoutIsOneSquareTextureOfSixFacesEachDrawnIntoItsFace)
             EXPECT_EQ(pass.target.width, 512);
             EXPECT_NE(pass.detail.find("cube-map face"), std::string::npos) << pass.detail;
         }
-    EXPECT_EQ(static_cast<int>(faces.size()), p.cube->drawn());
+    EXPECT_EQ(static_cast<int>(faces.size()), render::cube_of(p)->drawn());
     for (size_t i = 0; i < faces.size(); ++i)
-        EXPECT_TRUE(p.cube->faces[static_cast<size_t>(faces[i])].drawn) << faces[i];
+        EXPECT_TRUE(render::cube_of(p)->faces[static_cast<size_t>(faces[i])].drawn) << faces[i];
     EXPECT_NE(p.to_text().find("a GL cube map"), std::string::npos);
     // A depth texture cannot be a cube map in WebGL 1: the atlas, with a note.
     ASSERT_EQ(render::parse_option(settings, "encoding", "depthtex"), "");
     const render::FramePlan atlas = make();
-    ASSERT_TRUE(atlas.cube.has_value());
-    EXPECT_FALSE(atlas.cube->cube_map);
+    ASSERT_TRUE((render::cube_of(atlas) != nullptr));
+    EXPECT_FALSE(render::cube_of(atlas)->cube_map);
     EXPECT_FALSE(atlas.resource("shadow-map")->desc.cube);
     bool said = false;
     for (const std::string& n : atlas.notes) said |= n.find("no cube-map depth texture") != std::string::npos;
@@ -247,21 +248,21 @@ TEST_F(CubePlan, ACubeMapLayoutIsOneSquareTextureOfSixFacesEachDrawnIntoItsFace)
 TEST_F(CubePlan, AutoPicksACubeForABulbInARoomAndSaysWhy) {
     ASSERT_EQ(render::parse_option(settings, "cascades", "auto"), "");
     const render::FramePlan p = make();
-    EXPECT_TRUE(p.cube.has_value());
-    EXPECT_EQ(p.cascades_why, "auto: a cube: the point light is inside the receivers' bounds");
+    EXPECT_TRUE((render::cube_of(p) != nullptr));
+    EXPECT_EQ(render::cascades_why_of(p), "auto: a cube: the point light is inside the receivers' bounds");
     s.light.position = glm::vec3(0.0f, 20.0f, 0.0f);
     const render::FramePlan one = make();
-    EXPECT_FALSE(one.cube.has_value());
-    EXPECT_TRUE(one.cascades.empty());
-    EXPECT_EQ(one.cascades_why, "auto: one map: the point light is outside the scene's bounds");
+    EXPECT_FALSE((render::cube_of(one) != nullptr));
+    EXPECT_TRUE(render::cascades_of(one).empty());
+    EXPECT_EQ(render::cascades_why_of(one), "auto: one map: the point light is outside the scene's bounds");
 }
 
 TEST_F(CubePlan, ACubeForALightThatIsNotAPointIsOneMapWithANote) {
     ASSERT_EQ(render::parse_option(settings, "cascades", "cube"), "");
     s.light.type = scene::LightType::Directional;
     const render::FramePlan p = make();
-    EXPECT_FALSE(p.cube.has_value());
-    EXPECT_EQ(p.cascades_why, "--cascades cube -> one map (the light is not a point light)");
+    EXPECT_FALSE((render::cube_of(p) != nullptr));
+    EXPECT_EQ(render::cascades_why_of(p), "--cascades cube -> one map (the light is not a point light)");
     ASSERT_FALSE(p.notes.empty());
     EXPECT_NE(p.notes.back().find("one map instead"), std::string::npos);
 }

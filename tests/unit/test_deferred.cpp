@@ -10,7 +10,7 @@
 
 #include "full_caps.h"
 #include "plan_names.h"
-#include "render/deferred.h"
+#include "render/frames/deferred.h"
 #include "render/lights.h"
 #include "render/options.h"
 #include "render/plan.h"

@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "full_caps.h"
+#include "render/techniques/reports.h"
 #include "render/plan.h"
 #include "scene/course_scene.h"
 #include "shadow/pcf.h"
@@ -80,8 +81,8 @@ TEST_F(PlanTest, TheShadowMapIsAPassIntoAResourceTheCameraPassReads) {
             EXPECT_FLOAT_EQ(std::get<float>(u.value), shadow::auto_bias_constant(s.encoding, s.precision));
         }
     }
-    ASSERT_TRUE(p.light_frustum);
-    EXPECT_TRUE(p.light_frustum->perspective);
+    ASSERT_TRUE(render::light_frustum_of(p));
+    EXPECT_TRUE(render::light_frustum_of(p)->perspective);
 }
 
 TEST_F(PlanTest, ADepthTextureMapHasNoColour) {
@@ -137,18 +138,18 @@ TEST_F(PlanTest, AnUnchangedMapIsReusedAndAMovedOneIsNot) {
 
 TEST_F(PlanTest, TheMapIsFittedToWhatTheCameraSees) {
     const FramePlan p = make();
-    ASSERT_TRUE(p.texel_use);
-    EXPECT_GT(*p.texel_use, 0.5f) << "the tight fit covers most of the map with the table in view";
+    ASSERT_TRUE(render::texel_use_of(p));
+    EXPECT_GT(*render::texel_use_of(p), 0.5f) << "the tight fit covers most of the map with the table in view";
     EXPECT_NE(p.passes[0].detail.find("texel use"), std::string::npos) << p.passes[0].detail;
     EXPECT_NE(p.to_text().find("texel use"), std::string::npos);
     const auto j = nlohmann::json::parse(p.to_json());
-    EXPECT_FLOAT_EQ(static_cast<float>(j["light_frustum"]["texel_use"].get<double>()), *p.texel_use);
+    EXPECT_FLOAT_EQ(static_cast<float>(j["light_frustum"]["texel_use"].get<double>()), *render::texel_use_of(p));
     // The fit follows the camera: another view, another map.
     render::FrameInputs in = kIn;
     in.view = glm::lookAt(glm::vec3(3.0f, 2.0f, 3.0f), glm::vec3(0.5f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
     const FramePlan other = render::plan(course.scene, s, caps, in, &p);
     EXPECT_FALSE(other.passes[0].skipped);
-    EXPECT_NE(other.light_frustum->view_proj(), p.light_frustum->view_proj());
+    EXPECT_NE(render::light_frustum_of(other)->view_proj(), render::light_frustum_of(p)->view_proj());
     // A caster far out of the light's window is not drawn into the map.
     auto& teapot = course.scene.objects[static_cast<size_t>(course.teapot)];
     teapot.world = glm::translate(glm::mat4(1.0f), glm::vec3(40.0f, 0.0f, 0.0f)) * teapot.world;
@@ -227,7 +228,7 @@ TEST_F(PlanTest, InputsOverrideTheViewTheLightAndTheOutput) {
     EXPECT_EQ(t.x, 10);
     EXPECT_TRUE(t.clip);
     EXPECT_EQ(p.camera.view, glm::mat4(2.0f));
-    EXPECT_FALSE(p.light_frustum->perspective) << "the input's directional light";
+    EXPECT_FALSE(render::light_frustum_of(p)->perspective) << "the input's directional light";
     EXPECT_EQ(course.scene.light.type, scene::LightType::Point) << "the scene is not edited";
 }
 

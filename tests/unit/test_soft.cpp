@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/frames/area_light.h"
 #include "render/options.h"
 #include "render/plan.h"
 #include "scene/course_scene.h"
@@ -82,9 +83,9 @@ TEST(AreaPlan, EachSampleDrawsTheTechniqueAndAddsOneCount) {
     s.area_samples = 6;
     const render::FrameInputs in = render::offscreen(64, 64);
     const render::FramePlan p = render::plan(course.scene, s, caps(), in);
-    ASSERT_TRUE(p.area);
-    EXPECT_EQ(p.area->total, 6);
-    EXPECT_EQ(p.area->done, 6);
+    ASSERT_TRUE(render::area_of(p));
+    EXPECT_EQ(render::area_of(p)->total, 6);
+    EXPECT_EQ(render::area_of(p)->done, 6);
     EXPECT_EQ(count_passes(p, "shadow-map"), 6);
     EXPECT_EQ(count_passes(p, "area-camera"), 6);
     EXPECT_EQ(count_passes(p, "area-add"), 6);
@@ -103,7 +104,7 @@ TEST(AreaPlan, EachSampleDrawsTheTechniqueAndAddsOneCount) {
 
     // A still frame reuses the sum; progressive frames add their share.
     const render::FramePlan again = render::plan(course.scene, s, caps(), in, &p);
-    EXPECT_EQ(again.area->added, 0);
+    EXPECT_EQ(render::area_of(again)->added, 0);
     EXPECT_EQ(count_passes(again, "area-add"), 0);
     EXPECT_TRUE(again.resource("area-light")->reused);
     s.area_per_frame = 4;
@@ -111,15 +112,15 @@ TEST(AreaPlan, EachSampleDrawsTheTechniqueAndAddsOneCount) {
     const render::FramePlan a = render::plan(course.scene, s, caps(), in);
     const render::FramePlan b = render::plan(course.scene, s, caps(), in, &a);
     const render::FramePlan c = render::plan(course.scene, s, caps(), in, &b);
-    EXPECT_EQ(a.area->done, 4);
-    EXPECT_EQ(b.area->done, 8);
-    EXPECT_EQ(c.area->done, 10);
-    EXPECT_EQ(c.area->added, 2);
+    EXPECT_EQ(render::area_of(a)->done, 4);
+    EXPECT_EQ(render::area_of(b)->done, 8);
+    EXPECT_EQ(render::area_of(c)->done, 10);
+    EXPECT_EQ(render::area_of(c)->added, 2);
     EXPECT_FALSE(b.passes[static_cast<size_t>(0)].clear && b.passes[0].name == "area-add");
     // Moving the camera starts again.
     scene::Scene moved = course.scene;
     moved.camera.view = glm::translate(moved.camera.view, glm::vec3(0.1f, 0.0f, 0.0f));
-    EXPECT_EQ(render::plan(moved, s, caps(), in, &c).area->done, 4);
+    EXPECT_EQ(render::area_of(render::plan(moved, s, caps(), in, &c))->done, 4);
 }
 
 TEST(AreaPlan, WithoutARadiusOrWithAViewOfOneSampleItSaysWhy) {
@@ -127,13 +128,13 @@ TEST(AreaPlan, WithoutARadiusOrWithAViewOfOneSampleItSaysWhy) {
     render::Settings s;
     s.area_samples = 16;  // the course light's radius is 0
     const render::FramePlan p = render::plan(course.scene, s, caps(), render::offscreen(64, 64));
-    EXPECT_FALSE(p.area);
+    EXPECT_FALSE(render::area_of(p));
     ASSERT_FALSE(p.notes.empty());
     EXPECT_NE(p.notes.back().find("the light has no radius"), std::string::npos) << p.notes.back();
     s.light_radius = 0.3f;
     s.aov = render::Aov::LightDepth;
     const render::FramePlan q = render::plan(course.scene, s, caps(), render::offscreen(64, 64));
-    EXPECT_FALSE(q.area);
+    EXPECT_FALSE(render::area_of(q));
     EXPECT_NE(q.notes.back().find("one hard sample"), std::string::npos) << q.notes.back();
 }
 

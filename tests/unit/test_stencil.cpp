@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "full_caps.h"
+#include "render/frames/area_light.h"
+#include "render/techniques/reports.h"
 #include "render/options.h"
 #include "render/plan.h"
 #include "scene/course_scene.h"
@@ -222,7 +224,7 @@ TEST_F(StencilPlan, OutlineWorksBesideEveryTechnique) {
     s.area_samples = 4;
     s.light_radius = 0.3f;
     const FramePlan area = make();
-    ASSERT_TRUE(area.area.has_value());
+    ASSERT_TRUE((render::area_of(area) != nullptr));
     EXPECT_EQ(area.passes.back().name, "outline-draw");
     // Not on an AOV: a note instead.
     s.area_samples = 1;
@@ -346,8 +348,8 @@ TEST_F(StencilPlan, ThePortalKeepsToItsBitAndDrawsTheOtherSceneWithItsOwnMap) {
     }
     ASSERT_EQ(other.reads().size(), 1u);
     EXPECT_EQ(p.resources[static_cast<size_t>(other.reads()[0])].desc.name, "portal shadow-map");
-    ASSERT_TRUE(p.light_frustum && before.light_frustum);
-    EXPECT_EQ(p.light_frustum->view_proj(), before.light_frustum->view_proj()) << "this scene's light stays the plan's";
+    ASSERT_TRUE(render::light_frustum_of(p) && render::light_frustum_of(before));
+    EXPECT_EQ(render::light_frustum_of(p)->view_proj(), render::light_frustum_of(before)->view_proj()) << "this scene's light stays the plan's";
     // Gooch's 16 planes count in 5 bits: with three effects' bits that is one more than 7.
     s.technique = render::Technique::Gooch;
     s.gooch_planes = 16;

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "full_caps.h"
+#include "render/techniques/reports.h"
 #include "render/plan.h"
 #include "scene/course_scene.h"
 #include "scene/primitives.h"
@@ -199,10 +200,10 @@ TEST(VolumesPlan, AmbientThenCountsThenLitWhereTheCountIsZero) {
     // The teapot is open: its near caps are counted too (the camera pass culls its inside).
     EXPECT_EQ(pass_names(p), (std::vector<std::string>{"camera", "volumes-zpass", "volumes-zpass-caps", "volumes-lit"}));
     ASSERT_EQ(p.passes.size(), 4u);
-    ASSERT_TRUE(p.volumes);
-    EXPECT_EQ(p.volumes->zfail_casters, 0);  // the scene's camera is outside every volume
-    EXPECT_GT(p.volumes->silhouette_edges, 0);
-    EXPECT_GT(p.volumes->fill_per_pixel, 0.0);
+    ASSERT_TRUE(render::volumes_of(p));
+    EXPECT_EQ(render::volumes_of(p)->zfail_casters, 0);  // the scene's camera is outside every volume
+    EXPECT_GT(render::volumes_of(p)->silhouette_edges, 0);
+    EXPECT_GT(render::volumes_of(p)->fill_per_pixel, 0.0);
     const auto& cam = p.passes[0];
     ASSERT_TRUE(cam.clear && cam.clear->stencil);
     for (const auto& d : cam.draws) EXPECT_NE(d.variant.key().find("IN_SHADOW"), std::string::npos);
@@ -232,13 +233,13 @@ TEST(VolumesPlan, AutoTurnsToDepthFailWithTheEyeInAShadow) {
     render::Settings s;
     s.technique = render::Technique::Volumes;
     const render::FramePlan p = render::plan(course.scene, s, full_caps(), render::offscreen(64, 64));
-    ASSERT_TRUE(p.volumes);
-    EXPECT_GE(p.volumes->zfail_casters, 1);
+    ASSERT_TRUE(render::volumes_of(p));
+    EXPECT_GE(render::volumes_of(p)->zfail_casters, 1);
     EXPECT_TRUE(p.has_pass("volumes-zfail"));
     EXPECT_TRUE(p.has_pass("volumes-zfail-caps"));
     s.volume_method = render::VolumeMethod::ZPass;
     const render::FramePlan forced = render::plan(course.scene, s, full_caps(), render::offscreen(64, 64));
-    EXPECT_EQ(forced.volumes->zfail_casters, 0);
+    EXPECT_EQ(render::volumes_of(forced)->zfail_casters, 0);
     EXPECT_FALSE(forced.has_pass("volumes-zfail"));
 }
 

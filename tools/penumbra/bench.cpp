@@ -23,6 +23,7 @@
 #include "measure.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
+#include "render/techniques/reports.h"
 #include "render/options.h"
 #include "render/renderer.h"
 #include "scene/primitives.h"
@@ -275,7 +276,7 @@ void silhouette_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& 
             s.aov = render::Aov::Visibility;
             const render::FramePlan& plan = r.render(c.still, s, in);
             if (const auto* m = plan.resource("shadow-map")) row.bytes = m->desc.bytes();
-            if (plan.volumes) set_volume_stats(row, *plan.volumes);
+            if (const render::VolumeStats* v = render::volumes_of(plan)) set_volume_stats(row, *v);
             row.score = measure::score(red_channel(r.read_image()), truth.lit, valid, nullptr);
             std::fprintf(stderr, "silhouette %-10s %-12s error %6.2f %%%s\n", row.scene.c_str(), row.technique.c_str(),
                          row.score.error_pct,
@@ -448,8 +449,8 @@ void run_sweep(Sweep& w) {
             const auto vis = red_channel(r.read_image());
             row.score = measure::score(vis, truth.lit, valid, o.soft_samples > 0 ? &truth.soft : nullptr);
             row.bytes = map ? map->desc.bytes() : 0;
-            if (map && plan.texel_use) row.texel_use_pct = 100.0 * static_cast<double>(*plan.texel_use);
-            if (plan.volumes) set_volume_stats(row, *plan.volumes);
+            if (map && render::texel_use_of(plan)) row.texel_use_pct = 100.0 * static_cast<double>(*render::texel_use_of(plan));
+            if (const render::VolumeStats* v = render::volumes_of(plan)) set_volume_stats(row, *v);
             const bool pictured = s.technique == render::Technique::ShadowMap ? s.map_size == 1024
                                   : s.technique == render::Technique::Volumes ? s.volume_method == render::VolumeMethod::Auto
                                                                                : true;

@@ -21,6 +21,7 @@
 #include "gl/caps.h"
 #include "gl/check.h"
 #include "measure/metrics.h"
+#include "render/techniques/reports.h"
 #include "render/options.h"
 
 namespace fs = std::filesystem;
@@ -193,12 +194,12 @@ void run_cascades_bench(const BenchOptions& in) {
                 row.all = measure::score(vis, truths.front().lit, valid0);
                 row.bands = measure::score_by_band(vis, truths.front().lit, valid0, depth, edges);
                 row.bytes = plan.resource("shadow-map") ? plan.resource("shadow-map")->desc.bytes() : 0;
-                for (const auto& k : plan.cascades) row.texels.push_back(k.texel);
-                if (plan.cube) {
+                for (const auto& k : render::cascades_of(plan)) row.texels.push_back(k.texel);
+                if (render::cube_of(plan)) {
                     // A face's texel 1 unit from the light, along its axis (tangents 2T / tile).
-                    row.texels.push_back(2.0f * plan.cube->tangent / static_cast<float>(plan.cube->tile));
-                } else if (plan.cascades.empty() && plan.light_frustum && !plan.light_frustum->perspective)
-                    row.texels.push_back(2.0f / plan.light_frustum->proj[0][0] / static_cast<float>(c.map));
+                    row.texels.push_back(2.0f * render::cube_of(plan)->tangent / static_cast<float>(render::cube_of(plan)->tile));
+                } else if (render::cascades_of(plan).empty() && render::light_frustum_of(plan) && !render::light_frustum_of(plan)->perspective)
+                    row.texels.push_back(2.0f / render::light_frustum_of(plan)->proj[0][0] / static_cast<float>(c.map));
             } else {
                 row.flips += measure::flip_pct(measure::lit_flags(prev), measure::lit_flags(vis),
                                                truths[f - 1].valid_mask(), truths[f].valid_mask()) /

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "render/techniques/reports.h"
 #include "render/techniques/technique.h"
 #include "shadow/gooch.h"
 #include "shadow/planar.h"
@@ -122,6 +123,7 @@ bool texture_receiver(const PlanContext& c, int object) {
 class GoochModule : public Module {
 public:
     std::string_view name() const override { return "gooch"; }
+    std::string_view soft_by_itself() const override { return "its planes take the light's size"; }
 
     std::string check(const PlanContext& c) const override {
         if (texture_method(c)) return {};
@@ -159,8 +161,7 @@ public:
         }
         const shadow::TightFit fit = fit_to_view(c);
         const shadow::LightFrustum& f = fit.frustum;
-        c.plan.light_frustum = f;
-        c.plan.texel_use = fit.texel_use;
+        c.plan.put(LightViewReport{f, fit.texel_use});
         std::vector<int> casters;
         for (int k : fit.casters) {
             const int i = c.casters[static_cast<size_t>(k)];
@@ -228,7 +229,7 @@ public:
             cam.detail += ", no shadows";
             return;
         }
-        const shadow::LightFrustum& f = *c.plan.light_frustum;
+        const shadow::LightFrustum& f = *light_frustum_of(c.plan);
         const glm::vec4 row = depth_row(f);
         const float dc = glm::dot(row, glm::vec4(*caster_center(c), 1.0f));
         const glm::vec3 spread = tap_spread(c, f, dc);

@@ -30,6 +30,7 @@
 // measure/effect_truth.h, adds it as an object that casts none).
 #include <cstdio>
 
+#include "render/techniques/reports.h"
 #include "render/techniques/technique.h"
 
 namespace penumbra::render {
@@ -179,8 +180,8 @@ private:
         }
         // The shadow map module records its light's frustum in the plan: that of this scene's
         // light stays the plan's (what penumbra plan prints, what the bench reads).
-        const std::optional<shadow::LightFrustum> frustum = c.plan.light_frustum;
-        const std::optional<float> texel_use = c.plan.texel_use;
+        std::optional<LightViewReport> light_view;
+        if (const LightViewReport* r = c.plan.find<LightViewReport>()) light_view = *r;
         const Module& sm = technique_module(Technique::ShadowMap);
         if (shadows) sm.before_camera(o);
 
@@ -205,8 +206,8 @@ private:
         else p.detail += ", no shadows (--technique none)";
         set_lit_draws(p, items);
         c.add_pass(std::move(p));
-        c.plan.light_frustum = frustum;
-        c.plan.texel_use = texel_use;
+        if (light_view) c.plan.put(*light_view);
+        else c.plan.drop(LightViewReport::kKey);
     }
 };
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "render/techniques/reports.h"
 #include "render/techniques/technique.h"
 #include "shadow/cube.h"
 #include "shadow/pcf.h"
@@ -165,16 +166,22 @@ void add_packing(ContentKey& key, const PlanContext& c) {
     key.add(c.depth_path.mediump);
 }
 
-// --cascades N > 1 or auto (0): how many this frame has and why; c.plan.cascades_why says it.
+// The frame's cascades report (made on first use).
+CascadesReport& cascades_report(PlanContext& c) {
+    if (CascadesReport* r = c.plan.find<CascadesReport>()) return *r;
+    return c.plan.put(CascadesReport{});
+}
+
+// --cascades N > 1 or auto (0): how many this frame has and why; the cascades report says it.
 int cascade_count(PlanContext& c, const ShadowBounds& b) {
     const int asked = c.settings.cascades;
     if (asked == 0) {
         std::string why;
         const int n = shadow::auto_cascade_count(c.light, b.receivers, c.plan.camera.view, c.plan.camera.proj, why);
-        c.plan.cascades_why = "auto: " + why;
+        cascades_report(c).why = "auto: " + why;
         return n;
     }
-    c.plan.cascades_why = "--cascades " + std::to_string(asked);
+    cascades_report(c).why = "--cascades " + std::to_string(asked);
     return asked;
 }
 
@@ -183,7 +190,7 @@ int cascade_count(PlanContext& c, const ShadowBounds& b) {
 // coordinates, its tile of the atlas and its extents for the slope bias; the slices' far ends and
 // blend bands; the camera's view depth.
 void add_cascade_uniforms(const PlanContext& c, Binding& b, const ResourceDesc& map) {
-    const auto& cascades = c.plan.cascades;
+    const auto& cascades = cascades_of(c.plan);
     const float w = static_cast<float>(map.width), h = static_cast<float>(map.height);
     const float tile = w / 2.0f;
     glm::vec4 ends(0.0f), bands(0.0f);
@@ -247,6 +254,8 @@ void add_cube_uniforms(const shadow::CubeFit& fit, const scene::Light& light, Bi
 class ShadowMapModule : public Module {
 public:
     std::string_view name() const override { return "shadowmap"; }
+    bool own_aov(Aov a) const override { return a == Aov::LightDepth || a == Aov::Cascades; }
+    bool shades_deferred() const override { return true; }
 
     std::string check(const PlanContext& c) const override {
         if (c.settings.encoding == shadow::Encoding::DepthTex && !c.caps.depth_texture)
@@ -279,8 +288,7 @@ public:
         // shadow them; only those casters go into the map.
         const shadow::TightFit fit = fit_to_view(c);
         const shadow::LightFrustum& f = fit.frustum;
-        c.plan.light_frustum = f;
-        c.plan.texel_use = fit.texel_use;
+        c.plan.put(LightViewReport{f, fit.texel_use});
         std::vector<int> casters;
         for (int k : fit.casters) casters.push_back(c.casters[static_cast<size_t>(k)]);
 
@@ -337,12 +345,11 @@ public:
         shadow::CascadeFit fit =
             shadow::fit_cascades(c.light, b.receivers, b.casters, c.plan.camera.view, c.plan.camera.proj, o, &why);
         if (fit.cascades.empty()) {
-            c.plan.notes.push_back(c.plan.cascades_why + ": one map instead, " + why);
-            c.plan.cascades_why += " -> one map (" + why + ")";
+            c.plan.notes.push_back(cascades_report(c).why + ": one map instead, " + why);
+            cascades_report(c).why += " -> one map (" + why + ")";
             return false;
         }
-        c.plan.light_frustum = fit.cascades.front().frustum;
-        c.plan.texel_use = shadow::texel_use(fit.cascades.front().frustum, fit.visible);
+        c.plan.put(LightViewReport{fit.cascades.front().frustum, shadow::texel_use(fit.cascades.front().frustum, fit.visible)});
 
         // Each cascade's tile has its own key: one whose window and casters are where they were in
         // the last frame is not drawn again, so a caster that moves redraws only the cascades that
@@ -371,7 +378,7 @@ public:
             c.add_pass(std::move(p));
         }
         clear_atlas_once(c, first);
-        c.plan.cascades = std::move(fit.cascades);
+        cascades_report(c).list = std::move(fit.cascades);
         return true;
     }
 
@@ -383,11 +390,11 @@ public:
         const Settings& s = c.settings;
         bool want = s.cascades == Settings::kCube;
         if (want) {
-            c.plan.cascades_why = "--cascades cube";
+            cascades_report(c).why = "--cascades cube";
         } else if (s.cascades == 0 && c.light.type != scene::LightType::Directional) {
             std::string why;
             want = shadow::cube_wanted(c.light, b.receivers, b.casters, why);
-            c.plan.cascades_why = "auto: " + why;
+            cascades_report(c).why = "auto: " + why;
         }
         if (!want) return false;
         bool cube_map = s.cube_map;
@@ -411,8 +418,8 @@ public:
         shadow::CubeFit fit = shadow::fit_cube(c.light, b.receivers, b.casters, c.plan.camera.view_proj, size,
                                                cube_guard(s, size), &why, cube_map);
         if (fit.drawn() == 0) {
-            c.plan.notes.push_back(c.plan.cascades_why + ": one map instead, " + why);
-            c.plan.cascades_why += " -> one map (" + why + ")";
+            c.plan.notes.push_back(cascades_report(c).why + ": one map instead, " + why);
+            cascades_report(c).why += " -> one map (" + why + ")";
             return false;
         }
         ResourceDesc desc = map_desc(c, fit.atlas_width, fit.atlas_height);
@@ -424,7 +431,7 @@ public:
         for (int f = 0; f < shadow::kCubeFaces; ++f) {
             const shadow::CubeFace& face = fit.faces[static_cast<size_t>(f)];
             if (!face.drawn) continue;
-            if (!c.plan.light_frustum) c.plan.light_frustum = face.frustum;
+            if (!light_frustum_of(c.plan)) c.plan.put(LightViewReport{face.frustum, std::nullopt});
             int cut_outs = 0;
             Pass p = tile_pass(c, face.casters, c.named(kMap) + " face " + shadow::cube_face_name(f),
                                {r, size, size, face.tile_x, face.tile_y, true, f}, face.frustum.view_proj(), cut_outs);
@@ -450,7 +457,7 @@ public:
             c.add_pass(std::move(p));
         }
         if (!cube_map) clear_atlas_once(c, first);  // a cube map's faces are whole framebuffers
-        c.plan.cube = std::move(fit);
+        c.plan.put(CubeReport{std::move(fit)});
         return true;
     }
 
@@ -462,7 +469,7 @@ public:
                                    "atlas layout shows the six faces)");
             return false;
         }
-        const shadow::LightFrustum& f = *c.plan.light_frustum;
+        const shadow::LightFrustum& f = *light_frustum_of(c.plan);
         Pass p;
         p.name = "light-depth view";
         p.module = "shadowmap";
@@ -492,11 +499,11 @@ public:
             return;
         }
         const Settings& s = c.settings;
-        const shadow::LightFrustum& f = *c.plan.light_frustum;
-        const auto& cascades = c.plan.cascades;
+        const shadow::LightFrustum& f = *light_frustum_of(c.plan);
+        const auto& cascades = cascades_of(c.plan);
         const ResourceDesc& map = c.plan.resources[static_cast<size_t>(r)].desc;
         // One texel of the map, or of a cascade's tile (its lookups work in the tile's coordinates).
-        const auto& cube = c.plan.cube;
+        const shadow::CubeFit* cube = cube_of(c.plan);
         const float texel =
             1.0f / static_cast<float>(cube ? cube->tile : cascades.empty() ? map.width : map.width / 2);
         Binding b{"shadow lookup",
@@ -541,7 +548,7 @@ public:
             lf.pcss_search = s.pcss_search;
             lf.pcss_taps = s.pcss_taps;
             lf.cascades = static_cast<int>(cascades.size());
-            lf.cube = cube.has_value();
+            lf.cube = cube != nullptr;
             lf.cube_map = cube && cube->cube_map;
             lf.cascades_aov = s.aov == Aov::Cascades;
             it.bindings |= bit;

@@ -84,6 +84,18 @@ struct PlanContext {
     std::string prefix;
     bool beyond = false;
 
+    // A context of `scene` on `plan`: no objects yet (the caller lists them), no target.
+    static PlanContext of(const scene::Scene& scene, const Settings& settings, const gl::Caps& caps,
+                          const FrameInputs& inputs, const FramePlan* previous, FramePlan& plan, scene::Light light) {
+        return {scene, settings, caps, inputs, previous, plan, std::move(light), {}, {}, {}, {}, {}, {}, false};
+    }
+    // The same frame's opaque objects and casters with other settings into another target (a
+    // hard visibility the frame then uses: a light sample's, the one to blur); no translucent
+    // objects (they are drawn once, into the frame's image).
+    PlanContext with(const Settings& s, TargetRef target) const {
+        return {scene, s, caps, inputs, previous, plan, light, drawable, casters, depth_path, target, {}, {}, false};
+    }
+
     // Declares a resource (once per name) and returns its index. With a non-empty `content` key
     // equal to the previous plan's for the same description, it is marked reused.
     int add_resource(ResourceDesc desc, std::string content, std::string purpose);
@@ -129,11 +141,36 @@ public:
     virtual void after_camera(PlanContext&) const {}
     // Effects: after the technique's passes, before the translucent (glTF BLEND) objects' pass.
     virtual void after_opaque(PlanContext&) const {}
+
+    // ---- what the core asks a technique (the planner, the frame shapes and check() branch on
+    // these answers, never on which technique it is) ----
+    // It draws shadows at all (none: no; nothing to sample from light points or to blur).
+    virtual bool shadows() const { return true; }
+    // "" when its shadow is hard; else how it is soft by itself (gooch: "its planes take the
+    // light's size"): no light samples averaged and no screen-space blur on top of it.
+    virtual std::string_view soft_by_itself() const { return {}; }
+    // "" when a pass after the camera's (the translucent objects', an effect's lit pass) takes its
+    // shadow through shade(); else why not (volumes: counted for the camera pass's view).
+    virtual std::string_view later_pass_problem() const { return {}; }
+    // The AOV is a view of its own (light-depth, cascades: the shadow map's; stencil-count: the
+    // volumes'): another technique's frame cannot show it.
+    virtual bool own_aov(Aov) const { return false; }
+    // Its shadow (or none) can be looked up by a deferred light pass, and its frame shaded again
+    // by more lights (--shading deferred, --lights): the shadow map, or no shadows.
+    virtual bool shades_deferred() const { return false; }
 };
 
 // The module of each technique (techniques.cpp) and of each effect.
 const Module& technique_module(Technique t);
 const Module& effect_module(Effect e);
+// The module of no shadows: the camera pass of a frame whose shadow comes from elsewhere (the
+// light samples' average, the blurred visibility).
+const Module& unshadowed_module();
+// "" when technique `t` can show `aov`; else "--aov X: needs --technique Y", Y the technique whose
+// own view it is (Module::own_aov).
+std::string aov_problem(Technique t, Aov aov);
+// The techniques whose modules answer yes to `question`, as "--technique a or b".
+std::string techniques_that(bool (Module::*question)() const);
 
 // Helpers of the modules' passes (techniques.cpp).
 //

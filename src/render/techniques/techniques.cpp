@@ -3,6 +3,7 @@
 
 #include "render/techniques/technique.h"
 
+#include "render/frames/area_light.h"
 #include "render/post.h"
 
 namespace penumbra::render {
@@ -21,12 +22,16 @@ class NoShadows : public Module {
 public:
     std::string_view name() const override { return "none"; }
     void shade(PlanContext&, Pass& cam, std::vector<CameraItem>&) const override { cam.detail += ", no shadows"; }
+    bool shadows() const override { return false; }
+    bool shades_deferred() const override { return true; }
 };
+
+const NoShadows kNone;
 
 }  // namespace
 
 const Module& technique_module(Technique t) {
-    static const NoShadows none;
+    const Module& none = kNone;
     switch (t) {
         case Technique::ShadowMap: return shadow_map_module();
         case Technique::Planar: return planar_module();
@@ -35,6 +40,33 @@ const Module& technique_module(Technique t) {
         case Technique::None: return none;
     }
     return none;
+}
+
+const Module& unshadowed_module() { return kNone; }
+
+const std::vector<ReportSlot>& report_slots() {
+    // The shadow map's (Gooch's texture has a light frustum too), the volumes', the light samples'.
+    static const std::vector<ReportSlot> slots{{"light_frustum", "null"},
+                                               {"cascades", "{\"why\":\"\",\"list\":[]}"},
+                                               {"cube", "null"},
+                                               {"volumes", "null"},
+                                               {"area", "null"}};
+    return slots;
+}
+
+std::string aov_problem(Technique t, Aov aov) {
+    if (technique_module(t).own_aov(aov)) return {};
+    for (Technique other : kAllTechniques)
+        if (technique_module(other).own_aov(aov))
+            return "--aov " + std::string(to_string(aov)) + ": needs --technique " + std::string(to_string(other));
+    return {};
+}
+
+std::string techniques_that(bool (Module::*question)() const) {
+    std::string names;
+    for (Technique t : kAllTechniques)
+        if ((technique_module(t).*question)()) names += (names.empty() ? "" : " or ") + std::string(to_string(t));
+    return "--technique " + names;
 }
 
 const Module& effect_module(Effect e) {
@@ -54,9 +86,10 @@ void set_lit_draws(Pass& p, const std::vector<CameraItem>& items) {
 }
 
 std::string shade_after_camera(PlanContext& c, Pass& p, std::vector<CameraItem>& items) {
-    if (c.plan.area) return "the light samples are averaged for the camera pass's pixels";
-    if (c.settings.technique == Technique::Volumes) return "shadow volumes are counted for the camera pass's view";
-    technique_module(c.settings.technique).shade(c, p, items);
+    if (area_of(c.plan)) return "the light samples are averaged for the camera pass's pixels";
+    const Module& m = technique_module(c.settings.technique);
+    if (const std::string_view why = m.later_pass_problem(); !why.empty()) return std::string(why);
+    m.shade(c, p, items);
     return {};
 }
 

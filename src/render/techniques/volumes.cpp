@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "render/techniques/reports.h"
 #include "render/techniques/technique.h"
 #include "shadow/volumes.h"
 
@@ -57,6 +58,8 @@ Draw volume_draw(const std::string& label, std::vector<glm::vec4> tris) {
 class VolumesModule : public Module {
 public:
     std::string_view name() const override { return "volumes"; }
+    bool own_aov(Aov a) const override { return a == Aov::StencilCount; }
+    std::string_view later_pass_problem() const override { return "shadow volumes are counted for the camera pass's view"; }
 
     std::string check(const PlanContext& c) const override {
         if (std::string p = stencil_buffer_problem(c, "--technique volumes"); !p.empty()) return p;
@@ -154,7 +157,7 @@ public:
         }
         stats.fill = fill;
         stats.fill_per_pixel = w > 0 && h > 0 ? fill / (static_cast<double>(w) * h) : 0.0;
-        c.plan.volumes = stats;
+        c.plan.put(stats);
         const auto describe = [&](Pass& p, const char* what) {
             int tris = 0;
             for (const Draw& d : p.draws) tris += static_cast<int>(d.triangles->size() / 3);

@@ -1,4 +1,5 @@
-#include "render/deferred.h"
+#include "render/frames/deferred.h"
+#include "render/frames/frame.h"
 
 #include <algorithm>
 #include <cmath>
@@ -122,8 +123,8 @@ std::string shading_problem(const PlanContext& c) {
     if (gbuffer_aov(s.aov) && !deferred) return "--aov " + std::string(to_string(s.aov)) + ": needs --shading deferred";
     if (s.lights > 0 || deferred) {
         const std::string who = deferred ? "--shading deferred" : "--lights " + std::to_string(s.lights);
-        if (s.technique != Technique::ShadowMap && s.technique != Technique::None)
-            return who + ": with --technique shadowmap or none (" + std::string(to_string(s.technique)) +
+        if (!technique_module(s.technique).shades_deferred())
+            return who + ": with " + techniques_that(&Module::shades_deferred) + " (" + std::string(to_string(s.technique)) +
                    " shades the shadowed pixels again, by the main light alone)";
         if (s.area_samples > 1) return who + ": not with --area-samples (the samples average the main light alone)";
         for (Effect e : s.effects)
@@ -220,7 +221,7 @@ void plan_deferred(PlanContext& c, const Module& module) {
     float n = 0.0f, f = 1.0f;
     near_far(c.plan.camera.proj, n, f);
     const Binding camera = c.lit_bindings().front();
-    const bool shadowed = s.technique == Technique::ShadowMap;
+    const bool shadowed = module.shadows();
     for (int t = 0; t < (mrt ? 1 : 3); ++t) {
         Pass g;
         g.name = mrt ? "gbuffer" : kTargetNames[t];
@@ -316,5 +317,14 @@ void plan_deferred(PlanContext& c, const Module& module) {
         c.add_pass(image_pass(c, "deferred-resolve", sum, c.camera_target, bright_variant(), {{"u_threshold", 0.0f}},
                               "the summed light into the output"));
 }
+
+namespace {
+
+bool deferred_applies(const PlanContext& c, std::string*) { return c.settings.shading == Shading::Deferred; }
+void plan_deferred_frame(Planning& p) { plan_deferred(p.ctx, p.module); }
+
+}  // namespace
+
+const FrameShape kDeferredShape{"deferred", deferred_applies, plan_deferred_frame};
 
 }  // namespace penumbra::render
