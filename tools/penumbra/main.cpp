@@ -292,7 +292,7 @@ int run(int argc, char** argv) {
 
 #ifdef PENUMBRA_HAVE_TRUTH
     auto* sweep_cmd = app.add_subcommand(
-        "bias-sweep", "acne and peter-panning against bias, elevation, encoding and precision (docs/precision)");
+        "bias-sweep", "acne and peter-panning against bias, elevation, encoding and precision (results/precision)");
     tools::BiasSweepOptions sweep;
     sweep_cmd->add_option("--out-dir", sweep.out_dir, "folder for the CSV, the table and the charts");
     sweep_cmd->add_flag("--quick", sweep.quick, "3 elevations and 5 biases, for CI");
