@@ -108,8 +108,8 @@ folder_cases mipmaps --out-dir index.html --size 16
 folder_cases gallery --out-dir first --size 16x16 --map-size 64
 if [ "$have_truth" -eq 1 ]; then
   folder_cases truth --out-dir visibility.png --size 16x16
-  folder_cases bench --out-dir results.md --from-csv "$root/docs/bench/results.csv"
-  folder_cases bench --out-dir tradeoff.png --from-csv "$root/docs/bench/results.csv"
+  folder_cases bench --out-dir results.md --from-csv "$root/results/bench/results.csv"
+  folder_cases bench --out-dir tradeoff.png --from-csv "$root/results/bench/results.csv"
 fi
 
 # Standard output on a full disk: the same (main() flushes and checks it).

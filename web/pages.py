@@ -2,7 +2,8 @@
 """Generate the exercise pages from one template: each exercise of the catalogue (the JSON that
 examples/catalog_main.cpp prints from examples/exercise_list.cpp) becomes NAME.html from
 page.html.in, its controls written from the option table's types, labels and choices; index.html
-lists them from index.html.in. The page script (penumbra-page.js) binds any control that carries
+lists them from index.html.in, each with its picture (web/thumbs/NAME.png, rendered by
+scripts/thumbs.sh and copied into the site by the web build) where there is one. The page script (penumbra-page.js) binds any control that carries
 data-option, so nothing here is specific to one exercise or one option.
 
 usage: pages.py CATALOG.json WEB_DIR OUT_DIR
@@ -143,7 +144,12 @@ def main() -> None:
             name=ex["name"], title=esc(ex["title"]), text=esc(ex["text"]), look_for=esc(ex["lookFor"]),
             canvas=esc(ex["canvas"]),
             controls=controls_html(ex, catalog["options"]), fly=fly_html(ex)))
-        items.append(f'  <li><a href="{ex["name"]}.html">{esc(ex["title"])}</a>\n    <p>{esc(ex["brief"])}</p></li>')
+        thumb = ""
+        if (web / "thumbs" / f'{ex["name"]}.png').exists():
+            thumb = (f'<a href="{ex["name"]}.html" tabindex="-1" aria-hidden="true"><img src="thumbs/{ex["name"]}.png" '
+                     f'width="128" height="128" alt=""></a>\n    ')
+        items.append(f'  <li>{thumb}<div><a href="{ex["name"]}.html">{esc(ex["title"])}</a>\n    '
+                     f'<p>{esc(ex["brief"])}</p></div></li>')
     write_if_changed(out / "index.html", index.substitute(exercises="\n".join(items)))
 
 

@@ -91,7 +91,7 @@ bool in_order(const std::vector<std::string>& part, const std::vector<std::strin
     return true;
 }
 
-// docs/bench/results.csv and others' CSVs (three.js runs) have these names in this order:
+// results/bench/results.csv and others' CSVs (three.js runs) have these names in this order:
 // renaming or reordering one breaks them and `bench --from-csv` on them. A new column may go
 // anywhere (after them keeps the old files' column order).
 TEST(ScoreColumns, TheCsvNamesAreTheExistingOnes) {
@@ -99,7 +99,7 @@ TEST(ScoreColumns, TheCsvNamesAreTheExistingOnes) {
                                                "error_pct",    "mae_pct",            "mae_area_light_pct"};
     EXPECT_TRUE(in_order(existing, keys())) << score_csv_header();
     // bench --from-csv still reads the committed results: it has every required column.
-    std::ifstream f(PENUMBRA_SOURCE_DIR "/docs/bench/results.csv");
+    std::ifstream f(PENUMBRA_SOURCE_DIR "/results/bench/results.csv");
     std::string header;
     ASSERT_TRUE(std::getline(f, header));
     const auto names = split(header, ",");

@@ -1,5 +1,6 @@
 // web.load: the index and every exercise page load with no console error, no page error, no failed
-// request and no WebGL error after some frames; every control has a label; the index links resolve.
+// request and no WebGL error after some frames; every control has a label; the index links resolve
+// and shows a picture of every exercise.
 import { runTest, openPage, waitFrames, check, PAGES } from './harness.mjs';
 
 await runTest('web.load', async ({ server, browser }) => {
@@ -11,6 +12,14 @@ await runTest('web.load', async ({ server, browser }) => {
     for (const href of links) {
       const r = await page.request.get(`${server.url}/${href}`);
       check(r.ok(), `index.html links ${href}, which answers ${r.status()}`);
+    }
+    // Each exercise as a picture (web/thumbs, scripts/thumbs.sh), loaded.
+    await page.waitForFunction(() => [...document.images].every((i) => i.complete), null, { timeout: 10000 });
+    const pictures = await page.$$eval('ul.exercises img', (imgs) =>
+      imgs.map((i) => ({ src: i.getAttribute('src'), width: i.naturalWidth })));
+    for (const p of PAGES) {
+      const picture = pictures.find((i) => i.src === `thumbs/${p}.png`);
+      check(picture && picture.width > 0, `index.html shows no picture of ${p}`);
     }
     check(problems.length === 0, `index.html: ${problems.join('; ')}`);
     await context.close();

@@ -10,7 +10,7 @@
 namespace penumbra::tools {
 
 struct BiasSweepOptions {
-    std::string out_dir = "docs/precision";
+    std::string out_dir = "results/precision";
     bool quick = false;  // fewer elevations, biases and pixels: for CI
     int size = 256;      // image width = height
     int map_size = 1024;

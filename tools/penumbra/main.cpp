@@ -31,6 +31,7 @@
 #include "bias_sweep.h"
 #endif
 #include "cli_options.h"
+#include "options_doc.h"
 #include "egl_device.h"
 #include "measure/image_io.h"
 #include "render/options.h"
@@ -285,6 +286,8 @@ int run(int argc, char** argv) {
     shaders_cmd->add_option("--out", shader_dir, "folder")->required();
 
     auto* caps_cmd = app.add_subcommand("caps", "print what the headless context supports");
+    bool options_markdown = false;
+    auto* options_cmd = tools::add_options_command(app, options_markdown);
     tools::MipmapsOptions mipmaps;
     auto* mipmaps_cmd = tools::add_mipmaps_command(app, mipmaps);
     // export, truth, bench: measuring the trade (tools/penumbra/measure_commands.h).
@@ -292,7 +295,7 @@ int run(int argc, char** argv) {
 
 #ifdef PENUMBRA_HAVE_TRUTH
     auto* sweep_cmd = app.add_subcommand(
-        "bias-sweep", "acne and peter-panning against bias, elevation, encoding and precision (docs/precision)");
+        "bias-sweep", "acne and peter-panning against bias, elevation, encoding and precision (results/precision)");
     tools::BiasSweepOptions sweep;
     sweep_cmd->add_option("--out-dir", sweep.out_dir, "folder for the CSV, the table and the charts");
     sweep_cmd->add_flag("--quick", sweep.quick, "3 elevations and 5 biases, for CI");
@@ -301,7 +304,7 @@ int run(int argc, char** argv) {
 #endif
 
     // --egl-device N on every command that opens a context.
-    const tools::EglDeviceOption egl_device(app, {"shaders", "export"});
+    const tools::EglDeviceOption egl_device(app, {"shaders", "export", "options"});
 
     // The first word must be a subcommand: CLI11 would call an unknown one a missing one.
     std::string subcommands;
@@ -346,6 +349,10 @@ int run(int argc, char** argv) {
         if (*gallery_cmd) return run_gallery(gallery_dir, gallery_options.parse(), gallery_allow);
         if (*shaders_cmd) return run_shaders(shader_dir);
         if (*caps_cmd) return run_caps();
+        if (*options_cmd) {
+            std::fputs(tools::options_text(options_markdown).c_str(), stdout);
+            return 0;
+        }
         if (*mipmaps_cmd) return tools::run_mipmaps(mipmaps);
         if (const int rc = tools::run_measure_commands(*measure); rc >= 0) return rc;
 #ifdef PENUMBRA_HAVE_TRUTH

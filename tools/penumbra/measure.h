@@ -47,7 +47,7 @@ void run_truth(const TruthCommandOptions& o);
 
 struct BenchOptions {
     bool quick = false;
-    std::string out_dir = "docs/bench";
+    std::string out_dir = "results/bench";
     std::string size;                 // default 512x512 (quick 128x128)
     int frames = 0;                   // default 20 (quick 5)
     int rounds = 0;                   // interleaved timing rounds, default 3 (quick 1)

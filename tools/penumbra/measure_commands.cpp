@@ -92,7 +92,7 @@ std::shared_ptr<MeasureCommands> add_measure_commands(CLI::App& app) {
     m->bench_cmd = app.add_subcommand("bench", "the sweep: error against the ray-traced truth, ms/frame and memory of every technique");
     auto& b = m->bench_options;
     m->bench_cmd->add_flag("--quick", b.quick, "small and fast (CI): 128x128, 5 frames, maps 256 and 1024, two scenes");
-    m->bench_cmd->add_option("--out-dir", b.out_dir, "folder for results.csv, results.md, tradeoff.svg/.png (default docs/bench)");
+    m->bench_cmd->add_option("--out-dir", b.out_dir, "folder for results.csv, results.md, tradeoff.svg/.png (default results/bench)");
     m->bench_cmd->add_option("--size", b.size, "WxH of the frames " + bounds(render::option_info("size")) + " (default 512x512)");
     m->bench_cmd->add_option("--frames", b.frames, "timed frames per run, each finished with glFinish " +
                                                        bounds(render::option_info("frames")) + " (default 20)");

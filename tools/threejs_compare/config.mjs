@@ -35,7 +35,7 @@ export const oursOptions = (c) => {
   for (const [k, v] of Object.entries(OUR_DEFAULTS)) o[k] = c[k] ?? v;
   return o;
 };
-// The sheet's bias of rgba and depthtex (README: 0.0015, in window depth units), which
+// The sheet's bias of rgba and depthtex (docs/usage.md: 0.0015, in window depth units), which
 // three.js applies with the opposite sign (shadowCoord.z += bias; lit where z <= depth).
 export const OUR_BIAS = 0.0015;
 // three.js: BasicShadowMap and PCFShadowMap, each at three.js's defaults (bias 0, normalBias 0, the

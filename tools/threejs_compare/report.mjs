@@ -1,10 +1,10 @@
-// threejs_compare's outputs: results.csv (the columns of docs/bench/results.csv, so `penumbra
+// threejs_compare's outputs: results.csv (the columns of results/bench/results.csv, so `penumbra
 // bench --from-csv` reads it), and the Markdown: the table it prints and docs/threejs.md. The score
 // columns in both come from the score table (`penumbra truth --score-columns`).
 import { writeFileSync } from 'node:fs';
 import { MAP, SIZE, f2, oursOptions, tname } from './config.mjs';
 
-// Rows with the columns of docs/bench/results.csv (`penumbra bench --from-csv` reads them), one per
+// Rows with the columns of results/bench/results.csv (`penumbra bench --from-csv` reads them), one per
 // frame and technique; the times are the browser's (SwiftShader), not llvmpipe's: do not merge
 // them with the EGL bench's rows into one plot.
 export function writeCsv(file, columns, rows, env) {
@@ -91,7 +91,7 @@ page) and \`node_modules\` (\`npm ci\`: playwright-core, pngjs, three). Options:
 \`--frames\`, \`--rounds\`, \`--out-dir\`, \`--doc\` / \`--no-doc\`, \`--cli\`, \`--from-json FILE\` (measure
 nothing: the table and this file again from a run's \`results.json\`). Every image it scored
 is in \`out/threejs/images/\`, every figure in \`out/threejs/results.json\`, and one row per frame
-and technique with the columns of \`docs/bench/results.csv\` in \`out/threejs/results.csv\`
+and technique with the columns of \`results/bench/results.csv\` in \`out/threejs/results.csv\`
 (\`penumbra bench --from-csv out/threejs/results.csv --out-dir DIR\` plots them; the times are
 SwiftShader's, so do not merge them with the EGL bench's rows). The three.js page is
 \`tests/threejs/compare.html\` + \`compare.js\`; the tool serves it, \`node_modules/three\` and the
@@ -254,7 +254,7 @@ function findings(rows, agreement, basicSame, basicMax) {
     'On SwiftShader every shader instruction is CPU time: PCF\'s early exit reads 4 taps where the corners agree, ' +
     'a smaller map costs less to draw and to clear, a depth texture\'s pass writes no colour, and the camera pass ' +
     '(marble, Phong) is the same work in both. The defaults cost more than the settings before issue 9 (on llvmpipe ' +
-    'too: docs/bench/results.md, the defaults against the settings before): the auto bias adds its slope term to ' +
+    'too: results/bench/results.md, the defaults against the settings before): the auto bias adds its slope term to ' +
     'every fragment that looks up the map, and with the tight fit the shadow pass costs more (the receivers in view ' +
     'fill the map, so more of it is drawn).');
   return out.join('\n');
