@@ -169,8 +169,11 @@ private:
         in.objects.clear();
         in.images.clear();
         in.light.reset();
-        PlanContext o{other, s, c.caps, in, c.previous, c.plan, other.light, {}, {}, c.depth_path,
-                      c.camera_target, {}, kPrefix, true};
+        PlanContext o = PlanContext::of(other, s, c.caps, in, c.previous, c.plan, other.light);
+        o.depth_path = c.depth_path;
+        o.camera_target = c.camera_target;
+        o.prefix = kPrefix;
+        o.beyond = true;
         for (size_t i = 0; i < other.objects.size(); ++i) {
             const scene::Object& ob = other.objects[i];
             if (ob.mesh < 0 || ob.mesh >= static_cast<int>(other.meshes.size())) continue;
