@@ -23,9 +23,10 @@
 #include "measure.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
-#include "render/techniques/reports.h"
 #include "render/options.h"
 #include "render/renderer.h"
+#include "render/techniques/reports.h"
+#include "render/techniques/technique.h"
 #include "scene/primitives.h"
 #include "scene/printable.h"
 #include "scene/probe_scenes.h"
@@ -71,15 +72,11 @@ void turn_light(scene::Light& light, const scene::Light& original, const glm::ve
     light.direction = glm::normalize(glm::vec3(rot * glm::vec4(original.direction, 0.0f)));
 }
 
-std::string technique_label(const render::Settings& s) {
-    if (s.technique == render::Technique::Volumes) return kVolumesPrefix + std::string(render::to_string(s.volume_method));
-    if (s.technique != render::Technique::ShadowMap) return std::string(render::to_string(s.technique));
-    return std::string(shadow::to_string(s.encoding)) + " " + std::string(shadow::to_string(s.filter));
-}
+std::string technique_label(const render::Settings& s) { return render::technique_module(s.technique).label(s); }
 
 void set_technique(Row& row, const render::Settings& s, const std::string& label) {
     row.technique = label;
-    const bool map = s.technique == render::Technique::ShadowMap;
+    const bool map = render::technique_module(s.technique).depth_map();
     row.encoding = map ? std::string(shadow::to_string(s.encoding)) : "-";
     row.filter = map ? std::string(shadow::to_string(s.filter)) : "-";
     row.map = map ? s.map_size : 0;
@@ -441,7 +438,7 @@ void run_sweep(Sweep& w) {
             s.aov = render::Aov::Visibility;
             const render::FramePlan& plan = r.render(still, s, in);
             const render::PlannedResource* map = plan.resource("shadow-map");
-            if (s.technique == render::Technique::ShadowMap && map && map->desc.width != s.map_size) {
+            if (render::technique_module(s.technique).depth_map() && map && map->desc.width != s.map_size) {
                 row.map = map->desc.width;
                 w.notes.push_back(spec.label + ": " + row.technique + " map " + std::to_string(s.map_size) + " clamped to " +
                                   std::to_string(map->desc.width));
@@ -451,9 +448,7 @@ void run_sweep(Sweep& w) {
             row.bytes = map ? map->desc.bytes() : 0;
             if (map && render::texel_use_of(plan)) row.texel_use_pct = 100.0 * static_cast<double>(*render::texel_use_of(plan));
             if (const render::VolumeStats* v = render::volumes_of(plan)) set_volume_stats(row, *v);
-            const bool pictured = s.technique == render::Technique::ShadowMap ? s.map_size == 1024
-                                  : s.technique == render::Technique::Volumes ? s.volume_method == render::VolumeMethod::Auto
-                                                                               : true;
+            const bool pictured = render::technique_module(s.technique).representative(s);
             if (pictures && pictured) {
                 std::string name = spec.label + "-" + row.technique + (row.map ? "-" + std::to_string(row.map) : "") + "-errors.png";
                 std::replace(name.begin(), name.end(), ' ', '-');
@@ -513,7 +508,7 @@ void run_sweep(Sweep& w) {
             row.ms_still = measure::median(p.still);
             // The still scene reuses the map, so its frame is the camera pass alone; what the
             // moving frame costs beyond it is the shadow pass.
-            const bool has_map = p.s.technique == render::Technique::ShadowMap;
+            const bool has_map = render::technique_module(p.s.technique).depth_map();
             row.ms_camera = row.ms_still;
             row.ms_shadow = has_map ? std::max(0.0, row.ms_moving - row.ms_still) : 0.0;
             row.frames = o.frames * o.rounds;

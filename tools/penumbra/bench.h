@@ -297,6 +297,8 @@ Plot lights_plot(const Sweep& w);
 // Reads rows written by the CSV writer (or by another harness with the same columns, e.g. three.js
 // runs scored with `penumbra truth --score`): the scenes, sizes and map sizes follow from the rows.
 void read_csv(Sweep& w, const std::string& path);
+// The rows as results.csv (bench_csv.cpp).
+std::string to_csv(const Sweep& w);
 
 // ---- truth_command.cpp: the truth of one frame, shared by the sweep and penumbra truth ----------
 

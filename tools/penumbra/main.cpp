@@ -37,6 +37,7 @@
 #include "render/options.h"
 #include "render/renderer.h"
 #include "render/shader_library.h"
+#include "render/techniques/technique.h"
 #include "scene/printable.h"
 #include "scene/scene_source.h"
 #include "measure.h"
@@ -177,7 +178,7 @@ int run_gallery(const std::string& dir, const render::Options& base, const std::
             o.settings.aov = aov;
             const std::string name = row.label + "-" + std::string(render::to_string(aov)) + ".png";
             ++done;
-            if (aov == render::Aov::LightDepth && o.settings.technique != render::Technique::ShadowMap) {
+            if (!render::aov_problem(o.settings.technique, aov).empty()) {  // another technique's own view
                 body += "<td>(no shadow map)</td>";
                 continue;
             }

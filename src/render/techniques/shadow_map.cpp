@@ -256,6 +256,11 @@ public:
     std::string_view name() const override { return "shadowmap"; }
     bool own_aov(Aov a) const override { return a == Aov::LightDepth || a == Aov::Cascades; }
     bool shades_deferred() const override { return true; }
+    bool depth_map() const override { return true; }
+    std::string label(const Settings& s) const override {
+        return std::string(shadow::to_string(s.encoding)) + " " + std::string(shadow::to_string(s.filter));
+    }
+    bool representative(const Settings& s) const override { return s.map_size == 1024; }
 
     std::string check(const PlanContext& c) const override {
         if (c.settings.encoding == shadow::Encoding::DepthTex && !c.caps.depth_texture)

@@ -158,6 +158,15 @@ public:
     // Its shadow (or none) can be looked up by a deferred light pass, and its frame shaded again
     // by more lights (--shading deferred, --lights): the shadow map, or no shadows.
     virtual bool shades_deferred() const { return false; }
+    // It draws a depth map from the light that --encoding, --filter and --map-size choose (a
+    // bench row's encoding, filter and map columns; its moving frame's extra time is that map's).
+    virtual bool depth_map() const { return false; }
+    // Its settings in a few words, for a bench row and a plot's legend ("rgba pcf4x4",
+    // "volumes zfail", "planar").
+    virtual std::string label(const Settings&) const { return std::string(name()); }
+    // These settings are the one of its sweep whose error picture the bench writes (the map's
+    // 1024 texels, the volumes' auto).
+    virtual bool representative(const Settings&) const { return true; }
 };
 
 // The module of each technique (techniques.cpp) and of each effect.

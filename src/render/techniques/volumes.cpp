@@ -59,6 +59,8 @@ class VolumesModule : public Module {
 public:
     std::string_view name() const override { return "volumes"; }
     bool own_aov(Aov a) const override { return a == Aov::StencilCount; }
+    std::string label(const Settings& s) const override { return "volumes " + std::string(to_string(s.volume_method)); }
+    bool representative(const Settings& s) const override { return s.volume_method == VolumeMethod::Auto; }
     std::string_view later_pass_problem() const override { return "shadow volumes are counted for the camera pass's view"; }
 
     std::string check(const PlanContext& c) const override {
