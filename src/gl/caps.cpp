@@ -8,17 +8,6 @@
 #include "gl/entry_points.h"
 #include "gl/gl_headers.h"
 
-#ifdef __EMSCRIPTEN__
-#include <emscripten.h>
-
-// Whether the canvas fetched EXT_disjoint_timer_query's object for Emscripten's query functions
-// (platform/emscripten_canvas.cpp).
-// clang-format off
-EM_JS(int, penumbra_timer_query_fetched, (), {
-    return (typeof GLctx !== 'undefined' && GLctx && GLctx.disjointTimerQueryExt) ? 1 : 0;
-})
-// clang-format on
-#endif
 
 namespace penumbra::gl {
 
@@ -46,21 +35,6 @@ PrecisionFormat precision(GLenum shader, GLenum type) {
 // TIME_ELAPSED counter.
 void probe_timer(Caps& c, const platform::Platform& context, bool listed) {
     EntryPoints& e = entry_points();
-#ifdef __EMSCRIPTEN__
-    (void)context;
-    // Emscripten (3.1.6) links the entry points, and routes them to the extension's object,
-    // GLctx.disjointTimerQueryExt, which its library fetches only for a context made with every
-    // extension enabled; the canvas enables them one by one and fetches that object itself
-    // (platform/emscripten_canvas.cpp). Without it, glGenQueriesEXT would throw: no timer.
-    listed = listed && penumbra_timer_query_fetched() != 0;
-    e.gen_queries = listed ? &glGenQueriesEXT : nullptr;
-    e.delete_queries = listed ? &glDeleteQueriesEXT : nullptr;
-    e.begin_query = listed ? &glBeginQueryEXT : nullptr;
-    e.end_query = listed ? &glEndQueryEXT : nullptr;
-    e.get_query_iv = listed ? &glGetQueryivEXT : nullptr;
-    e.get_query_object_uiv = listed ? &glGetQueryObjectuivEXT : nullptr;
-    e.get_query_object_ui64v = listed ? &glGetQueryObjectui64vEXT : nullptr;
-#else
     const auto load = [&](auto& fn, const char* name) {
         fn = listed ? reinterpret_cast<std::remove_reference_t<decltype(fn)>>(context.proc_address(name)) : nullptr;
         return fn != nullptr;
@@ -73,7 +47,6 @@ void probe_timer(Caps& c, const platform::Platform& context, bool listed) {
     all = load(e.get_query_object_uiv, "glGetQueryObjectuivEXT") && all;
     all = load(e.get_query_object_ui64v, "glGetQueryObjectui64vEXT") && all;
     listed = listed && all;
-#endif
     c.timer_bits = 0;
     if (listed) {
         GLint bits = 0;
@@ -114,11 +87,9 @@ Caps probe_caps(const platform::Platform& context) {
     c.half_float_target = either("OES_texture_half_float") && either("OES_texture_half_float_linear") &&
                           either("EXT_color_buffer_half_float");
     c.draw_buffers = either("EXT_draw_buffers") || either("WEBGL_draw_buffers");
-#ifndef __EMSCRIPTEN__
     entry_points().draw_buffers =
         c.draw_buffers ? reinterpret_cast<PFNGLDRAWBUFFERSEXTPROC>(context.proc_address("glDrawBuffersEXT")) : nullptr;
     c.draw_buffers = entry_points().draw_buffers != nullptr;
-#endif
     c.render_mipmap = c.has("GL_OES_fbo_render_mipmap");
     probe_timer(c, context, either("EXT_disjoint_timer_query"));
 

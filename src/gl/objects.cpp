@@ -192,17 +192,11 @@ std::string attachments(const FramebufferDesc& d) {
     return out.empty() ? "nothing" : out;
 }
 
-// glDrawBuffersEXT: found through the platform (entry_points); Emscripten exports it and routes it
-// to WEBGL_draw_buffers.
+// glDrawBuffersEXT: found through the platform when the caps were probed (entry_points).
 void draw_buffers(GLsizei n, const GLenum* buffers, const char* label) {
-#ifdef __EMSCRIPTEN__
-    (void)label;
-    glDrawBuffersEXT(n, buffers);
-#else
     const auto fn = entry_points().draw_buffers;
     if (!fn) throw Error(std::string(label) + ": several colour attachments, but no glDrawBuffersEXT on this context");
     fn(n, buffers);
-#endif
 }
 
 }  // namespace

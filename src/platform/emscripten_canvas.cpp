@@ -5,7 +5,12 @@
 #include <emscripten.h>
 #include <emscripten/html5.h>
 
+#include <cstring>
 #include <string>
+
+#define GL_GLEXT_PROTOTYPES 1  // the extensions' entry points, which Emscripten links (proc_address)
+#include <GLES2/gl2.h>
+#include <GLES2/gl2ext.h>
 
 #include "platform/platform.h"
 
@@ -15,6 +20,10 @@
 EM_JS(void, penumbra_fetch_timer_query, (), {
     if (typeof GLctx !== 'undefined' && GLctx)
         GLctx.disjointTimerQueryExt = GLctx.getExtension('EXT_disjoint_timer_query') || null;
+})
+// Whether the canvas fetched that object for Emscripten's query functions.
+EM_JS(int, penumbra_timer_query_fetched, (), {
+    return (typeof GLctx !== 'undefined' && GLctx && GLctx.disjointTimerQueryExt) ? 1 : 0;
 })
 // clang-format on
 
@@ -70,6 +79,29 @@ public:
 
     std::string description() const override { return "WebGL 1 canvas " + selector_ + " (Emscripten)"; }
     Api api() const override { return Api::WebGL1; }
+    // Emscripten (3.1.6) links the extensions' entry points and routes them to the extension's
+    // object: the timer's to GLctx.disjointTimerQueryExt, which its library fetches only for a
+    // context made with every extension enabled; this canvas enables them one by one and fetches
+    // that object itself (enable_timer_query). Without it glGenQueriesEXT would throw: no timer.
+    Proc proc_address(const char* name) const override {
+        struct Entry {
+            const char* name;
+            Proc proc;
+            bool timer;
+        };
+        static const Entry entries[] = {
+            {"glDrawBuffersEXT", reinterpret_cast<Proc>(&glDrawBuffersEXT), false},
+            {"glGenQueriesEXT", reinterpret_cast<Proc>(&glGenQueriesEXT), true},
+            {"glDeleteQueriesEXT", reinterpret_cast<Proc>(&glDeleteQueriesEXT), true},
+            {"glBeginQueryEXT", reinterpret_cast<Proc>(&glBeginQueryEXT), true},
+            {"glEndQueryEXT", reinterpret_cast<Proc>(&glEndQueryEXT), true},
+            {"glGetQueryivEXT", reinterpret_cast<Proc>(&glGetQueryivEXT), true},
+            {"glGetQueryObjectuivEXT", reinterpret_cast<Proc>(&glGetQueryObjectuivEXT), true},
+            {"glGetQueryObjectui64vEXT", reinterpret_cast<Proc>(&glGetQueryObjectui64vEXT), true}};
+        for (const Entry& e : entries)
+            if (std::strcmp(e.name, name) == 0) return e.timer && penumbra_timer_query_fetched() == 0 ? nullptr : e.proc;
+        return nullptr;
+    }
     bool has_default_framebuffer() const override { return true; }
 
     void run(const FrameCallback& frame) override {
