@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "exercise_list.h"
-#include "render/json.h"
+#include "plan/json.h"
 
 namespace penumbra::examples {
 namespace {

@@ -9,7 +9,7 @@
 //                    [any option the pages take]
 //
 // The options the pages take (the exercises' toggles and the technique settings) come from the
-// option tables (examples/exercise_list.h, render/options.h), as does --help. --frames N stops
+// option tables (examples/exercise_list.h, plan/options.h), as does --help. --frames N stops
 // after N frames (for unattended runs), --screenshot writes the last frame as a PNG (top row
 // first), --resize asks the window for a new size halfway through, --time fixes both clocks
 // (paused), --keys presses keys one a frame from the second (unattended runs, tests), --print-title

@@ -17,7 +17,7 @@
 #include "exercises.h"
 #include "query.h"
 #include "gl/check.h"
-#include "render/json.h"
+#include "plan/json.h"
 #include "platform/platform.h"
 #include "shadow/encoding.h"
 

@@ -1,7 +1,7 @@
 // The course exercises, in one place: each exercise's name, title, text, technique and the
 // controls its page, its URL and the desktop app offer; the options only the exercises have (the
 // light's and the teapot's motion, the light's projection, what the off-screen buffer shows, the
-// shadow map's view), declared with the option table's types (render/options.h). A control may
+// shadow map's view), declared with the option table's types (plan/options.h). A control may
 // also name a job option the exercises take (time, eye: CourseApp::set_option). No GL here: the
 // pages are generated from this list at build time (web/CMakeLists.txt, catalog_main.cpp), and
 // course_desktop.cpp and exercises.cpp read it at run time.
@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "render/options.h"
+#include "plan/options.h"
 
 namespace penumbra::examples {
 
@@ -21,7 +21,7 @@ enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c, Volumes, Soft, Stencil, Mul
 
 // The scene an exercise draws: the course scene (the teapot on the table), or one built in code
 // from a test file's recipe, in which the camera flies: the kilometre of terrain
-// (scene/terrain_scene.h, tests/data/terrain_km.gltf) or the bulb room (scene/room_scene.h,
+// (scenes/terrain_scene.h, tests/data/terrain_km.gltf) or the bulb room (scenes/room_scene.h,
 // tests/data/bulb_room.gltf).
 enum class ExerciseScene { Course, Terrain, Room };
 

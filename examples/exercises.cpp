@@ -1,4 +1,4 @@
-#include "render/frames/area_light.h"
+#include "plan/frames/area_light.h"
 #include "exercises.h"
 
 #include <algorithm>
@@ -11,15 +11,15 @@
 #include "query.h"
 #include "scene/eye.h"
 #include "scene/primitives.h"
-#include "scene/room_scene.h"
-#include "scene/terrain_scene.h"
+#include "scenes/room_scene.h"
+#include "scenes/terrain_scene.h"
 #include "shadow/encoding.h"
 
 namespace penumbra::examples {
 
 namespace {
 
-constexpr float kTableSize = 4.0f;         // the course scene's table top (scene/course_scene.cpp)
+constexpr float kTableSize = 4.0f;         // the course scene's table top (scenes/course_scene.cpp)
 constexpr std::size_t kTimingWindow = 60;  // frames in the ms/frame median
 constexpr const char* kFboTexture = "w09p2b";
 

@@ -16,10 +16,10 @@
 //           (light samples averaged, converging while the scene stands still), each technique, and
 //           a 256-sample reference to flip to.
 //   stencil, multipass  stencil effects; post-processing and deferred shading;
-//   cascades cascaded shadow maps over a kilometre of terrain (scene/terrain_scene.h) under a low
+//   cascades cascaded shadow maps over a kilometre of terrain (scenes/terrain_scene.h) under a low
 //           sun: the number of cascades, the split, the snap, the blend, the cascades view, and a
 //           camera that flies (fly(), camera=x,y,z,yaw,pitch in the URL);
-//   bulb    a point light's cube of six shadow maps in a room (scene/room_scene.h): the cube or one
+//   bulb    a point light's cube of six shadow maps in a room (scenes/room_scene.h): the cube or one
 //           map, the map size, the filter, the cube's faces tinted, and the same fly camera, kept
 //           in the room.
 // Each frame is one or two plans whose inputs carry what an exercise changes (a view from the
@@ -40,11 +40,11 @@
 #include "fly_camera.h"
 #include "gl/caps.h"
 #include "gl/timer.h"
-#include "render/frames/area_light.h"
-#include "render/plan.h"
+#include "plan/frames/area_light.h"
+#include "plan/plan.h"
 #include "render/renderer.h"
-#include "render/settings.h"
-#include "scene/course_scene.h"
+#include "plan/settings.h"
+#include "scenes/course_scene.h"
 
 namespace penumbra::examples {
 

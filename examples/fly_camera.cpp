@@ -7,8 +7,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/room_scene.h"
-#include "scene/terrain_scene.h"
+#include "scenes/room_scene.h"
+#include "scenes/terrain_scene.h"
 
 namespace penumbra::examples {
 

@@ -1,6 +1,6 @@
 #version 100
 // --post blur and shadow-blur: one direction of a separable Gaussian. BLUR_SUM(F) is generated
-// (render/variants.cpp): the sum of F(offset, weight) over the taps -BLUR_RADIUS..BLUR_RADIUS with
+// (plan/variants.cpp): the sum of F(offset, weight) over the taps -BLUR_RADIUS..BLUR_RADIUS with
 // weights exp(-x^2 / (2 sigma^2)), sigma = BLUR_RADIUS / 3, summing to 1. The texture is sampled at
 // texel centres (the target is the source's size), so linear sampling adds nothing between taps;
 // the edge is clamped.

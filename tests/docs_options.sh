@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # docs.options: docs/options.md is what `penumbra options --markdown` prints from the option table
-# (src/render/option_table.cpp) now; a stale page fails with the command that refreshes it. A
+# (src/plan/option_table.cpp) now; a stale page fails with the command that refreshes it. A
 # control first: the same comparison against a copy with one line changed must fail.
 # usage: docs_options.sh PENUMBRA SOURCE_DIR
 set -euo pipefail

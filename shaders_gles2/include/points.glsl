@@ -1,4 +1,4 @@
-// --lights: a point light of range r (render/lights.h): Lambert's diffuse times (1 - (d/r)^2)^2,
+// --lights: a point light of range r (plan/lights.h): Lambert's diffuse times (1 - (d/r)^2)^2,
 // which reaches 0 at the range. u_point_lights holds two vec4 per light: (position, range), (colour, 0).
 #ifndef POINT_LIGHTS
 #define POINT_LIGHTS 1

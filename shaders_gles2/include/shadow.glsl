@@ -148,7 +148,7 @@ float litTap(vec2 offset, vec2 uv, float z, float bias) {
 // 1.0 where the light reaches, 0.0 in shadow, PCF fractions in between. Points outside the
 // light's frustum are lit: the map says nothing about them. normal: the receiver's unit normal in
 // world space (for BIAS_AUTO). The kernel's taps (PCF_TAPS, PCF_SUM) are written into the variant
-// from shadow::pcf_offsets (render/variants.cpp): hard is one tap at the lookup point, PCF 2x2 four
+// from shadow::pcf_offsets (plan/variants.cpp): hard is one tap at the lookup point, PCF 2x2 four
 // at +-0.5 texel, PCF 4x4 sixteen at +-0.5 and +-1.5 texels (Bunnell & Pellacini).
 // PCF_EARLY_EXIT (PCF 4x4 unless --pcf-kernel full): the 4 corner taps (PCF_CORNERS) first; where
 // they agree the fragment is taken as wholly lit or wholly shadowed and the other 12 taps

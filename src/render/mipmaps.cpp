@@ -8,7 +8,7 @@
 #include "gl/device.h"
 #include "gl/objects.h"
 #include "render/renderer.h"
-#include "render/variants.h"
+#include "plan/variants.h"
 
 namespace penumbra::render {
 

@@ -1,4 +1,4 @@
-// The render targets the plans declare, made from their descriptions (render/plan.h): one per
+// The render targets the plans declare, made from their descriptions (plan/plan.h): one per
 // name, kept while each new plan declares it unchanged, made again when its description changes,
 // freed as soon as a plan no longer declares it. N maps (cascades, cube faces, area-light samples)
 // are N descriptions: no member of the renderer changes for them.
@@ -10,7 +10,7 @@
 
 #include "gl/device.h"
 #include "gl/objects.h"
-#include "render/plan.h"
+#include "plan/plan.h"
 
 namespace penumbra::render {
 

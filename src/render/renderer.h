@@ -1,4 +1,4 @@
-// The renderer: plans a frame (render/plan.h) and executes the plan. It holds what lives on the
+// The renderer: plans a frame (plan/plan.h) and executes the plan. It holds what lives on the
 // GL context (the scene's meshes and images, the compiled shader variants, the pool of render
 // targets) and the last plan it executed, which tells the next plan what it may reuse; a frame's
 // passes, targets and variants are the plan's, not the renderer's.
@@ -13,9 +13,9 @@
 #include "gl/device.h"
 #include "gl/objects.h"
 #include "gl/timer.h"
-#include "render/plan.h"
+#include "plan/plan.h"
 #include "render/pool.h"
-#include "render/settings.h"
+#include "plan/settings.h"
 #include "render/shader_library.h"
 #include "scene/scene.h"
 

@@ -1,4 +1,4 @@
-// Compiles shader variants (render/variants.h) on first use and keeps them: the embedded source of
+// Compiles shader variants (plan/variants.h) on first use and keeps them: the embedded source of
 // each file with the variant's #define lines after `#version 100`.
 #pragma once
 
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "gl/objects.h"
-#include "render/variants.h"
+#include "plan/variants.h"
 
 namespace penumbra::render {
 

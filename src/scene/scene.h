@@ -122,7 +122,7 @@ struct Bounds {
 
 struct Scene;
 
-// A portal (--effects portal, render/techniques/portal.cpp): a rectangular opening standing in
+// A portal (--effects portal, plan/techniques/portal.cpp): a rectangular opening standing in
 // the scene through which another scene is seen, with its own objects, light and shadows, in the
 // camera's view (the other scene lies where the opening looks, clipped at the opening's plane).
 // The opening and its frame are the effect's, not the scene's objects: the scene's truth and the

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/course_scene.h"
+#include "scenes/course_scene.h"
 #include "scene/eye.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"

@@ -1,5 +1,5 @@
 // Percentage-closer filter kernels, in texels: the one definition of each filter's taps. The
-// shader generator writes them into the lookup (render/variants.cpp: PCF_SUM) and the CPU mirror
+// shader generator writes them into the lookup (plan/variants.cpp: PCF_SUM) and the CPU mirror
 // below averages the same taps, so the two cannot drift apart.
 #pragma once
 

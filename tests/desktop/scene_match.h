@@ -1,4 +1,4 @@
-// A scene built in code (scene/terrain_scene.h, scene/room_scene.h: what the browser's pages draw)
+// A scene built in code (scenes/terrain_scene.h, scenes/room_scene.h: what the browser's pages draw)
 // against the glTF file it follows, as the loader reads it (what `penumbra render` draws): the same
 // objects (names, matrices, meshes, materials), meshes, camera and light, to float precision.
 #pragma once

@@ -4,8 +4,8 @@
 
 #include "exercises.h"
 #include "platform/platform.h"
-#include "scene/course_scene.h"
-#include "scene/terrain_scene.h"
+#include "scenes/course_scene.h"
+#include "scenes/terrain_scene.h"
 
 using penumbra::examples::CourseApp;
 using penumbra::examples::Exercise;

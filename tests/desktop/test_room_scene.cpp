@@ -1,11 +1,11 @@
-// The bulb room built in code (scene/room_scene.h, what the browser's bulb page draws) against
+// The bulb room built in code (scenes/room_scene.h, what the browser's bulb page draws) against
 // tests/data/bulb_room.gltf loaded by the glTF loader (what `penumbra render` draws).
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "scene/gltf_loader.h"
-#include "scene/room_scene.h"
+#include "scenes/room_scene.h"
 #include "../test_paths.h"
 #include "scene_match.h"
 

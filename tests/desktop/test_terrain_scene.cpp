@@ -1,4 +1,4 @@
-// The terrain built in code (scene/terrain_scene.h, what the browser's cascades page draws) against
+// The terrain built in code (scenes/terrain_scene.h, what the browser's cascades page draws) against
 // tests/data/terrain_km.gltf loaded by the glTF loader (what `penumbra render` draws): the same
 // meshes, objects, materials, camera and sun, to float precision.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "scene/gltf_loader.h"
-#include "scene/terrain_scene.h"
+#include "scenes/terrain_scene.h"
 #include "../test_paths.h"
 #include "scene_match.h"
 

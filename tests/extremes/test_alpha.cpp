@@ -8,7 +8,7 @@
 
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
-#include "render/options.h"
+#include "plan/options.h"
 #include "scene/gltf_loader.h"
 
 using namespace penumbra;

@@ -14,8 +14,8 @@
 #include "gl/check.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
-#include "render/techniques/reports.h"
-#include "render/options.h"
+#include "plan/techniques/reports.h"
+#include "plan/options.h"
 #include "scene/gltf_loader.h"
 #include "shadow/cube.h"
 

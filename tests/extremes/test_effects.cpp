@@ -8,8 +8,8 @@
 
 #include "measure/effect_truth.h"
 #include "measure/metrics.h"
-#include "render/options.h"
-#include "scene/course_scene.h"
+#include "plan/options.h"
+#include "scenes/course_scene.h"
 
 using namespace penumbra;
 

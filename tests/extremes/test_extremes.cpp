@@ -3,16 +3,16 @@
 // against the ray-traced truth (src/truth). The bounds were set from measured values with margin;
 // the measured error is recorded as a test property (see the XML output) and printed.
 #include "gl_fixture.h"
-#include "render/techniques/reports.h"
-#include "render/options.h"
+#include "plan/techniques/reports.h"
+#include "plan/options.h"
 
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "measure/metrics.h"
-#include "scene/course_scene.h"
-#include "scene/probe_scenes.h"
+#include "scenes/course_scene.h"
+#include "scenes/probe_scenes.h"
 #include "measure/ray_tracer.h"
 
 using namespace penumbra;

@@ -9,8 +9,8 @@
 #include "measure/image_io.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
-#include "render/options.h"
-#include "scene/course_scene.h"
+#include "plan/options.h"
+#include "scenes/course_scene.h"
 
 using namespace penumbra;
 

@@ -10,7 +10,7 @@
 
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
-#include "render/options.h"
+#include "plan/options.h"
 #include "scene/primitives.h"
 
 using namespace penumbra;

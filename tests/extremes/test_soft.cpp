@@ -19,9 +19,9 @@
 #include "measure/image_io.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
-#include "render/frames/area_light.h"
-#include "render/options.h"
-#include "scene/course_scene.h"
+#include "plan/frames/area_light.h"
+#include "plan/options.h"
+#include "scenes/course_scene.h"
 #include "scene/primitives.h"
 
 using namespace penumbra;

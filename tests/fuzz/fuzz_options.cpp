@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "render/options.h"
+#include "plan/options.h"
 
 using namespace penumbra;
 

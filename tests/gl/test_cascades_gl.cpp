@@ -9,8 +9,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/check.h"
-#include "render/techniques/reports.h"
-#include "render/options.h"
+#include "plan/techniques/reports.h"
+#include "plan/options.h"
 #include "scene/primitives.h"
 
 using namespace penumbra;

@@ -8,9 +8,9 @@
 #include <set>
 
 #include "gl/objects.h"
-#include "render/options.h"
+#include "plan/options.h"
 #include "render/shader_library.h"
-#include "scene/course_scene.h"
+#include "scenes/course_scene.h"
 #include "scene/scene_source.h"
 
 using namespace penumbra;

@@ -13,9 +13,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/options.h"
-#include "render/plan.h"
-#include "scene/course_scene.h"
+#include "plan/options.h"
+#include "plan/plan.h"
+#include "scenes/course_scene.h"
 #include "scene/primitives.h"
 
 using namespace penumbra;

@@ -5,8 +5,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/options.h"
-#include "scene/course_scene.h"
+#include "plan/options.h"
+#include "scenes/course_scene.h"
 #include "scene/primitives.h"
 
 using namespace penumbra;

@@ -5,7 +5,7 @@
 // (tests/unit/test_plan.cpp, PcfKernel.*) covers every pattern of taps.
 #include "gl_fixture.h"
 
-#include "render/options.h"
+#include "plan/options.h"
 #include "scene/scene_source.h"
 
 using namespace penumbra;

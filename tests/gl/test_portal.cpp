@@ -11,9 +11,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "render/options.h"
-#include "render/plan.h"
-#include "scene/course_scene.h"
+#include "plan/options.h"
+#include "plan/plan.h"
+#include "scenes/course_scene.h"
 
 using namespace penumbra;
 
@@ -63,7 +63,7 @@ bool inside(const glm::vec2 (&q)[4], int x, int y, float margin) {
     return true;
 }
 
-// The opening's corners (local: x +-0.7, y 0.1..1.5, z 0; scene/portal_scene.cpp) on the screen.
+// The opening's corners (local: x +-0.7, y 0.1..1.5, z 0; scenes/portal_scene.cpp) on the screen.
 void opening_quad(const scene::Scene& sc, glm::vec2 (&q)[4], float grow = 0.0f) {
     const glm::mat4 vp = render::camera_view(sc, render::offscreen(kW, kH)).view_proj;
     const glm::mat4& w = sc.portal->world;

@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "render/options.h"
-#include "render/plan.h"
-#include "scene/course_scene.h"
+#include "plan/options.h"
+#include "plan/plan.h"
+#include "scenes/course_scene.h"
 
 using namespace penumbra;
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "gl/timer.h"
-#include "render/options.h"
-#include "render/plan.h"
-#include "scene/course_scene.h"
+#include "plan/options.h"
+#include "plan/plan.h"
+#include "scenes/course_scene.h"
 
 using namespace penumbra;
 

@@ -2,9 +2,9 @@
 // lit by a directional light straight down, shadows exactly the disc of radius r below it.
 // Every plane pixel (found by casting the pixel's ray on the CPU) must agree on >= 99% of them.
 #include "gl_fixture.h"
-#include "render/options.h"
+#include "plan/options.h"
 
-#include "scene/probe_scenes.h"
+#include "scenes/probe_scenes.h"
 
 using namespace penumbra;
 

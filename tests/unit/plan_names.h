@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "render/plan.h"
+#include "plan/plan.h"
 
 namespace penumbra::testing {
 

@@ -17,8 +17,8 @@
 
 #include "full_caps.h"
 #include "gl/caps.h"
-#include "render/options.h"
-#include "render/plan.h"
+#include "plan/options.h"
+#include "plan/plan.h"
 #include "scene/gltf_loader.h"
 #include "scene/gltf_writer.h"
 #include "../test_paths.h"

@@ -9,10 +9,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "full_caps.h"
-#include "render/techniques/reports.h"
-#include "render/options.h"
-#include "render/plan.h"
-#include "scene/course_scene.h"
+#include "plan/techniques/reports.h"
+#include "plan/options.h"
+#include "plan/plan.h"
+#include "scenes/course_scene.h"
 #include "scene/primitives.h"
 #include "shadow/cascades.h"
 

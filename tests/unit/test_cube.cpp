@@ -9,9 +9,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "full_caps.h"
-#include "render/techniques/reports.h"
-#include "render/options.h"
-#include "render/plan.h"
+#include "plan/techniques/reports.h"
+#include "plan/options.h"
+#include "plan/plan.h"
 #include "scene/primitives.h"
 #include "shadow/cube.h"
 

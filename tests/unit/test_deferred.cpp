@@ -10,11 +10,11 @@
 
 #include "full_caps.h"
 #include "plan_names.h"
-#include "render/frames/deferred.h"
-#include "render/lights.h"
-#include "render/options.h"
-#include "render/plan.h"
-#include "scene/course_scene.h"
+#include "plan/frames/deferred.h"
+#include "plan/lights.h"
+#include "plan/options.h"
+#include "plan/plan.h"
+#include "scenes/course_scene.h"
 
 using namespace penumbra;
 using render::FramePlan;

@@ -13,7 +13,7 @@
 
 #include <unistd.h>
 
-#include "scene/course_scene.h"
+#include "scenes/course_scene.h"
 #include "scene/gltf_loader.h"
 #include "scene/gltf_writer.h"
 #include "scene/printable.h"

@@ -12,7 +12,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/course_scene.h"
+#include "scenes/course_scene.h"
 #include "scene/gltf_loader.h"
 #include "scene/gltf_writer.h"
 

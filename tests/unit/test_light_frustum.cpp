@@ -296,7 +296,7 @@ TEST(Pcf, KernelsAreSymmetricHalfTexelGrids) {
 
 // The course scene itself: at several times, every vertex of every caster and receiver lies
 // inside the frustum fitted around the objects' bounds.
-#include "scene/course_scene.h"
+#include "scenes/course_scene.h"
 
 TEST(LightFrustumCourse, ContainsEveryCasterAndReceiverVertex) {
     using namespace penumbra;

@@ -11,8 +11,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/plan.h"
-#include "scene/course_scene.h"
+#include "plan/plan.h"
+#include "scenes/course_scene.h"
 #include "shadow/light_frustum.h"
 
 using namespace penumbra;

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "render/options.h"
+#include "plan/options.h"
 
 using namespace penumbra::render;
 using penumbra::shadow::Encoding;

@@ -9,10 +9,10 @@
 
 #include "full_caps.h"
 #include "plan_names.h"
-#include "render/options.h"
-#include "render/plan.h"
-#include "render/post.h"
-#include "scene/course_scene.h"
+#include "plan/options.h"
+#include "plan/plan.h"
+#include "plan/post.h"
+#include "scenes/course_scene.h"
 
 using namespace penumbra;
 using render::FramePlan;

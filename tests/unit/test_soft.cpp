@@ -8,10 +8,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/frames/area_light.h"
-#include "render/options.h"
-#include "render/plan.h"
-#include "scene/course_scene.h"
+#include "plan/frames/area_light.h"
+#include "plan/options.h"
+#include "plan/plan.h"
+#include "scenes/course_scene.h"
 #include "shadow/area_light.h"
 #include "shadow/pcf.h"
 

@@ -10,11 +10,11 @@
 #include <nlohmann/json.hpp>
 
 #include "full_caps.h"
-#include "render/frames/area_light.h"
-#include "render/techniques/reports.h"
-#include "render/options.h"
-#include "render/plan.h"
-#include "scene/course_scene.h"
+#include "plan/frames/area_light.h"
+#include "plan/techniques/reports.h"
+#include "plan/options.h"
+#include "plan/plan.h"
+#include "scenes/course_scene.h"
 
 using namespace penumbra;
 using render::FramePlan;

@@ -9,9 +9,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "full_caps.h"
-#include "render/techniques/reports.h"
-#include "render/plan.h"
-#include "scene/course_scene.h"
+#include "plan/techniques/reports.h"
+#include "plan/plan.h"
+#include "scenes/course_scene.h"
 #include "scene/primitives.h"
 #include "scene/scene_source.h"
 #include "shadow/volumes.h"

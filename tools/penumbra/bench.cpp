@@ -23,13 +23,13 @@
 #include "measure.h"
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
-#include "render/options.h"
+#include "plan/options.h"
 #include "render/renderer.h"
-#include "render/techniques/reports.h"
-#include "render/techniques/technique.h"
+#include "plan/techniques/reports.h"
+#include "plan/techniques/technique.h"
 #include "scene/primitives.h"
 #include "scene/printable.h"
-#include "scene/probe_scenes.h"
+#include "scenes/probe_scenes.h"
 #include "scene/scene_source.h"
 
 namespace fs = std::filesystem;

@@ -24,7 +24,7 @@
 #include "measure/metrics.h"
 #include "measure/ray_tracer.h"
 #include "platform/platform.h"
-#include "render/options.h"
+#include "plan/options.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 #include "scene/scene_source.h"

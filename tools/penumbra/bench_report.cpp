@@ -21,7 +21,7 @@
 #include "measure/metrics.h"
 #include "measure/score_columns.h"
 #include "plot.h"
-#include "render/settings.h"
+#include "plan/settings.h"
 
 namespace fs = std::filesystem;
 

@@ -67,7 +67,7 @@ std::string effects_table(const Sweep& w) {
          "renderer leaves them out on purpose (the mirror does not reflect the portal). ms/frame: the median of "
       << w.o.rounds << " interleaved round(s) of " << w.o.frames
       << " frames (moving: the course animated 1/60 s a frame; still: the same frame again); + ms: over \"none\" with "
-         "the same technique, moving. The --post rows (render/post.h) are timed, not scored: they change the image "
+         "the same technique, moving. The --post rows (plan/post.h) are timed, not scored: they change the image "
          "itself (shadow-blur is scored against the area-light truth by bench --soft); their bytes count the post "
          "passes' targets beside the map.\n\n"
       << "| technique | effects | post | error % | error % in the mirror/opening | px compared there | false lit % there | "

@@ -12,10 +12,10 @@
 #include "gl/caps.h"
 #include "measure/metrics.h"
 #include "platform/platform.h"
-#include "render/options.h"
+#include "plan/options.h"
 #include "render/renderer.h"
-#include "scene/course_scene.h"
-#include "scene/probe_scenes.h"
+#include "scenes/course_scene.h"
+#include "scenes/probe_scenes.h"
 #include "measure/ray_tracer.h"
 
 namespace penumbra::tools {

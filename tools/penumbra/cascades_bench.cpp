@@ -21,8 +21,8 @@
 #include "gl/caps.h"
 #include "gl/check.h"
 #include "measure/metrics.h"
-#include "render/techniques/reports.h"
-#include "render/options.h"
+#include "plan/techniques/reports.h"
+#include "plan/options.h"
 
 namespace fs = std::filesystem;
 

@@ -1,4 +1,4 @@
-// The option table (render/options.h) on a CLI11 command: each option of the table becomes a
+// The option table (plan/options.h) on a CLI11 command: each option of the table becomes a
 // --name of the command, with the table's help, accepted values and default in --help, and is
 // checked and stored by the table's own parser after CLI11 has read the command line.
 // And the checks every command makes before any work: its numbers (finite, in range), its
@@ -12,7 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "render/options.h"
+#include "plan/options.h"
 
 namespace penumbra::tools {
 

@@ -18,7 +18,7 @@
 #include "gl/check.h"
 #include "measure/effect_truth.h"
 #include "measure/metrics.h"
-#include "render/options.h"
+#include "plan/options.h"
 #include "scene/scene_source.h"
 
 namespace fs = std::filesystem;
@@ -28,7 +28,7 @@ namespace penumbra::tools::bench {
 namespace {
 
 // Each effect alone, and all three: what the table compares with "none". Then the --post passes
-// (render/post.h) under the first technique: their cost, not scored (they change the image, and
+// (plan/post.h) under the first technique: their cost, not scored (they change the image, and
 // shadow-blur's error against the area-light truth is in bench --soft).
 struct EffectSet {
     const char* effects;
@@ -38,7 +38,7 @@ constexpr EffectSet kEffectSets[] = {{"none", "none"},    {"outline", "none"},  
                                      {"portal", "none"},  {"outline,mirror,portal", "none"}, {"none", "blur:4"},
                                      {"none", "blur:12"}, {"none", "bloom:0.6"},       {"none", "shadow-blur:6"}};
 
-// The bytes of the post passes' targets in a plan (render/post.cpp's and plan.cpp's names).
+// The bytes of the post passes' targets in a plan (plan/post.cpp's and plan.cpp's names).
 std::size_t post_bytes(const render::FramePlan& plan) {
     std::size_t b = 0;
     for (const render::PlannedResource& r : plan.resources) {

@@ -6,7 +6,7 @@
 
 #include "cli_options.h"
 #include "measure.h"
-#include "render/options.h"
+#include "plan/options.h"
 #include "scene/gltf_writer.h"
 #include "scene/printable.h"
 #include "scene/scene_source.h"

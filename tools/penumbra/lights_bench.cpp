@@ -1,4 +1,4 @@
-// penumbra bench: forward against deferred shading (render/deferred.h) with a growing number of
+// penumbra bench: forward against deferred shading (plan/frames/deferred.h) with a growing number of
 // point lights, on the first course frame of the sweep's scenes under the sweep's default
 // technique. Each row: ms/frame timed like the sweep's (interleaved rounds; moving: the course
 // animated 1/60 s a frame; still: the same frame again), the bytes of every target of the frame
@@ -15,7 +15,7 @@
 #include "gl/check.h"
 #include "measure/effect_truth.h"
 #include "measure/metrics.h"
-#include "render/options.h"
+#include "plan/options.h"
 #include "scene/scene_source.h"
 
 namespace penumbra::tools::bench {
@@ -126,7 +126,7 @@ std::string lights_table(const Sweep& w) {
     std::ostringstream o;
     const Row& first = w.lights.front();
     o << "\n## Forward against deferred shading on " << first.scene << "\n\n"
-      << "--lights N point lights (render/lights.h) beside the main light under " << first.technique << ", " << w.width
+      << "--lights N point lights (plan/lights.h) beside the main light under " << first.technique << ", " << w.width
       << "x" << w.height << ", the same run. Forward: every object drawn once per batch of 16 lights; deferred: the "
          "objects drawn once into a G-buffer, the main light over every pixel, each point light over its range's screen "
          "square. ms/frame moving: the median of "

@@ -5,7 +5,7 @@
 //   shaders  write every shader variant's GLSL ES 1.00 source (for glslangValidator)
 //   caps     what the headless context can do
 //   mipmaps  a texture's mip chain rendered level by level, against glGenerateMipmap and the CPU
-// Their options come from the option table (render/options.h) through cli_options.h.
+// Their options come from the option table (plan/options.h) through cli_options.h.
 // Bad input (an unwritable output included) gets one line naming the problem, exit status 2, and
 // no output file; a failure while rendering exit status 1; never a signal (out of memory is a line too).
 #include <algorithm>
@@ -34,10 +34,10 @@
 #include "options_doc.h"
 #include "egl_device.h"
 #include "measure/image_io.h"
-#include "render/options.h"
+#include "plan/options.h"
 #include "render/renderer.h"
 #include "render/shader_library.h"
-#include "render/techniques/technique.h"
+#include "plan/techniques/technique.h"
 #include "scene/printable.h"
 #include "scene/scene_source.h"
 #include "measure.h"

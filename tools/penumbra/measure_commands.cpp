@@ -7,7 +7,7 @@
 
 #include "cli_options.h"
 #include "measure.h"
-#include "render/options.h"
+#include "plan/options.h"
 
 namespace penumbra::tools {
 

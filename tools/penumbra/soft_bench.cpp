@@ -32,7 +32,7 @@
 #include "measure/ray_tracer.h"
 #include "measure/score_columns.h"
 #include "plot.h"
-#include "render/options.h"
+#include "plan/options.h"
 #include "render/renderer.h"
 #include "scene/printable.h"
 #include "scene/scene_source.h"

@@ -8,7 +8,7 @@
 #include "bench.h"
 #include "measure/metrics.h"
 #include "plot.h"
-#include "render/settings.h"
+#include "plan/settings.h"
 
 namespace penumbra::tools::bench {
 

@@ -26,7 +26,7 @@ export const OURS = [
   { id: 'rgba-pcf4x4-sheet', label: 'rgba pcf4x4, before (sheet bias, scene fit, full kernel)', encoding: 'rgba', filter: 'pcf4x4', map: 1024, ...BEFORE },
   { id: 'depthtex-hard-matched', label: 'depthtex hard, matched to three.js (sheet bias, both faces)', encoding: 'depthtex', filter: 'hard', map: 1024, ...BEFORE, 'light-fit': 'tight' },
 ];
-// The library's defaults of the options a row may set (src/render/option_table.cpp); a page reports an
+// The library's defaults of the options a row may set (src/plan/option_table.cpp); a page reports an
 // option it has no control for only when it differs from its default.
 export const OUR_DEFAULTS = { bias: 'auto', 'map-faces': 'auto', 'light-fit': 'tight', 'pcf-kernel': 'early-exit' };
 // The page options of a row, in URL order.

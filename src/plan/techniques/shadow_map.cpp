@@ -1,0 +1,588 @@
+// The shadow map (exercise W09P2c): the depth seen from the light into a map of the pool, in the
+// chosen encoding, redrawn only when the light or a caster moved; the camera pass looks it up
+// with the chosen filter and bias. Also the light-depth AOV, the map scaled for viewing.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "plan/techniques/reports.h"
+#include "plan/techniques/technique.h"
+#include "shadow/cube.h"
+#include "shadow/pcf.h"
+
+namespace penumbra::render {
+
+namespace {
+
+constexpr glm::vec4 kWhite{1.0f};
+constexpr int kShadowUnit = 0;
+// Below 16 texels the one or few texels hold the nearest caster's depth for everything behind it
+// and the whole frame falls into shadow: that is no longer a shadow map.
+constexpr int kMinMap = 16;
+constexpr const char* kMap = "shadow-map";
+
+std::string number(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return b;
+}
+
+// The faces of a caster that go into the map, as the culling that leaves them: front faces (those
+// towards the light) with back-face culling, back faces with front-face culling, both with none.
+// Auto takes the back faces of a closed mesh (a lit surface is then compared with its object's far
+// side, so it cannot shadow itself whatever the bias; half the triangles) and both faces of an open
+// one (the teapot's rim, a glTF sheet must cast from either side). Against the ray-traced truth with
+// the tight light frustum: as good as both faces under --bias auto, far better under the sheet's
+// constant (docs/threejs.md). A mirroring world matrix turns the winding over.
+gl::Cull map_cull(MapFaces faces, const scene::Scene& scene, const Draw& d) {
+    if (faces == MapFaces::Auto)
+        faces = scene.meshes[static_cast<size_t>(d.mesh)].closed ? MapFaces::Back : MapFaces::Both;
+    if (faces == MapFaces::Both) return gl::Cull::None;
+    const bool mirrored = glm::determinant(glm::mat3(d.world)) < 0.0f;
+    return (faces == MapFaces::Front) != mirrored ? gl::Cull::Back : gl::Cull::Front;
+}
+
+// "back 2, both 1": how many casters put which faces into the map.
+std::string faces_summary(const Pass& p) {
+    int n[3] = {0, 0, 0};  // front (cull back), back (cull front), both (cull none)
+    for (const Draw& d : p.draws) {
+        const gl::Cull c = d.cull.value_or(p.state.cull);
+        ++n[c == gl::Cull::Back ? 0 : c == gl::Cull::Front ? 1 : 2];
+    }
+    const char* names[3] = {"front", "back", "both"};
+    std::string out;
+    for (int i = 0; i < 3; ++i)
+        if (n[i]) out += std::string(out.empty() ? "" : ", ") + names[i] + " " + std::to_string(n[i]);
+    return out;
+}
+
+std::string percent(float share) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.1f%%", 100.0 * static_cast<double>(share));
+    return b;
+}
+
+std::string caster_count(size_t drawn, size_t all) {
+    return drawn == all ? std::to_string(all) + " caster(s)"
+                        : std::to_string(drawn) + " of " + std::to_string(all) + " caster(s)";
+}
+
+// The light's frustum for this frame's camera (--light-fit): receivers and casters by their world
+// bounds; TightFit::casters indexes PlanContext::casters (both in scene order).
+shadow::TightFit fit_to_view(const PlanContext& c) {
+    const ShadowBounds b = shadow_bounds(c.scene, c.settings.blend_shadows);
+    return c.settings.light_fit == LightFit::Tight
+               ? shadow::fit_light_frustum_tight(c.light, b.receivers, b.casters, c.plan.camera.view_proj)
+               : shadow::fit_light_frustum_scene(c.light, b.receivers, b.casters, c.plan.camera.view_proj);
+}
+
+// A pass drawing `casters` (scene objects) into a map from the light: depth in the encoding, each
+// caster's faces as --map-faces says, cut-outs alpha-tested; its target, matrix and detail are the
+// caller's. `cut_outs` counts the alpha-tested casters.
+Pass map_pass(const PlanContext& c, const std::vector<int>& casters, int& cut_outs) {
+    const Settings& s = c.settings;
+    const bool depthtex = s.encoding == shadow::Encoding::DepthTex;
+    Pass p;
+    p.module = "shadowmap";
+    // White is the farthest depth in every encoding: nothing drawn there, nothing shadows.
+    p.clear = Clear{depthtex ? std::nullopt : std::optional<glm::vec4>(kWhite), true, false};
+    p.state.color_write = !depthtex;
+    p.object_uniforms = ObjectUniforms::Mvp;
+    cut_outs = 0;
+    for (int i : casters) {
+        p.draws.push_back(c.mesh_draw(i));
+        // A cut-out (MASK) leaves depth only where its alpha is kept: a leaf-shaped shadow.
+        const AlphaTest alpha = c.caster_alpha(p.draws.back());
+        cut_outs += alpha.on;
+        p.draws.back().variant = depth_variant(s.encoding, c.depth_path, alpha);
+        p.draws.back().cull = map_cull(s.map_faces, c.scene, p.draws.back());
+    }
+    // Grouped by culling (stable: scene order within a group), so the pass changes it at most
+    // twice; the pass's own state is its first group's.
+    std::stable_sort(p.draws.begin(), p.draws.end(), [](const Draw& a, const Draw& b) { return *a.cull < *b.cull; });
+    p.state.cull = p.draws.empty() ? gl::Cull::None : *p.draws.front().cull;
+    for (Draw& dr : p.draws)
+        if (dr.cull == p.state.cull) dr.cull.reset();
+    return p;
+}
+
+// A pass into one tile of an atlas (a cascade, a cube face): `fit_casters` index
+// PlanContext::casters (the fits' caster lists), drawn as map_pass draws them.
+Pass tile_pass(const PlanContext& c, const std::vector<int>& fit_casters, std::string name, TargetRef target,
+               const glm::mat4& view_proj, int& cut_outs) {
+    std::vector<int> casters;
+    for (int j : fit_casters) casters.push_back(c.casters[static_cast<size_t>(j)]);
+    Pass p = map_pass(c, casters, cut_outs);
+    p.name = std::move(name);
+    p.target = target;
+    p.view_proj = view_proj;
+    return p;
+}
+
+// The tiles of an atlas (cascades, a cube's faces) each clear their own region: a scissored
+// clear, which some drivers can only do by drawing a quad over the region (Mesa's llvmpipe: four
+// 2048 tiles cleared so cost 20 ms a frame more than one clear of their atlas). When every tile
+// pass from `first` on is drawn this frame (none is kept from the last), one pass clears the whole
+// atlas before them and they clear nothing.
+void clear_atlas_once(PlanContext& c, size_t first) {
+    std::vector<Pass>& passes = c.plan.passes;
+    if (first >= passes.size()) return;
+    for (size_t i = first; i < passes.size(); ++i)
+        if (passes[i].skipped || !passes[i].clear) return;
+    const int r = passes[first].target.resource;
+    const ResourceDesc& d = c.plan.resources[static_cast<size_t>(r)].desc;
+    Pass q;
+    q.name = c.named(kMap) + " clear";
+    q.module = passes[first].module;
+    q.object_uniforms = ObjectUniforms::None;
+    q.target = {r, d.width, d.height, 0, 0, false};
+    q.clear = passes[first].clear;
+    q.detail = "the whole " + std::to_string(d.width) + "x" + std::to_string(d.height) + " atlas at once, its " +
+               std::to_string(passes.size() - first) + " tiles all drawn this frame (one clear, not one per tile)";
+    for (size_t i = first; i < passes.size(); ++i) passes[i].clear.reset();
+    passes.insert(passes.begin() + static_cast<std::ptrdiff_t>(first), std::move(q));
+}
+
+// The map's texture: packed colour with a depth buffer, or a depth texture; never interpolated
+// (blending two packed values is meaningless).
+ResourceDesc map_desc(const PlanContext& c, int width, int height) {
+    ResourceDesc d;
+    d.name = c.named(kMap);
+    d.width = width;
+    d.height = height;
+    d.sampling = gl::Sampling::Nearest;
+    d.wrap = gl::Wrap::Clamp;
+    const bool depthtex = c.settings.encoding == shadow::Encoding::DepthTex;
+    d.color = !depthtex;
+    d.depth_texture = depthtex;
+    if (!depthtex) d.depth_buffer = c.caps.depth_format();
+    return d;
+}
+
+// What a map's content depends on beside its matrices and casters: how depth is packed.
+void add_packing(ContentKey& key, const PlanContext& c) {
+    key.add(c.settings.encoding);
+    key.add(c.settings.map_faces);
+    key.add(c.depth_path.mediump);
+}
+
+// The frame's cascades report (made on first use).
+CascadesReport& cascades_report(PlanContext& c) {
+    if (CascadesReport* r = c.plan.find<CascadesReport>()) return *r;
+    return c.plan.put(CascadesReport{});
+}
+
+// --cascades N > 1 or auto (0): how many this frame has and why; the cascades report says it.
+int cascade_count(PlanContext& c, const ShadowBounds& b) {
+    const int asked = c.settings.cascades;
+    if (asked == 0) {
+        std::string why;
+        const int n = shadow::auto_cascade_count(c.light, b.receivers, c.plan.camera.view, c.plan.camera.proj, why);
+        cascades_report(c).why = "auto: " + why;
+        return n;
+    }
+    cascades_report(c).why = "--cascades " + std::to_string(asked);
+    return asked;
+}
+
+// The cascades' uniforms (shadow.glsl, CASCADES): the light's axes (the same view for every
+// cascade), per cascade the scale and offset from the light's eye space to its own map's [0, 1]
+// coordinates, its tile of the atlas and its extents for the slope bias; the slices' far ends and
+// blend bands; the camera's view depth.
+void add_cascade_uniforms(const PlanContext& c, Binding& b, const ResourceDesc& map) {
+    const auto& cascades = cascades_of(c.plan);
+    const float w = static_cast<float>(map.width), h = static_cast<float>(map.height);
+    const float tile = w / 2.0f;
+    glm::vec4 ends(0.0f), bands(0.0f);
+    for (size_t i = 0; i < cascades.size(); ++i) {
+        const shadow::Cascade& k = cascades[i];
+        const std::string at = "[" + std::to_string(i) + "]";
+        // Texture space = clip / 2 + 1/2, and an orthographic clip space is eye space scaled and
+        // offset per axis: P[i][i] and P[3][i].
+        const glm::mat4& P = k.frustum.proj;
+        b.uniforms.push_back({"u_cascade_scale" + at, 0.5f * glm::vec3(P[0][0], P[1][1], P[2][2])});
+        b.uniforms.push_back({"u_cascade_offset" + at, 0.5f * glm::vec3(P[3][0], P[3][1], P[3][2]) + glm::vec3(0.5f)});
+        b.uniforms.push_back({"u_cascade_tile" + at, glm::vec4(static_cast<float>(k.tile_x) / w,
+                                                               static_cast<float>(k.tile_y) / h, tile / w, tile / h)});
+        b.uniforms.push_back({"u_cascade_slope" + at, glm::vec4(1.0f / k.frustum.proj[0][0], 1.0f / k.frustum.proj[1][1],
+                                                                k.frustum.znear, k.frustum.zfar)});
+        ends[static_cast<int>(i)] = k.end;
+        bands[static_cast<int>(i)] = k.band;
+    }
+    // Beyond the last cascade: the last's end (the lookup there says lit outside its window).
+    for (size_t i = cascades.size(); i < 4; ++i) ends[static_cast<int>(i)] = cascades.back().end;
+    b.uniforms.push_back({"u_cascade_light", cascades.front().frustum.view});
+    b.uniforms.push_back({"u_cascade_end", ends});
+    b.uniforms.push_back({"u_cascade_band", bands});
+    const glm::mat4& v = c.plan.camera.view;
+    b.uniforms.push_back({"u_cascade_depth", -glm::vec4(v[0][2], v[1][2], v[2][2], v[3][2])});
+}
+
+// Texels of each cube face's tile beyond its 90 degrees, per side, so that a filter's taps near a
+// face's edge read the depth of the directions there instead of the edge's texel again: none for
+// one tap (it never leaves the face by more than half a texel, and the clamp to the tile holds
+// it); PCF's reach (1.5 texels and the nearest texel's half) for PCF; PCSS's taps reach up to an
+// eighth of the map, so it gets a 32nd of the tile and its widest penumbrae near an edge are
+// clamped. Measured on bulb_room.gltf, PCF 4x4, within 2 pixels of a seam: 1.147 % -> 1.016 %
+// of error at 128 texels, 0.443 % -> 0.382 % at 256 (docs/cube.md).
+int cube_guard(const Settings& s, int size) {
+    switch (s.filter) {
+        case shadow::Filter::Hard: return 0;
+        case shadow::Filter::PCSS: return std::max(4, size / 32);
+        default: return 2;
+    }
+}
+
+// The cube's uniforms (shadow.glsl, CUBE): the light's position, each face's tile (zw 0: not
+// drawn), and the one projection's constants: tangent to texture, and the window depth of a depth
+// d along a face's axis, f / (f - n) - (f n / (f - n)) / d.
+void add_cube_uniforms(const shadow::CubeFit& fit, const scene::Light& light, Binding& b, const ResourceDesc& map) {
+    const float w = static_cast<float>(map.width), h = static_cast<float>(map.height);
+    const float t = static_cast<float>(fit.tile);
+    for (int f = 0; f < shadow::kCubeFaces; ++f) {
+        const shadow::CubeFace& face = fit.faces[static_cast<size_t>(f)];
+        b.uniforms.push_back({"u_cube_tile[" + std::to_string(f) + "]",
+                              face.drawn ? glm::vec4(static_cast<float>(face.tile_x) / w, static_cast<float>(face.tile_y) / h,
+                                                     t / w, t / h)
+                                         : glm::vec4(0.0f)});
+    }
+    const float n = fit.znear, f = fit.zfar;
+    b.uniforms.push_back({"u_cube_light", light.position});
+    b.uniforms.push_back({"u_cube_depth", glm::vec3(0.5f / fit.tangent, f / (f - n), f * n / (f - n))});
+}
+
+class ShadowMapModule : public Module {
+public:
+    std::string_view name() const override { return "shadowmap"; }
+    bool own_aov(Aov a) const override { return a == Aov::LightDepth || a == Aov::Cascades; }
+    bool shades_deferred() const override { return true; }
+    bool depth_map() const override { return true; }
+    std::string label(const Settings& s) const override {
+        return std::string(shadow::to_string(s.encoding)) + " " + std::string(shadow::to_string(s.filter));
+    }
+    bool representative(const Settings& s) const override { return s.map_size == 1024; }
+
+    std::string check(const PlanContext& c) const override {
+        if (c.settings.encoding == shadow::Encoding::DepthTex && !c.caps.depth_texture)
+            return "--encoding depthtex: this context has no OES_depth_texture / WEBGL_depth_texture";
+        if (c.settings.aov == Aov::LightDepth && c.casters.empty())
+            return "--aov light-depth: the scene has no shadow casters, so there is no shadow map";
+        return {};
+    }
+
+    void before_camera(PlanContext& c) const override {
+        const Settings& s = c.settings;
+        if (c.casters.empty()) {
+            c.plan.notes.push_back("no shadow casters: no shadow pass");
+            return;
+        }
+        int size = s.map_size;
+        const int max = c.caps.max_target_size();
+        if (size > max) {
+            c.plan.notes.push_back("--map-size " + std::to_string(size) + " clamped to " + std::to_string(max) +
+                                   ", this context's maximum");
+            size = max;
+        }
+        if (size < kMinMap) {
+            c.plan.notes.push_back("--map-size " + std::to_string(size) + " raised to " + std::to_string(kMinMap) +
+                                   ", the smallest map that still resolves a shadow");
+            size = kMinMap;
+        }
+        if (cascaded(c, size)) return;
+        // The light's frustum around the receivers the camera sees and the casters that can
+        // shadow them; only those casters go into the map.
+        const shadow::TightFit fit = fit_to_view(c);
+        const shadow::LightFrustum& f = fit.frustum;
+        c.plan.put(LightViewReport{f, fit.texel_use});
+        std::vector<int> casters;
+        for (int k : fit.casters) casters.push_back(c.casters[static_cast<size_t>(k)]);
+
+        // The map depends on the light's matrix, the casters and how depth is packed.
+        ContentKey key;
+        key.add(f.view_proj());
+        for (int i : casters) key.add_placement(c.scene, i);
+        add_packing(key, c);
+        const int r = c.add_resource(map_desc(c, size, size), key.str(), "the depth seen from the light");
+
+        int cut_outs = 0;
+        Pass p = map_pass(c, casters, cut_outs);
+        p.name = c.named(kMap);
+        p.target = {r, size, size, 0, 0, false};
+        p.view_proj = f.view_proj();
+        p.detail = std::to_string(size) + "x" + std::to_string(size) + " " + std::string(shadow::to_string(s.encoding)) +
+                   ", " + (f.perspective ? "perspective" : "orthographic") + " light, " +
+                   caster_count(casters.size(), c.casters.size()) + ", faces " + faces_summary(p) + ", texel use " +
+                   percent(fit.texel_use) + (fit.tight ? "" : ", fitted around the whole scene") +
+                   (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
+        c.add_pass(std::move(p));
+    }
+
+    // --cascades N > 1 with a directional light: N maps, tiles of one atlas (2x1 or 2x2 tiles of
+    // `size`), one pass each into its tile. false: one map (the count is 1, or the cascades
+    // cannot be made here and a note says why).
+    bool cascaded(PlanContext& c, int& size) const {
+        const Settings& s = c.settings;
+        if (s.cascades == 1) return false;  // one map: nothing to decide (the default's frame does no more work)
+        const ShadowBounds b = shadow_bounds(c.scene, s.blend_shadows);
+        if (cubed(c, b, size)) return true;
+        // A cube that could not be made, or auto with any light but a directional one: cubed()
+        // said why there is one map.
+        if (s.cascades == Settings::kCube || (s.cascades == 0 && c.light.type != scene::LightType::Directional))
+            return false;
+        const int n = cascade_count(c, b);
+        if (n <= 1) return false;
+        int columns = 1, rows = 1;
+        shadow::atlas_layout(n, columns, rows);
+        const int max = c.caps.max_target_size();
+        if (size * columns > max) {
+            c.plan.notes.push_back("--map-size " + std::to_string(size) + " with " + std::to_string(n) +
+                                   " cascades: each map cut to " + std::to_string(max / columns) +
+                                   " so the atlas fits this context's maximum of " + std::to_string(max));
+            size = max / columns;
+        }
+        shadow::CascadeOptions o;
+        o.count = n;
+        o.split = s.cascade_split;
+        o.snap = s.cascade_snap;
+        o.blend = s.cascade_blend;
+        o.tile = size;
+        std::string why;
+        shadow::CascadeFit fit =
+            shadow::fit_cascades(c.light, b.receivers, b.casters, c.plan.camera.view, c.plan.camera.proj, o, &why);
+        if (fit.cascades.empty()) {
+            c.plan.notes.push_back(cascades_report(c).why + ": one map instead, " + why);
+            cascades_report(c).why += " -> one map (" + why + ")";
+            return false;
+        }
+        c.plan.put(LightViewReport{fit.cascades.front().frustum, shadow::texel_use(fit.cascades.front().frustum, fit.visible)});
+
+        // Each cascade's tile has its own key: one whose window and casters are where they were in
+        // the last frame is not drawn again, so a caster that moves redraws only the cascades that
+        // draw it.
+        const int r = c.add_resource(map_desc(c, fit.atlas_width, fit.atlas_height), "",
+                                     "the depth seen from the light, " + std::to_string(n) + " cascades side by side");
+        const size_t first = c.plan.passes.size();
+        for (size_t i = 0; i < fit.cascades.size(); ++i) {
+            const shadow::Cascade& k = fit.cascades[i];
+            int cut_outs = 0;
+            Pass p = tile_pass(c, k.casters, c.named(kMap) + " cascade " + std::to_string(i), {r, size, size, k.tile_x, k.tile_y, true},
+                               k.frustum.view_proj(), cut_outs);
+            ContentKey key;
+            key.add(p.view_proj);
+            for (const Draw& d : p.draws) key.add_placement(c.scene, d.object);
+            add_packing(key, c);
+            p.content = key.str();
+            char depths[96];
+            std::snprintf(depths, sizeof depths, "view depth %.3g..%.3g, texel %.3g", static_cast<double>(k.begin),
+                          static_cast<double>(k.end), static_cast<double>(k.texel));
+            p.detail = std::to_string(size) + "x" + std::to_string(size) + " tile at (" + std::to_string(k.tile_x) +
+                       ", " + std::to_string(k.tile_y) + ") " + std::string(shadow::to_string(s.encoding)) + ", " +
+                       depths + ", " + caster_count(p.draws.size(), c.casters.size()) + ", faces " + faces_summary(p) +
+                       (s.cascade_snap ? ", snapped" : ", not snapped") +
+                       (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
+            c.add_pass(std::move(p));
+        }
+        clear_atlas_once(c, first);
+        cascades_report(c).list = std::move(fit.cascades);
+        return true;
+    }
+
+    // --cascades cube, or auto with a point light among what it lights (shadow::cube_wanted): six
+    // faces of `size`, tiles of one atlas (3 x 2), one pass into each face that sees a visible
+    // receiver, each with its own content key (a still face is not drawn again). false: one map
+    // (a note says why when the cube was asked for).
+    bool cubed(PlanContext& c, const ShadowBounds& b, int size) const {
+        const Settings& s = c.settings;
+        bool want = s.cascades == Settings::kCube;
+        if (want) {
+            cascades_report(c).why = "--cascades cube";
+        } else if (s.cascades == 0 && c.light.type != scene::LightType::Directional) {
+            std::string why;
+            want = shadow::cube_wanted(c.light, b.receivers, b.casters, why);
+            cascades_report(c).why = "auto: " + why;
+        }
+        if (!want) return false;
+        bool cube_map = s.cube_map;
+        if (cube_map && s.encoding == shadow::Encoding::DepthTex) {
+            c.plan.notes.push_back("--cube-layout cubemap with --encoding depthtex: the atlas instead (WebGL 1 and GLES 2 "
+                                   "have no cube-map depth texture)");
+            cube_map = false;
+        }
+        const int across = cube_map ? 1 : 3;  // faces side by side in the texture
+        int max = c.caps.max_target_size();
+        if (cube_map && c.caps.max_cube_map_size > 0) max = std::min(max, c.caps.max_cube_map_size);
+        if (size * across > max) {
+            c.plan.notes.push_back("--map-size " + std::to_string(size) + " with a cube: each face cut to " +
+                                   std::to_string(max / across) +
+                                   (cube_map ? " (this context's largest cube map)"
+                                             : " so the atlas (3 x 2 faces) fits this context's maximum of " +
+                                                   std::to_string(max)));
+            size = max / across;
+        }
+        std::string why;
+        shadow::CubeFit fit = shadow::fit_cube(c.light, b.receivers, b.casters, c.plan.camera.view_proj, size,
+                                               cube_guard(s, size), &why, cube_map);
+        if (fit.drawn() == 0) {
+            c.plan.notes.push_back(cascades_report(c).why + ": one map instead, " + why);
+            cascades_report(c).why += " -> one map (" + why + ")";
+            return false;
+        }
+        ResourceDesc desc = map_desc(c, fit.atlas_width, fit.atlas_height);
+        desc.cube = cube_map;
+        const int r = c.add_resource(desc, "",
+                                     cube_map ? "the depth seen from the light, the six faces of a cube map"
+                                              : "the depth seen from the light, the six faces of a cube side by side (3 x 2)");
+        const size_t first = c.plan.passes.size();
+        for (int f = 0; f < shadow::kCubeFaces; ++f) {
+            const shadow::CubeFace& face = fit.faces[static_cast<size_t>(f)];
+            if (!face.drawn) continue;
+            if (!light_frustum_of(c.plan)) c.plan.put(LightViewReport{face.frustum, std::nullopt});
+            int cut_outs = 0;
+            Pass p = tile_pass(c, face.casters, c.named(kMap) + " face " + shadow::cube_face_name(f),
+                               {r, size, size, face.tile_x, face.tile_y, true, f}, face.frustum.view_proj(), cut_outs);
+            ContentKey key;
+            key.add(p.view_proj);
+            for (const Draw& d : p.draws) key.add_placement(c.scene, d.object);
+            add_packing(key, c);
+            p.content = key.str();
+            char depths[64];
+            std::snprintf(depths, sizeof depths, "depth %.3g..%.3g", static_cast<double>(fit.znear),
+                          static_cast<double>(fit.zfar));
+            const std::string where = cube_map ? "cube-map face"
+                                               : "tile at (" + std::to_string(face.tile_x) + ", " +
+                                                     std::to_string(face.tile_y) + ")";
+            const std::string wide = cube_map ? "perspective 90 degrees (drawn for receivers within " +
+                                                    std::to_string(fit.guard) + " texels of it)"
+                                              : "perspective " + percent(fit.tangent - 1.0f) + " wider than 90 degrees (" +
+                                                    std::to_string(fit.guard) + " texel guard)";
+            p.detail = std::to_string(size) + "x" + std::to_string(size) + " " + where + " " +
+                       std::string(shadow::to_string(s.encoding)) + ", " + wide + ", " + depths + ", " +
+                       caster_count(p.draws.size(), c.casters.size()) + ", faces " + faces_summary(p) +
+                       (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
+            c.add_pass(std::move(p));
+        }
+        if (!cube_map) clear_atlas_once(c, first);  // a cube map's faces are whole framebuffers
+        c.plan.put(CubeReport{std::move(fit)});
+        return true;
+    }
+
+    bool own_view(PlanContext& c) const override {
+        const int r = c.plan.resource_index(c.named(kMap));
+        if (c.settings.aov != Aov::LightDepth || r < 0) return false;
+        if (c.plan.resources[static_cast<size_t>(r)].desc.cube) {
+            c.plan.notes.push_back("--aov light-depth shows a 2D map: with --cube-layout cubemap there is none (the "
+                                   "atlas layout shows the six faces)");
+            return false;
+        }
+        const shadow::LightFrustum& f = *light_frustum_of(c.plan);
+        Pass p;
+        p.name = "light-depth view";
+        p.module = "shadowmap";
+        p.target = c.camera_target;
+        p.clear = Clear{kWhite, true, false};
+        p.state.depth_test = false;
+        p.state.depth_write = false;
+        p.state.cull = gl::Cull::None;
+        p.object_uniforms = ObjectUniforms::None;
+        p.bindings.push_back({"shadow map",
+                              {{"u_shadow_map", kShadowUnit}, {"u_near_far", glm::vec2(f.znear, f.zfar)}},
+                              {{kShadowUnit, r}}});
+        Draw d;
+        d.fullscreen = true;
+        d.variant = light_depth_variant(c.settings.encoding, f.perspective, c.depth_path);
+        d.bindings = 1u;
+        p.draws.push_back(std::move(d));
+        p.detail = c.plan.output + ", the shadow map scaled for viewing";
+        c.add_pass(std::move(p));
+        return true;
+    }
+
+    void shade(PlanContext& c, Pass& cam, std::vector<CameraItem>& items) const override {
+        const int r = c.plan.resource_index(c.named(kMap));
+        if (r < 0) {
+            cam.detail += ", no shadows";
+            return;
+        }
+        const Settings& s = c.settings;
+        const shadow::LightFrustum& f = *light_frustum_of(c.plan);
+        const auto& cascades = cascades_of(c.plan);
+        const ResourceDesc& map = c.plan.resources[static_cast<size_t>(r)].desc;
+        // One texel of the map, or of a cascade's tile (its lookups work in the tile's coordinates).
+        const shadow::CubeFit* cube = cube_of(c.plan);
+        const float texel =
+            1.0f / static_cast<float>(cube ? cube->tile : cascades.empty() ? map.width : map.width / 2);
+        Binding b{"shadow lookup",
+                  // A cube map is read through its own sampler (u_shadow_map is not declared then).
+                  {{cube && cube->cube_map ? "u_shadow_cube" : "u_shadow_map", kShadowUnit}, {"u_texmapscale", glm::vec2(texel, texel)}, {"u_bias", s.effective_bias()}},
+                  {{kShadowUnit, r}}};
+        if (cube) add_cube_uniforms(*cube, c.light, b, map);
+        else if (cascades.empty()) b.uniforms.push_back({"u_light_matrix", shadow::clip_to_texture() * f.view_proj()});
+        else add_cascade_uniforms(c, b, map);
+        const bool pcss = s.filter == shadow::Filter::PCSS;
+        if (cascades.empty() && (s.bias_auto || pcss))
+            // 1/P[0][0] and 1/P[1][1]: tan of the half-angles (perspective) or the half-extents
+            // (orthographic) of the light's frustum.
+            b.uniforms.push_back({"u_bias_slope", glm::vec4(1.0f / f.proj[0][0], 1.0f / f.proj[1][1], f.znear, f.zfar)});
+        if (pcss) {
+            // The light's size as the cone's formula takes it (shadow::pcss_radii), and the
+            // largest radius searched: an eighth of the map.
+            const float radius = c.light.radius;
+            const float size = f.perspective ? radius : std::tan(std::min(radius, 1.5f));
+            b.uniforms.push_back({"u_pcss", glm::vec2(size, 0.125f / texel)});
+        }
+        if (s.bias_auto) {
+            // A cube turns the normal by its face's rotation in the shader (cubeFaceEye).
+            if (!cube) b.uniforms.push_back({"u_light_rotation", glm::mat3(f.view)});
+            b.uniforms.push_back({"u_bias_kernel", glm::vec2(2.0f * texel, shadow::kernel_reach_texels(s.filter))});
+            // The window's middle (tangents) of an asymmetric perspective frustum: P[2][0] / P[0][0].
+            if (f.perspective && !cube)
+                b.uniforms.push_back({"u_bias_center", glm::vec2(f.proj[2][0] / f.proj[0][0], f.proj[2][1] / f.proj[1][1])});
+        }
+        const std::uint32_t bit = 1u << cam.bindings.size();
+        cam.bindings.push_back(std::move(b));
+        for (CameraItem& it : items) {
+            if (!c.receives(it.object)) continue;
+            LitFeatures& lf = it.features;
+            lf.shadow_map = true;
+            lf.encoding = s.encoding;
+            lf.filter = s.filter;
+            lf.pcf_kernel = s.pcf_kernel;
+            lf.bias_auto = s.bias_auto;
+            lf.light_perspective = f.perspective;
+            lf.mediump = s.precision == shadow::Precision::Mediump;
+            lf.pcss_search = s.pcss_search;
+            lf.pcss_taps = s.pcss_taps;
+            lf.cascades = static_cast<int>(cascades.size());
+            lf.cube = cube != nullptr;
+            lf.cube_map = cube && cube->cube_map;
+            lf.cascades_aov = s.aov == Aov::Cascades;
+            it.bindings |= bit;
+        }
+        // The kernel is named where it makes a difference (PCF 4x4): "pcf4x4 early-exit", "pcf4x4 full".
+        std::string kernel =
+            shadow::pcf_early_exit_applies(s.filter) ? " " + std::string(shadow::to_string(s.pcf_kernel)) : "";
+        if (pcss)
+            kernel = " (" + std::to_string(s.pcss_search) + " search + " + std::to_string(s.pcss_taps) +
+                     " filter taps, light radius " + number(static_cast<double>(c.light.radius)) + ")";
+        if (cube)
+            cam.detail += std::string(", a cube") + (cube->cube_map ? " map" : "") + " of " +
+                          std::to_string(cube->drawn()) + " face(s) drawn of 6";
+        if (!cascades.empty())
+            cam.detail += ", " + std::to_string(cascades.size()) + " cascades" +
+                          (s.cascade_blend > 0.0f ? ", blended over " + percent(s.cascade_blend) + " of each slice" : "");
+        cam.detail += ", shadow lookup " + std::string(shadow::to_string(s.filter)) + kernel + " " +
+                      std::string(shadow::to_string(s.encoding)) + ", bias " +
+                      (s.bias_auto ? "auto (" + number(static_cast<double>(s.effective_bias())) + " + slope)"
+                                   : number(static_cast<double>(s.effective_bias()))) +
+                      (s.precision == shadow::Precision::Mediump ? ", mediump emulated" : "");
+    }
+};
+
+}  // namespace
+
+const Module& shadow_map_module() {
+    static const ShadowMapModule m;
+    return m;
+}
+
+}  // namespace penumbra::render
