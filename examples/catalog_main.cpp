@@ -34,18 +34,25 @@ std::string option_json(const OptionInfo& o, const std::string& default_value) {
            ",\"step\":" + render::json_number(o.step) + ",\"default\":" + json_quote(default_value) + "}";
 }
 
+// The technique its frames are drawn with (the default, where a control offers the technique).
+std::string technique_of(const Exercise& x) {
+    for (const auto& [name, value] : x.frame)
+        if (name == "technique") return std::string(value);
+    return render::find_option(render::option_table(), "technique")->print(render::Options{});
+}
+
 }  // namespace
 
 std::string catalog_json() {
     std::string j = "{\"exercises\":[";
     std::vector<std::string_view> named;
     for (size_t i = 0; i < exercise_list().size(); ++i) {
-        const ExerciseInfo& x = exercise_list()[i];
+        const Exercise& x = exercise_list()[i];
         static const char* kinds[] = {"toggle", "radio", "select", "checkbox", "number", "slider"};
         j += std::string(i ? "," : "") + "{\"name\":" + json_quote(x.name) + ",\"title\":" + json_quote(x.title) +
              ",\"text\":" + json_quote(x.text) + ",\"brief\":" + json_quote(x.brief) +
              ",\"lookFor\":" + json_quote(x.look_for) + ",\"canvas\":" + json_quote(x.canvas) +
-             ",\"technique\":" + json_quote(render::to_string(x.technique)) +
+             ",\"technique\":" + json_quote(technique_of(x)) +
              ",\"fly\":" + std::string(flies(x) ? "true" : "false") +
              ",\"controls\":[";
         for (size_t c = 0; c < x.controls.size(); ++c) {

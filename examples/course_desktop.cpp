@@ -37,7 +37,7 @@ using namespace penumbra;
 namespace {
 
 struct Args {
-    examples::Exercise exercise = examples::Exercise::W09P1;
+    std::string exercise = "w09p1";
     int width = 512, height = 512;
     long frames = 0;  // 0: until the window is closed
     std::string screenshot;
@@ -55,8 +55,8 @@ struct Args {
 }
 
 // The short name of an exercise: its title up to the colon ("W09P2c", "Soft shadows").
-std::string short_name(examples::Exercise e) {
-    const std::string_view t = examples::exercise_info(e).title;
+std::string short_name(const examples::Exercise& e) {
+    const std::string_view t = e.title;
     return std::string(t.substr(0, t.find(':')));
 }
 
@@ -138,8 +138,9 @@ Args parse_args(int argc, char** argv) {
         if (i + 1 >= argc) usage_error(arg + ": needs a value");
         const std::string name = arg.substr(2), value = argv[++i];
         if (name == "exercise") {
-            if (!examples::parse_exercise(value, a.exercise))
+            if (!examples::find_exercise(value))
                 usage_error("--exercise: unknown value '" + value + "' (" + examples::exercise_names() + ")");
+            a.exercise = value;
         } else if (name == "size" || name == "resize") {
             if (const std::string err = render::parse_option(job, "size", value); !err.empty())
                 usage_error("--" + name + err.substr(6));
@@ -209,7 +210,7 @@ int main(int argc, char** argv) {
         }
 
     std::printf("%s\n%s\n%s\n%s", window->description().c_str(), app.caps()->summary().c_str(),
-                std::string(examples::exercise_info(app.exercise()).title).c_str(), examples::CourseApp::key_help().c_str());
+                std::string(app.exercise().title).c_str(), examples::CourseApp::key_help().c_str());
     std::fflush(stdout);
 
     bool quit = false;

@@ -160,8 +160,8 @@ const char* penumbra_state() {
     const auto& a = *g->app;
     const auto& s = a.settings();
     std::string j = "{";
-    j += "\"exercise\":" + json_quote(examples::exercise_info(a.exercise()).name);
-    j += ",\"title\":" + json_quote(examples::exercise_info(a.exercise()).title);
+    j += "\"exercise\":" + json_quote(a.exercise().name);
+    j += ",\"title\":" + json_quote(a.exercise().title);
     j += ",\"query\":" + json_quote(a.query());
     j += ",\"options\":{";
     bool first = true;
@@ -213,7 +213,7 @@ const char* penumbra_state() {
     j += ",\"width\":" + std::to_string(g->width) + ",\"height\":" + std::to_string(g->height);
     // The fly camera of an exercise with a scene of its own (null elsewhere): metres and degrees,
     // whether it moved, and the metres a press moves.
-    if (examples::flies(examples::exercise_info(a.exercise()))) {
+    if (examples::flies(a.exercise())) {
         const auto& c = a.camera();
         j += ",\"camera\":{\"x\":" + json_number(static_cast<double>(c.eye.x)) +
              ",\"y\":" + json_number(static_cast<double>(c.eye.y)) + ",\"z\":" + json_number(static_cast<double>(c.eye.z)) +
@@ -275,6 +275,9 @@ int penumbra_height() { return g ? g->height : 0; }
 // The oldest pending GL error (0: none), through Emscripten's glGetError.
 unsigned penumbra_gl_error() { return g && !g->lost ? gl::take_error() : 0u; }
 const char* penumbra_plan() { return hand(g && g->app ? g->app->last_plan() : ""); }
+// The last frame's plans as JSON ({"title": ..., "plans": [FramePlan::to_json(), ...]}): the page
+// reads its passes from it.
+const char* penumbra_plan_json() { return hand(g && g->app ? g->app->last_plan_json() : "{}"); }
 // The wasm heap's bytes in use (malloc's allocated blocks; Module.HEAP8.length is the whole heap):
 // the soak (tests/web/soak.mjs) watches it for leaks.
 unsigned long penumbra_heap_used() { return static_cast<unsigned long>(mallinfo().uordblks); }
@@ -282,13 +285,16 @@ unsigned long penumbra_heap_used() { return static_cast<unsigned long>(mallinfo(
 }  // extern "C"
 
 int main(int argc, char** argv) {
-    examples::Exercise exercise = examples::Exercise::W09P1;
+    std::string exercise = "w09p1";
     for (int i = 1; i + 1 < argc; ++i)
-        if (std::string(argv[i]) == "--exercise" && !examples::parse_exercise(argv[i + 1], exercise))
-            std::fprintf(stderr, "penumbra: unknown exercise '%s'\n", argv[i + 1]);
+        if (std::string(argv[i]) == "--exercise") {
+            if (examples::find_exercise(argv[i + 1])) exercise = argv[i + 1];
+            else std::fprintf(stderr, "penumbra: unknown exercise '%s'\n", argv[i + 1]);
+        }
     g = new WebApp;  // lives as long as the page
     g->app = std::make_unique<examples::CourseApp>(exercise);
-    g->app->set_gpu_timing(true);  // the readout's GPU time per pass, where the context has a timer
+    g->app->set_gpu_timing(true);
+    g->app->set_keep_plans(true);  // penumbra_plan_json  // the readout's GPU time per pass, where the context has a timer
     std::string error;
     g->platform = platform::create_web_canvas(platform::CanvasOptions{}, error);
     if (!g->platform) {

@@ -46,7 +46,7 @@ std::string CourseApp::key_help() {
 }
 
 std::vector<std::string> CourseApp::key_values(std::string_view option) const {
-    for (const Control& c : exercise_info(exercise_).controls)
+    for (const Control& c : exercise_->controls)
         if (c.option == option && !c.values.empty()) return {c.values.begin(), c.values.end()};
     std::vector<std::string> out;
     const render::OptionInfo* info = nullptr;
@@ -63,16 +63,15 @@ std::string CourseApp::on_key(int key, bool shift) {
     };
     const int exercises = static_cast<int>(exercise_list().size());
     if (key >= '1' && key < '1' + std::min(exercises, kExerciseDigitKeys)) {
-        set_exercise(exercise_list()[static_cast<size_t>(key - '1')].id);
-        return std::string(exercise_info(exercise_).title);
+        set_exercise(exercise_list()[static_cast<size_t>(key - '1')].name);
+        return std::string(exercise_->title);
     }
     if (key == platform::keys::Tab) {
-        int i = 0;
-        while (exercise_list()[static_cast<size_t>(i)].id != exercise_) ++i;
-        set_exercise(exercise_list()[static_cast<size_t>(((shift ? i - 1 : i + 1) % exercises + exercises) % exercises)].id);
-        return std::string(exercise_info(exercise_).title);
+        const int i = static_cast<int>(exercise_ - exercise_list().data());
+        set_exercise(exercise_list()[static_cast<size_t>(((shift ? i - 1 : i + 1) % exercises + exercises) % exercises)].name);
+        return std::string(exercise_->title);
     }
-    if (flies(exercise_info(exercise_))) {  // the fly camera
+    if (flies(*exercise_)) {  // the fly camera
         const double step = fly_step() * (shift ? 10.0 : 1.0), turn = shift ? 20.0 : 5.0;
         bool moved = true;
         switch (key) {
@@ -94,9 +93,9 @@ std::string CourseApp::on_key(int key, bool shift) {
     // The bindings of this exercise alone first, then the others.
     std::vector<const KeyBinding*> bindings;
     for (const KeyBinding& k : key_bindings())
-        if (k.only == exercise_) bindings.push_back(&k);
+        if (k.only == exercise_->name) bindings.push_back(&k);
     for (const KeyBinding& k : key_bindings())
-        if (!k.only) bindings.push_back(&k);
+        if (k.only.empty()) bindings.push_back(&k);
     for (const KeyBinding* kb : bindings) {
         const KeyBinding& k = *kb;
         if (k.key != key) continue;
@@ -130,8 +129,8 @@ std::string CourseApp::on_key(int key, bool shift) {
     }
     switch (key) {
         case ' ':
-            paused_ = !paused_;
-            return paused_ ? "paused" : "running";
+            clock_.paused = !clock_.paused;
+            return clock_.paused ? "paused" : "running";
         case '[':
         case ']': {
             // From auto, step from the encoding's default (auto's constant alone is far smaller).
@@ -149,7 +148,7 @@ std::string CourseApp::on_key(int key, bool shift) {
         case 'P': {
             render::Options o;
             o.settings = frame_settings();
-            o.job.time = light_time_;
+            o.job.time = clock_.light;
             return "?" + query() + "\npenumbra render " + render::to_args(o);
         }
         case 'H':

@@ -1,10 +1,13 @@
-// The course exercises, in one place: each exercise's name, title, text, technique and the
-// controls its page, its URL and the desktop app offer; the options only the exercises have (the
-// light's and the teapot's motion, the light's projection, what the off-screen buffer shows, the
-// shadow map's view), declared with the option table's types (plan/options.h). A control may
-// also name a job option the exercises take (time, eye: CourseApp::set_option). No GL here: the
-// pages are generated from this list at build time (web/CMakeLists.txt, catalog_main.cpp), and
-// course_desktop.cpp and exercises.cpp read it at run time.
+// The course exercises as modules: each exercise is one file under examples/exercises/ (its page's
+// text, its controls, the options it starts with, its keys and its frame) and one line in the list
+// (examples/exercises/list.h). This header is what a module declares (Exercise) and what its frame
+// may use of the app that hosts it (Host: CourseApp, on the desktop and on the pages), the
+// options only the exercises have (the light's and the teapot's motion, the light's projection,
+// what the off-screen buffer shows, the shadow map's view), declared with the option table's types
+// (plan/options.h), and the registry. A control may also name a job option the exercises take
+// (time, eye: CourseApp::set_option). No GL here: the pages are generated from this list at build
+// time (web/CMakeLists.txt, catalog_main.cpp), and course_desktop.cpp and exercises.cpp read it at
+// run time.
 #pragma once
 
 #include <optional>
@@ -13,17 +16,18 @@
 #include <utility>
 #include <vector>
 
+#include "fly_camera.h"
 #include "plan/options.h"
+#include "plan/plan.h"
+
+namespace penumbra::gl {
+struct Caps;
+}
+namespace penumbra::scene {
+struct CourseScene;
+}
 
 namespace penumbra::examples {
-
-enum class Exercise { W09P1, W09P2a, W09P2b, W09P2c, Volumes, Soft, Stencil, Multipass, Cascades, Bulb };
-
-// The scene an exercise draws: the course scene (the teapot on the table), or one built in code
-// from a test file's recipe, in which the camera flies: the kilometre of terrain
-// (scenes/terrain_scene.h, tests/data/terrain_km.gltf) or the bulb room (scenes/room_scene.h,
-// tests/data/bulb_room.gltf).
-enum class ExerciseScene { Course, Terrain, Room };
 
 // What the controls set besides render::Settings.
 struct Toggles {
@@ -61,48 +65,104 @@ struct Control {
     std::string_view label = {};                // instead of the option's own label
     std::string_view hint = {};                 // a short note beside it
     double min = 0.0, max = 0.0;                // Slider: its range (the number box takes the option's)
+    // The setting holds only in the exercises that offer a control for it: the others draw with
+    // its default (or their own value, Exercise::frame) whatever it was set to (here_only()).
+    bool here_only = false;
+};
+// The control, its setting held only where it is offered (Control::here_only).
+inline Control here_only(Control c) {
+    c.here_only = true;
+    return c;
+}
+
+// A desktop key bound to an option: pressing it steps the option to its next value (Shift: the
+// previous one) among the values the exercise's control offers, or all of them. An exercise's own
+// bindings (Exercise::keys) hold in it alone and come before the shared ones there (the cascades
+// and bulb exercises reuse letters whose options they have no use for); `only` names it.
+struct KeyBinding {
+    int key;
+    std::string_view option;
+    std::string_view help;
+    std::string_view only = {};
 };
 
-struct ExerciseInfo {
-    Exercise id;
+// What an exercise's frame may use of the app that hosts it (CourseApp): the window, the settings
+// as set, the toggles, the context's limits and the scenes, and the renderer (each render() one
+// plan of the frame, timed with the frame's others).
+class Host {
+public:
+    virtual int width() const = 0;
+    virtual int height() const = 0;
+    virtual const render::Settings& settings() const = 0;  // as set (the frame's are draw()'s argument)
+    virtual const Toggles& toggles() const = 0;
+    virtual const gl::Caps& gl_caps() const = 0;
+    virtual const scene::CourseScene& course() const = 0;
+    // One plan over the course scene; `label` names a second plan's passes in the GPU times ("texture").
+    virtual void render(const render::Settings& s, const render::FrameInputs& in, const char* label = "") = 0;
+    // One plan over the exercise's own scene (Exercise::make_scene), from its fly camera once moved.
+    virtual void render_own_scene(const render::Settings& s, const render::FrameInputs& in) = 0;
+    // The inputs that show the course scene from the light: its view and projection fitted tightly
+    // around what the scene's camera sees in `camera` (its output) and, with `ortho`, a directional
+    // light along the point light's line of sight.
+    virtual render::FrameInputs light_view(render::Output output, bool ortho, const render::Output& camera) const = 0;
+    // What this frame had to change in the options for the window (CourseApp::frame_note()).
+    virtual void note_frame(std::string note) = 0;
+
+protected:
+    ~Host() = default;
+};
+
+using OptionValues = std::vector<std::pair<std::string_view, std::string_view>>;
+
+// One exercise: its page, its controls, its keys and its frame.
+struct Exercise {
     std::string_view name;    // "w09p1": the page (w09p1.html) and --exercise
     std::string_view title;   // "W09P1: Jumping teapot on a marble table top"
     std::string_view text;    // the page's paragraph under the title
     std::string_view brief;   // one line for the index page
     std::string_view canvas;  // the canvas's accessible label
     std::string_view look_for;  // one line under the title: what to try and what to look for
-    render::Technique technique;  // its technique (the default, where a control offers the technique)
     std::vector<Control> controls;
     // Options this exercise starts with instead of the defaults (name, value), set when it is
     // chosen and put back to the defaults when another is.
-    std::vector<std::pair<std::string_view, std::string_view>> defaults = {};
-    // Its scene (ExerciseScene). In a scene of its own the camera flies: the page offers mouse and
-    // keys to move it (CourseApp::fly), and camera=... keeps it in the URL.
-    ExerciseScene scene = ExerciseScene::Course;
+    OptionValues defaults = {};
+    // Settings its frames are drawn with where it offers no control for them ({"technique",
+    // "planar"}); a setting another exercise holds here_only() takes its default instead.
+    OptionValues frame = {};
+    // Its own desktop keys, before the shared ones (key_bindings()).
+    std::vector<KeyBinding> keys = {};
+    // A scene of its own, made the first time it is needed, in which the camera flies within
+    // `fly_bounds` (the page offers mouse and keys to move it: CourseApp::fly; camera=... keeps it
+    // in the URL). Null: the course scene.
+    scene::Scene (*make_scene)() = nullptr;
+    const FlyBounds& (*fly_bounds)() = nullptr;
+    // Adds what its frames need to the course scene (a mesh, a material), once, before the GL
+    // objects are made.
+    void (*extend_course)(scene::Scene& course) = nullptr;
+    // After set_option stored `name` in `t` (the settings it is about to keep): its own rules.
+    void (*on_set)(render::Settings& t, std::string_view name) = nullptr;
+    // The last word over its frame's settings (after `frame` and the defaults).
+    void (*settings)(const Toggles& toggles, render::Settings& s) = nullptr;
+    // Its frame: `s` the frame's settings, `in` the inputs that draw the course scene's camera into
+    // the whole window. Each host.render() is one plan of the frame.
+    void (*draw)(Host& host, render::Settings s, render::FrameInputs in) = nullptr;
 };
 // Whether the exercise's camera flies (a scene of its own).
-inline bool flies(const ExerciseInfo& x) { return x.scene != ExerciseScene::Course; }
+inline bool flies(const Exercise& x) { return x.make_scene != nullptr; }
 // Whether the exercise offers a control for the option.
-bool offers(const ExerciseInfo& x, std::string_view option);
+bool offers(const Exercise& x, std::string_view option);
 
-const std::vector<ExerciseInfo>& exercise_list();
-const ExerciseInfo& exercise_info(Exercise e);
-bool parse_exercise(std::string_view name, Exercise& out);
+// ---- the registry (examples/exercises/list.h) ---------------------------------------------------
+const std::vector<Exercise>& exercise_list();
+// The exercise of that name, or null.
+const Exercise* find_exercise(std::string_view name);
 std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c, volumes, soft, stencil, multipass, cascades, bulb"
 // The first exercises have the digit keys 1-8 on the desktop (9 and 0 are controls); Tab steps
 // through all of them.
 inline constexpr int kExerciseDigitKeys = 8;
-
-// A desktop key bound to an option: pressing it steps the option to its next value (Shift: the
-// previous one) among the values `exercise`'s control offers, or all of them. A binding with
-// `only` set holds in that exercise alone and comes before the others there (the cascades and
-// bulb exercises reuse letters whose options they have no use for).
-struct KeyBinding {
-    int key;
-    std::string_view option;
-    std::string_view help;
-    std::optional<Exercise> only = std::nullopt;
-};
+// The shared keys, then each exercise's own (with `only` its name).
 const std::vector<KeyBinding>& key_bindings();
+// Whether some exercise holds the setting only where it is offered (Control::here_only).
+bool held_here_only(std::string_view option);
 
 }  // namespace penumbra::examples

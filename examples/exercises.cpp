@@ -1,4 +1,3 @@
-#include "plan/frames/area_light.h"
 #include "exercises.h"
 
 #include <algorithm>
@@ -9,19 +8,13 @@
 
 #include "platform/platform.h"
 #include "query.h"
+#include "plan/json.h"
 #include "scene/eye.h"
-#include "scene/primitives.h"
-#include "scenes/room_scene.h"
-#include "scenes/terrain_scene.h"
 #include "shadow/encoding.h"
 
 namespace penumbra::examples {
 
 namespace {
-
-constexpr float kTableSize = 4.0f;         // the course scene's table top (scenes/course_scene.cpp)
-constexpr std::size_t kTimingWindow = 60;  // frames in the ms/frame median
-constexpr const char* kFboTexture = "w09p2b";
 
 // The job options the exercises take: time (both clocks, paused) and the eye.
 bool exercise_job_option(std::string_view name) { return name == "time" || name == "eye"; }
@@ -29,9 +22,9 @@ bool exercise_job_option(std::string_view name) { return name == "time" || name 
 // Settings the pages and the desktop never take: the exercise picks the scene and the technique
 // (unless it offers a control for it), the canvas or the window its size, and nothing is written
 // to a file.
-bool set_by_the_exercise(Exercise e, std::string_view name) {
+bool set_by_the_exercise(const Exercise& x, std::string_view name) {
     const auto* o = render::find_option(render::option_table(), name);
-    if (name == "technique") return !offers(exercise_info(e), name);
+    if (name == "technique") return !offers(x, name);
     return o && o->info.part == render::OptionPart::Job && !exercise_job_option(name);
 }
 
@@ -46,59 +39,42 @@ std::string setting_value(const render::Settings& s, std::string_view name) {
     return o->print(opts);
 }
 
+const Exercise& exercise_named(std::string_view name) {
+    if (const Exercise* x = find_exercise(name)) return *x;
+    throw std::invalid_argument("unknown exercise '" + std::string(name) + "' (" + exercise_names() + ")");
+}
+
 }  // namespace
 
-CourseApp::CourseApp(Exercise e) : exercise_(e), course_(scene::make_course_scene()) {
+// The one place a plan's light-sample statistics are read (the plan's area, where it has one).
+const render::AreaStats* area_stats(const render::FramePlan& plan) { return render::area_of(plan); }
+
+CourseApp::CourseApp(std::string_view exercise) : exercise_(&exercise_named(exercise)), course_(scene::make_course_scene()) {
     scene_camera_ = course_.scene.camera;
+    // What any exercise's frames add to the course scene (W09P2b's ground), before a GL object is made.
+    for (const Exercise& x : exercise_list())
+        if (x.extend_course) x.extend_course(course_.scene);
     own_scene();
-    apply_defaults(e);
-    // W09P2b's ground: the table quad again with uvs 0..1, so the FBO's picture lies on the table
-    // once, and a white material whose texture (a 1x1 placeholder) the FBO's texture replaces.
-    scene::Scene& s = course_.scene;
-    fbo_mesh_ = static_cast<int>(s.meshes.size());
-    scene::Mesh quad = scene::make_quad(kTableSize, 1.0f);
-    quad.name = "table (W09P2b)";
-    // GL stores a rendered texture bottom row first: flip v so the picture stands upright to the
-    // camera, its top towards the back of the table.
-    for (auto& uv : quad.uvs) uv.y = 1.0f - uv.y;
-    s.meshes.push_back(std::move(quad));
-    fbo_image_ = static_cast<int>(s.images.size());
-    s.images.push_back(scene::Image{1, 1, {255, 255, 255, 255}});
-    scene::Material m;
-    m.name = "off-screen buffer";
-    m.base_color = glm::vec4(1.0f);
-    m.base_color_texture = fbo_image_;
-    m.specular = 0.1f;
-    m.shininess = 16.0f;
-    fbo_material_ = static_cast<int>(s.materials.size());
-    s.materials.push_back(m);
+    apply_defaults();
 }
 
 CourseApp::~CourseApp() = default;
 
 CourseApp::OwnScene* CourseApp::own_scene() {
-    const ExerciseScene which = exercise_info(exercise_).scene;
-    if (which == ExerciseScene::Course) return nullptr;
-    OwnScene& o = which == ExerciseScene::Terrain ? terrain_ : room_;
-    if (!o.scene) {
-        o.scene = std::make_unique<scene::Scene>(which == ExerciseScene::Terrain ? scene::make_terrain_km_scene()
-                                                                                  : scene::make_bulb_room_scene());
-        o.camera = o.scene->camera;
-        o.fly = o.start = fly_from_view(o.camera.view);
-        o.moved = false;
+    const Exercise& x = *exercise_;
+    if (!flies(x)) return nullptr;
+    auto it = own_.find(x.name);
+    if (it == own_.end()) {
+        auto made = std::make_unique<scene::Scene>(x.make_scene());
+        const scene::Camera camera = made->camera;
+        it = own_.emplace(x.name, OwnScene{std::move(made), camera, FlyRig(camera.view, x.fly_bounds())}).first;
     }
-    return &o;
+    return &it->second;
 }
 
 const CourseApp::OwnScene* CourseApp::own_scene() const {
-    const ExerciseScene which = exercise_info(exercise_).scene;
-    const OwnScene* o = which == ExerciseScene::Terrain ? &terrain_ : which == ExerciseScene::Room ? &room_ : nullptr;
-    return o && o->scene ? o : nullptr;
-}
-
-// The bounds of the current exercise's fly camera.
-static const FlyBounds& bounds_of(Exercise e) {
-    return exercise_info(e).scene == ExerciseScene::Terrain ? terrain_fly_bounds() : room_fly_bounds();
+    const auto it = own_.find(exercise_->name);
+    return it != own_.end() ? &it->second : nullptr;
 }
 
 const scene::Scene& CourseApp::scene() const {
@@ -108,50 +84,46 @@ const scene::Scene& CourseApp::scene() const {
 
 bool CourseApp::fly(double forward, double right, double up, double yaw, double pitch) {
     OwnScene* o = own_scene();
-    if (!o || !fly_move(o->fly, bounds_of(exercise_), forward, right, up, yaw, pitch)) return false;
-    o->moved = true;
-    return true;
+    return o && o->fly.move(forward, right, up, yaw, pitch);
 }
 
 void CourseApp::reset_camera() {
-    if (OwnScene* o = own_scene()) {
-        o->fly = o->start;
-        o->moved = false;
-    }
+    if (OwnScene* o = own_scene()) o->fly.reset();
 }
 
 bool CourseApp::camera_moved() const {
     const OwnScene* o = own_scene();
-    return o && o->moved;
+    return o && o->fly.moved;
 }
 
 const FlyCamera& CourseApp::camera() const {
     static const FlyCamera none;
     const OwnScene* o = own_scene();
-    return o ? o->fly : none;
+    return o ? o->fly.at : none;
 }
 
-double CourseApp::fly_step() const { return own_scene() ? bounds_of(exercise_).step : 0.0; }
+double CourseApp::fly_step() const { return own_scene() ? exercise_->fly_bounds().step : 0.0; }
 
-void CourseApp::apply_defaults(Exercise e) {
-    for (const auto& [name, value] : exercise_info(e).defaults)
+void CourseApp::apply_defaults() {
+    for (const auto& [name, value] : exercise_->defaults)
         if (const std::string err = set_option(name, value); !err.empty())
-            throw std::logic_error("exercise " + std::string(exercise_info(e).name) + ": default " + err);
+            throw std::logic_error("exercise " + std::string(exercise_->name) + ": default " + err);
 }
 
-void CourseApp::set_exercise(Exercise e) {
-    if (e == exercise_) return;
+void CourseApp::set_exercise(std::string_view name) {
+    const Exercise& next = exercise_named(name);
+    if (&next == exercise_) return;
     // What the old exercise started with goes back to the defaults; the new one's are set.
-    for (const auto& d : exercise_info(exercise_).defaults) {
-        const std::string_view name = d.first;
+    for (const auto& d : exercise_->defaults) {
+        const std::string_view option = d.first;
         std::string v;
-        if (const auto* t = render::find_option(toggle_table(), name)) v = t->print(Toggles{});
-        else if (const auto* o = render::find_option(render::option_table(), name)) v = o->print(render::Options{});
-        set_option(name, v);
+        if (const auto* t = render::find_option(toggle_table(), option)) v = t->print(Toggles{});
+        else if (const auto* o = render::find_option(render::option_table(), option)) v = o->print(render::Options{});
+        set_option(option, v);
     }
-    exercise_ = e;
+    exercise_ = &next;
     own_scene();
-    apply_defaults(e);
+    apply_defaults();
 }
 
 // ---- options --------------------------------------------------------------------------------
@@ -161,8 +133,8 @@ namespace {
 // The values the exercise's control for a technique option offers: a select's or radios' list, a
 // checkbox's two; empty where the control takes any value the option takes (a number box, a
 // slider) or the exercise has no control for it (a setting kept from a URL).
-std::vector<std::string> offered_values(Exercise e, const render::OptionInfo& info) {
-    for (const Control& c : exercise_info(e).controls) {
+std::vector<std::string> offered_values(const Exercise& x, const render::OptionInfo& info) {
+    for (const Control& c : x.controls) {
         if (c.option != info.name) continue;
         if (c.kind == ControlKind::Checkbox && c.values.empty()) return {"on", "off"};
         if (c.kind != ControlKind::Select && c.kind != ControlKind::Radio && c.kind != ControlKind::Checkbox) return {};
@@ -185,7 +157,7 @@ std::string joined(const std::vector<std::string>& v) {
 std::string CourseApp::keep_to_the_list(render::Settings& t, std::string_view name) {
     const auto* o = render::find_option(render::option_table(), name);
     if (!o) return {};
-    std::vector<std::string> offered = offered_values(exercise_, o->info);
+    std::vector<std::string> offered = offered_values(*exercise_, o->info);
     if (offered.empty()) return {};
     const std::string v = setting_value(t, name);
     const auto offers = [&v](const std::vector<std::string>& values) {
@@ -225,8 +197,8 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
     if (name == "time") {
         render::Options t;
         if (std::string err = render::parse_option(t, name, value); !err.empty()) return without_dashes(err);
-        set_time(t.job.time);
-        paused_ = true;
+        clock_.set(t.job.time);
+        clock_.paused = true;
         return {};
     }
     if (name == "eye") {
@@ -237,24 +209,20 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
     }
     if (name == "camera") {
         OwnScene* o = own_scene();
-        if (!o)
-            return "camera: only the exercises with a scene of their own (" + std::string(exercise_info(Exercise::Cascades).name) +
-                   ", " + std::string(exercise_info(Exercise::Bulb).name) + ") fly their camera";
-        if (std::string err = parse_fly(value, bounds_of(exercise_), o->fly); !err.empty()) return err;
-        o->moved = true;
-        return {};
+        if (!o) {
+            std::string flying;
+            for (const Exercise& x : exercise_list())
+                if (flies(x)) flying += (flying.empty() ? "" : ", ") + std::string(x.name);
+            return "camera: only the exercises with a scene of their own (" + flying + ") fly their camera";
+        }
+        return o->fly.set(value);
     }
-    if (set_by_the_exercise(exercise_, name))
+    if (set_by_the_exercise(*exercise_, name))
         return std::string(name) + ": set by the exercise (or the canvas, the window), not an option here";
     render::Settings t = settings_;
     if (std::string err = render::parse_option(t, name, value); !err.empty()) return without_dashes(err);
     if (std::string err = keep_to_the_list(t, name); !err.empty()) return err;
-    if (exercise_ == Exercise::Soft) {
-        // The soft exercise's methods exclude each other: a filter other than hard takes one light
-        // sample, more than one light sample the hard filter (the last one set wins).
-        if (name == "filter" && t.filter != shadow::Filter::Hard) t.area_samples = 1;
-        if (name == "area-samples" && t.area_samples > 1) t.filter = shadow::Filter::Hard;
-    }
+    if (exercise_->on_set) exercise_->on_set(t, name);
     if (t.encoding == shadow::Encoding::DepthTex && renderer_ && !renderer_->caps().depth_texture)
         return "encoding: depthtex needs WEBGL_depth_texture / OES_depth_texture, which this context lacks";
     settings_ = t;
@@ -263,7 +231,7 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
 
 std::vector<std::pair<std::string, std::string>> CourseApp::options() const {
     std::vector<std::string> shown;
-    for (const Control& c : exercise_info(exercise_).controls)
+    for (const Control& c : exercise_->controls)
         if (std::find(shown.begin(), shown.end(), c.option) == shown.end()) shown.emplace_back(c.option);
     std::vector<std::pair<std::string, std::string>> out;
     for (const auto& n : shown) out.emplace_back(n, value_of(n));
@@ -272,12 +240,12 @@ std::vector<std::pair<std::string, std::string>> CourseApp::options() const {
     const auto pairs = render::to_pairs(settings_);
     for (size_t i = 0; i < pairs.size(); ++i) {
         const auto& [k, v] = pairs[i];
-        if (set_by_the_exercise(exercise_, k) || std::find(shown.begin(), shown.end(), k) != shown.end()) continue;
+        if (set_by_the_exercise(*exercise_, k) || std::find(shown.begin(), shown.end(), k) != shown.end()) continue;
         if (v != defaults[i].second) out.emplace_back(k, v);
     }
     if (eye_in_shadow_ && std::find(shown.begin(), shown.end(), "eye") == shown.end()) out.emplace_back("eye", value_of("eye"));
     if (camera_moved()) out.emplace_back("camera", fly_value(camera()));
-    if (paused_ && light_time_ == jump_time_) out.emplace_back("time", format_number(light_time_));
+    if (clock_.paused && clock_.together()) out.emplace_back("time", format_number(clock_.light));
     return out;
 }
 
@@ -309,8 +277,7 @@ void CourseApp::create_gl(const platform::Platform& context) {
     renderer_ = std::make_unique<render::Renderer>(gl::probe_caps(context));
     renderer_->load(scene());
     ++generation_;
-    ms_.clear();  // frame times of the old context say nothing about this one
-    gpu_frames_.clear();
+    timing_.clear();  // frame times of the old context say nothing about this one
     renderer_->gpu_timer().enable(gpu_timing_);
     if (settings_.encoding == shadow::Encoding::DepthTex && !renderer_->caps().depth_texture)
         settings_.encoding = shadow::Encoding::RGBA;
@@ -320,54 +287,49 @@ void CourseApp::create_gl(const platform::Platform& context) {
 void CourseApp::drop_gl() { renderer_.reset(); }
 
 const gl::Caps* CourseApp::caps() const { return renderer_ ? &renderer_->caps() : nullptr; }
-
-// ---- time -----------------------------------------------------------------------------------
-
-void CourseApp::advance(double dt) {
-    if (paused_ || !(dt > 0.0)) return;
-    dt = std::min(dt, 0.25);  // a tab in the background must not make the teapot leap
-    if (toggles_.light) light_time_ += dt;
-    if (toggles_.jump) jump_time_ += dt;
-    // Switched off in mid-air, the teapot comes down and rests on the table.
-    else jump_time_ = std::min(jump_time_ + dt, scene::course_teapot_landing(jump_time_));
-}
-
-void CourseApp::set_time(double t) { light_time_ = jump_time_ = t; }
+bool CourseApp::gpu_timer_available() const { return renderer_ && renderer_->caps().timer_query; }
+int CourseApp::gpu_discarded() const { return renderer_ ? renderer_->gpu_timer().discarded() : 0; }
 
 // ---- drawing --------------------------------------------------------------------------------
 
-void CourseApp::render(render::Settings s, const render::FrameInputs& in, const char* label) {
-    render(course_.scene, s, in, label);
+void CourseApp::render(const render::Settings& s, const render::FrameInputs& in, const char* label) {
+    render_plan(course_.scene, s, in, label);
 }
 
-void CourseApp::render(const scene::Scene& sc, const render::Settings& s, const render::FrameInputs& in,
-                       const char* label) {
+void CourseApp::render_own_scene(const render::Settings& s, const render::FrameInputs& in) {
+    OwnScene& o = *own_scene();
+    // Unmoved, the scene's own camera exactly (the frame `penumbra render --scene
+    // tests/data/terrain_km.gltf` or `bulb_room.gltf` draws); moved, the fly camera's.
+    o.scene->camera = o.camera;
+    o.scene->camera.view = o.fly.view(o.camera.view);
+    render_plan(*o.scene, s, in, "");
+}
+
+void CourseApp::render_plan(const scene::Scene& sc, const render::Settings& s, const render::FrameInputs& in,
+                            const char* label) {
     renderer_->gpu_timer().set_prefix(*label ? std::string(label) + ": " : std::string());
     const render::FramePlan& p = renderer_->render(sc, s, in);
     plan_text_ += p.describe();
-    if (const render::AreaStats* a = render::area_of(p); a && !area_) area_ = *a;
+    if (keep_plans_) plans_.push_back(p);
+    if (const render::AreaStats* a = area_stats(p); a && !area_) area_ = *a;
 }
 
 render::Settings CourseApp::frame_settings() const {
-    render::Settings s = settings_;
-    if (!offers(exercise_info(exercise_), "technique")) s.technique = exercise_info(exercise_).technique;
-    if (!offers(exercise_info(exercise_), "post")) s.post.clear();  // the multipass exercise's alone
-    if (!offers(exercise_info(exercise_), "shading")) s.shading = render::Shading::Forward;
-    if (!offers(exercise_info(exercise_), "lights")) s.lights = 0;
-    // The cascades' settings belong to the cascades and bulb exercises alone (the bulb's cube
-    // has no split, snap or blend).
-    const render::Settings d;
-    if (!offers(exercise_info(exercise_), "cascades")) s.cascades = d.cascades;
-    if (!offers(exercise_info(exercise_), "cascade-split")) s.cascade_split = d.cascade_split;
-    if (!offers(exercise_info(exercise_), "cascade-snap")) s.cascade_snap = d.cascade_snap;
-    if (!offers(exercise_info(exercise_), "cascade-blend")) s.cascade_blend = d.cascade_blend;
-    if (!offers(exercise_info(exercise_), "cube-layout")) s.cube_map = d.cube_map;
-    if (exercise_ == Exercise::Soft && toggles_.reference) {
-        s.filter = shadow::Filter::Hard;
-        s.area_samples = kReferenceSamples;
-        s.area_per_frame = kReferencePerFrame;
+    // Each technique setting the exercise has no control for: its own value, or the default where
+    // another exercise holds it only where offered (the multipass exercise's post passes, the
+    // cascades', the cube's layout); any other keeps what was set (a URL's, a key's).
+    const Exercise& x = *exercise_;
+    render::Options o, defaults;
+    o.settings = settings_;
+    for (const auto& option : render::option_table()) {
+        const std::string_view name = option.info.name;
+        if (option.info.part != render::OptionPart::Technique || offers(x, name)) continue;
+        const auto own = std::find_if(x.frame.begin(), x.frame.end(), [&](const auto& f) { return f.first == name; });
+        if (own != x.frame.end()) option.store(o, own->second);
+        else if (held_here_only(name)) option.store(o, option.print(defaults));
     }
-    return s;
+    if (x.settings) x.settings(toggles_, o.settings);
+    return o.settings;
 }
 
 render::FrameInputs CourseApp::light_view(render::Output output, bool ortho, const render::Output& camera) const {
@@ -392,123 +354,32 @@ render::FrameInputs CourseApp::light_view(render::Output output, bool ortho, con
 void CourseApp::draw(int width, int height) {
     if (!renderer_) throw std::runtime_error("no GL context");
     const auto start = std::chrono::steady_clock::now();
-    scene::animate_course(course_, light_time_, jump_time_);
+    scene::animate_course(course_, clock_.light, clock_.jump);
     // The eye: the scene's camera, or (where the light now is) inside the teapot's shadow.
     course_.scene.camera = scene_camera_;
     if (eye_in_shadow_) scene::place_eye_in_shadow(course_.scene);
-    const render::Output window = render::Output::to_window(width, height);
-    render::Settings s = frame_settings();
+    width_ = width;
+    height_ = height;
     plan_text_.clear();
+    plans_.clear();
     frame_note_.clear();
     area_.reset();
     render::FrameInputs in;
-    in.output = window;
+    in.output = render::Output::to_window(width, height);
     // The frame's plans are timed as one GPU frame (a plan that throws leaves it unfinished: the
     // next frame drops it).
     gl::PassTimer& timer = renderer_->gpu_timer();
     timer.begin_group();
-    switch (exercise_) {
-        case Exercise::W09P1:
-            s.aov = render::Aov::Color;
-            render(s, in);
-            break;
-        case Exercise::W09P2a:  // seen from the light, nothing is in shadow
-            s.aov = render::Aov::Color;
-            render(s, light_view(window, toggles_.ortho, window));
-            break;
-        case Exercise::W09P2b: {
-            s.aov = render::Aov::Color;
-            // 1. The scene into a texture (the ground with its marble), 2. the scene from the
-            // camera with that texture where the table's material has its placeholder.
-            int size = std::clamp(settings_.map_size, 1, renderer_->caps().max_target_size());
-            if (toggles_.rtt_copy) {
-                // glCopyTexImage2D copies what the window holds: the texture is no larger than the
-                // window. The largest power of two that fits (WebGL 1 repeats only those).
-                const int fit = std::min(width, height);
-                if (size > fit) {
-                    int p = 1;
-                    while (p * 2 <= fit) p *= 2;
-                    frame_note_ = "rtt=copy: the texture is copied from the window, so it can be no larger than the "
-                                  "window's " + std::to_string(fit) + " pixels: " + std::to_string(p) + "x" +
-                                  std::to_string(p) + " instead of " + std::to_string(size) + "x" + std::to_string(size);
-                    size = p;
-                }
-            }
-            const bool pot = (size & (size - 1)) == 0;  // WebGL 1 repeats only power-of-two textures
-            const gl::Wrap wrap = pot ? gl::Wrap::Repeat : gl::Wrap::Clamp;
-            const render::Output texture =
-                toggles_.rtt_copy ? render::Output::copied_texture(kFboTexture, size, size, gl::Sampling::Linear, wrap)
-                                  : render::Output::texture(kFboTexture, size, size, gl::Sampling::Linear, wrap);
-            render::Output into_output = texture;
-            if (toggles_.rtt_copy) {  // drawn in the window's corner, copied, then drawn over
-                into_output = render::Output::window_region(0, 0, size, size);
-                into_output.copy_to = kFboTexture;
-                into_output.sampling = texture.sampling;
-                into_output.wrap = texture.wrap;
-            }
-            render::FrameInputs into;
-            if (toggles_.fbo_light) into = light_view(into_output, false, window);
-            else into.output = into_output;
-            render(s, into, "texture");
-            in.objects.push_back({course_.table, fbo_mesh_, fbo_material_});
-            in.images.push_back({fbo_image_, texture});
-            render(s, in);
-            break;
-        }
-        case Exercise::W09P2c: {
-            if (s.aov == render::Aov::StencilCount) s.aov = render::Aov::Color;  // no volumes here
-            render(s, in);
-            if (!toggles_.map_view) break;
-            // The shadow map scaled for viewing, a quarter of the smaller side, in the top right corner.
-            const int side = std::max(16, std::min(width, height) / 4);
-            const int margin = std::max(2, side / 16);
-            if (side + margin > width || side + margin > height) break;
-            s.aov = render::Aov::LightDepth;
-            in.output = render::Output::window_region(width - side - margin, height - side - margin, side, side);
-            render(s, in, "map view");
-            break;
-        }
-        case Exercise::Volumes:  // colour, visibility or the stencil count; the volumes drawn or not
-            if (s.aov == render::Aov::LightDepth) s.aov = render::Aov::Color;  // no shadow map here
-            render(s, in);
-            break;
-        case Exercise::Soft:  // one plan: the light samples accumulate over still frames
-            if (s.aov != render::Aov::Visibility) s.aov = render::Aov::Color;
-            render(s, in);
-            break;
-        case Exercise::Stencil:  // the colour image: the effects are drawn on it only
-            s.aov = render::Aov::Color;
-            render(s, in);
-            break;
-        case Exercise::Multipass:  // colour, visibility or a G-buffer view, through the post passes
-            if (s.aov != render::Aov::Visibility && !render::gbuffer_aov(s.aov)) s.aov = render::Aov::Color;
-            render(s, in);
-            break;
-        case Exercise::Cascades:  // the terrain or the room from the fly camera: colour, visibility or
-        case Exercise::Bulb: {    // the cascades (the cube's faces)
-            if (s.aov != render::Aov::Visibility && s.aov != render::Aov::Cascades) s.aov = render::Aov::Color;
-            OwnScene& o = *own_scene();
-            // Unmoved, the scene's own camera exactly (the frame `penumbra render --scene
-            // tests/data/terrain_km.gltf` or `bulb_room.gltf` draws); moved, the fly camera's.
-            o.scene->camera = o.camera;
-            if (o.moved) o.scene->camera.view = fly_view(o.fly);
-            render(*o.scene, s, in);
-            break;
-        }
-    }
+    exercise_->draw(*this, frame_settings(), std::move(in));
     timer.end_group();
     timer.set_prefix("");
     // Wait for the frame before the clock stops. glFinish would do on the desktop, but WebGL's
     // finish() returns at once in Chromium (it only flushes); reading one pixel back waits for the
     // rendering everywhere.
     renderer_->read_window(0, 0, 1, 1);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (ms_.size() < kTimingWindow) ms_.push_back(ms);
-    else ms_[static_cast<size_t>(frames_drawn_) % kTimingWindow] = ms;
-    ++frames_drawn_;
+    timing_.add(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     // The GPU times that have arrived (a few frames old), without waiting.
-    for (gl::GpuFrame& f : timer.take(false)) gpu_frames_.push_back(std::move(f));
-    while (gpu_frames_.size() > kGpuWindow) gpu_frames_.pop_front();
+    timing_.add_gpu(timer.take(false));
 }
 
 void CourseApp::set_gpu_timing(bool on) {
@@ -516,23 +387,17 @@ void CourseApp::set_gpu_timing(bool on) {
     if (renderer_) renderer_->gpu_timer().enable(on);
 }
 
-gl::GpuSummary CourseApp::gpu_summary() const {
-    return gl::summarize(std::vector<gl::GpuFrame>(gpu_frames_.begin(), gpu_frames_.end()));
-}
-
 std::vector<std::uint8_t> CourseApp::read_pixels(int width, int height) {
     if (!renderer_) throw std::runtime_error("no GL context");
     return renderer_->read_window(0, 0, width, height);
 }
 
-double CourseApp::median_ms() const {
-    if (ms_.empty()) return 0.0;
-    std::vector<double> v = ms_;
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+std::string CourseApp::last_plan() const { return std::string(exercise_->title) + "\n" + plan_text_; }
 
-std::string CourseApp::last_plan() const { return std::string(exercise_info(exercise_).title) + "\n" + plan_text_; }
+std::string CourseApp::last_plan_json() const {
+    std::string j = "{\"title\":" + render::json_quote(exercise_->title) + ",\"plans\":[";
+    for (size_t i = 0; i < plans_.size(); ++i) j += (i ? "," : "") + plans_[i].to_json();
+    return j + "]}";
+}
 
 }  // namespace penumbra::examples

@@ -1,34 +1,17 @@
-// The course's exercises over the library: the four of worksheet W09 (02561), shadow volumes and soft shadows,
-// shared by the browser pages (course_web.cpp) and the desktop app (course_desktop.cpp):
-//   W09P1   jumping teapot on a marble table top, planar projected shadows (stencil), buttons to
-//           switch the light's circulation and the teapot's jump on and off;
-//   W09P2a  the scene from the light: its own view and projection fitted tightly around the
-//           scene, perspective for the point light, orthographic for a directional light;
-//   W09P2b  the scene rendered into a framebuffer object (or into the window and copied out with
-//           glCopyTexImage2D: rtt=copy), and that texture on the ground quad;
-//   W09P2c  shadow mapping: depth encoding, 4x4 PCF, bias (fixed, the encoding's default or auto),
-//           precision (highp or emulated mediump), map size, and the shadow map shown scaled for
-//           viewing in a corner;
-//   volumes shadow volumes counted in the stencil buffer: depth-pass, depth-fail or auto, the
-//           volumes drawn over the image, the stencil count in false colour, and the eye moved
-//           into the teapot's shadow (where depth-pass fails);
-//   soft    soft shadows from a light with a size: the radius, hard / PCF 4x4 / PCSS / Heckbert-Herf
-//           (light samples averaged, converging while the scene stands still), each technique, and
-//           a 256-sample reference to flip to.
-//   stencil, multipass  stencil effects; post-processing and deferred shading;
-//   cascades cascaded shadow maps over a kilometre of terrain (scenes/terrain_scene.h) under a low
-//           sun: the number of cascades, the split, the snap, the blend, the cascades view, and a
-//           camera that flies (fly(), camera=x,y,z,yaw,pitch in the URL);
-//   bulb    a point light's cube of six shadow maps in a room (scenes/room_scene.h): the cube or one
-//           map, the map size, the filter, the cube's faces tinted, and the same fly camera, kept
-//           in the room.
-// Each frame is one or two plans whose inputs carry what an exercise changes (a view from the
-// light, a texture on the ground, a region of the window); the scene itself is never edited.
-// No GL here: the renderer and the gl layer do the drawing; the platform owns the context.
+// The app that hosts the course's exercises (examples/exercises/*.cpp, one module each: list.h),
+// shared by the browser pages (course_web.cpp) and the desktop app (course_desktop.cpp): the
+// options as the URL, the controls and the keys set them, the clocks (clock.h), the GL context's
+// life, the fly camera of an exercise with a scene of its own (fly_camera.h), the frame's timing
+// (frame_timing.h), and each frame: the settings that follow from the option table and the
+// exercise's controls, then the exercise's own draw(), through the Host interface
+// (exercise_list.h). It knows no exercise by name. Each frame is one or two plans whose inputs carry
+// what an exercise changes (a view from the light, a texture on the ground, a region of the
+// window); the scene itself is never edited. No GL here: the renderer and the gl layer do the
+// drawing; the platform owns the context.
 #pragma once
 
 #include <cstdint>
-#include <deque>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -36,29 +19,35 @@
 #include <utility>
 #include <vector>
 
+#include "clock.h"
 #include "exercise_list.h"
 #include "fly_camera.h"
+#include "frame_timing.h"
 #include "gl/caps.h"
 #include "gl/timer.h"
 #include "plan/frames/area_light.h"
 #include "plan/plan.h"
-#include "render/renderer.h"
 #include "plan/settings.h"
+#include "render/renderer.h"
 #include "scenes/course_scene.h"
 
 namespace penumbra::examples {
 
-class CourseApp {
+// The light samples of a plan (Heckbert-Herf), or null: the one place a plan's statistics are read.
+const render::AreaStats* area_stats(const render::FramePlan& plan);
+
+class CourseApp final : private Host {
 public:
-    explicit CourseApp(Exercise e);
+    // The exercise of that name (exercise_list()); std::invalid_argument for a name not listed.
+    explicit CourseApp(std::string_view exercise);
     ~CourseApp();
     CourseApp(const CourseApp&) = delete;
     CourseApp& operator=(const CourseApp&) = delete;
 
-    Exercise exercise() const { return exercise_; }
+    const Exercise& exercise() const { return *exercise_; }
     // Switches to another exercise: the options the old one started with go back to their
-    // defaults, the new one's are set (ExerciseInfo::defaults).
-    void set_exercise(Exercise e);
+    // defaults, the new one's are set (Exercise::defaults). std::invalid_argument for a name not listed.
+    void set_exercise(std::string_view name);
 
     // One option by its URL / command-line name: a technique setting (render's option table), a
     // toggle (exercise_list.h), camera=X,Y,Z,YAW,PITCH (the fly camera of an exercise with a scene
@@ -75,11 +64,12 @@ public:
     // name/value pairs that set_option reads back; time=T only while paused.
     std::vector<std::pair<std::string, std::string>> options() const;
     std::string query() const;  // options() as "name=value&name=value" (query.h's encoding: "1e%2B06")
-    const render::Settings& settings() const { return settings_; }
-    const Toggles& toggles() const { return toggles_; }
+    const render::Settings& settings() const override { return settings_; }
+    const Toggles& toggles() const override { return toggles_; }
     bool eye_in_shadow() const { return eye_in_shadow_; }
-    // The settings the next frame is drawn with: the exercise's technique (unless it offers a
-    // control for it), the soft exercise's reference.
+    // The settings the next frame is drawn with: each technique setting the exercise offers no
+    // control for takes its value (Exercise::frame) or, where another exercise holds it here_only(),
+    // the option's default; then the exercise's own last word (Exercise::settings).
     render::Settings frame_settings() const;
     // Heckbert-Herf's light samples in the last frame (soft shadows), when it had them.
     const std::optional<render::AreaStats>& area() const { return area_; }
@@ -99,14 +89,14 @@ public:
     const gl::Caps* caps() const;
     std::size_t gl_generation() const { return generation_; }  // how many times create_gl ran
 
-    // Time: the light's and the jump's clocks advance by dt when their motion is on and time is
-    // not paused. set_time puts both clocks at t.
-    void advance(double dt);
-    void set_time(double t);
-    void set_paused(bool paused) { paused_ = paused; }
-    bool paused() const { return paused_; }
-    double light_time() const { return light_time_; }
-    double jump_time() const { return jump_time_; }
+    // Time (clock.h): the light's and the jump's clocks advance by dt when their motion is on and
+    // time is not paused. set_time puts both clocks at t.
+    void advance(double dt) { clock_.advance(dt, toggles_.light, toggles_.jump); }
+    void set_time(double t) { clock_.set(t); }
+    void set_paused(bool paused) { clock_.paused = paused; }
+    bool paused() const { return clock_.paused; }
+    double light_time() const { return clock_.light; }
+    double jump_time() const { return clock_.jump; }
 
     // Draws one frame of the current exercise into the default framebuffer (width x height) and
     // waits for it (a one-pixel readback) so the frame's time is measured. Throws gl::Error on a
@@ -115,22 +105,26 @@ public:
     // The default framebuffer's pixels, RGBA8, top row first.
     std::vector<std::uint8_t> read_pixels(int width, int height);
     // Median ms/frame over the last 60 frames (draw + wait), 0 before the first.
-    double median_ms() const;
+    double median_ms() const { return timing_.median_ms(); }
     // GPU time per pass (gl/timer.h, where the context has EXT_disjoint_timer_query): off until
     // switched on; on, each frame's plans are timed as one frame (a second plan's passes named
     // "texture: camera", "map view: light-depth view"), read back without waiting a few frames later, and
     // the last kGpuWindow frames kept. It stays on across a context restore.
     void set_gpu_timing(bool on);
     bool gpu_timing() const { return gpu_timing_; }
-    bool gpu_timer_available() const { return renderer_ && renderer_->caps().timer_query; }
+    bool gpu_timer_available() const;
     // Each pass's median over the kept frames, and their totals' (frames 0: none read yet).
-    gl::GpuSummary gpu_summary() const;
+    gl::GpuSummary gpu_summary() const { return timing_.gpu_summary(); }
     // Frames dropped for GL_GPU_DISJOINT_EXT on this context.
-    int gpu_discarded() const { return renderer_ ? renderer_->gpu_timer().discarded() : 0; }
-    static constexpr std::size_t kGpuWindow = 30;
-    long frames_drawn() const { return frames_drawn_; }
+    int gpu_discarded() const;
+    static constexpr std::size_t kGpuWindow = FrameTiming::kGpuWindow;
+    long frames_drawn() const { return timing_.frames(); }
     // The passes of the last frame (each plan's), for --verbose and the pages.
     std::string last_plan() const;
+    // The last frame's plans as JSON (FramePlan::to_json), for the pages: {"title": ..., "plans":
+    // [...]}; the plans are kept only while keep_plans is on (off until switched on).
+    void set_keep_plans(bool on) { keep_plans_ = on; }
+    std::string last_plan_json() const;
     // What the last frame had to change in the options for the window it was drawn in ("" when
     // nothing): W09P2b's rtt=copy texture larger than the window.
     const std::string& frame_note() const { return frame_note_; }
@@ -157,52 +151,49 @@ public:
     std::string on_key(int key, bool shift);
 
 private:
+    // Host: what the exercise's draw() uses.
+    int width() const override { return width_; }
+    int height() const override { return height_; }
+    const gl::Caps& gl_caps() const override { return renderer_->caps(); }
+    const scene::CourseScene& course() const override { return course_; }
+    void render(const render::Settings& s, const render::FrameInputs& in, const char* label = "") override;
+    void render_own_scene(const render::Settings& s, const render::FrameInputs& in) override;
+    render::FrameInputs light_view(render::Output output, bool ortho, const render::Output& camera) const override;
+    void note_frame(std::string note) override { frame_note_ = std::move(note); }
+
+    void render_plan(const scene::Scene& sc, const render::Settings& s, const render::FrameInputs& in, const char* label);
     // set_option's rule for the values a control lists (see there): "" or the refusal.
     std::string keep_to_the_list(render::Settings& t, std::string_view name);
-    // `label`: a second plan's, put before its passes' names in the GPU times ("texture").
-    void render(render::Settings s, const render::FrameInputs& in, const char* label = "");
-    void render(const scene::Scene& sc, const render::Settings& s, const render::FrameInputs& in,
-                const char* label = "");
     // A scene built in code with its fly camera: made the first time an exercise needs it.
     struct OwnScene {
         std::unique_ptr<scene::Scene> scene;
-        scene::Camera camera;     // its own camera
-        FlyCamera fly, start;     // the fly camera, and where the scene's camera stands
-        bool moved = false;       // the fly camera has left the scene's
+        scene::Camera camera;  // its own camera
+        FlyRig fly;
     };
     // The current exercise's own scene (made if needed), or null with the course scene.
     OwnScene* own_scene();
     const OwnScene* own_scene() const;
-    // The inputs that show the scene from the light: its view and projection fitted tightly around
-    // what the scene's camera sees in `camera` (its output) and, with `ortho`, a directional light
-    // along the point light's line of sight.
-    render::FrameInputs light_view(render::Output output, bool ortho, const render::Output& camera) const;
     // The values key `option` steps through on this exercise.
     std::vector<std::string> key_values(std::string_view option) const;
-    void apply_defaults(Exercise e);
+    void apply_defaults();
 
-    Exercise exercise_;
+    const Exercise* exercise_ = nullptr;
     render::Settings settings_;
     Toggles toggles_;
     scene::CourseScene course_;
     scene::Camera scene_camera_;  // the course scene's own camera (eye=scene)
-    OwnScene terrain_;  // the cascades exercise's
-    OwnScene room_;     // the bulb exercise's
+    std::map<std::string_view, OwnScene> own_;  // by exercise name
     bool eye_in_shadow_ = false;  // eye=in-shadow: scene::place_eye_in_shadow each frame
-    int fbo_mesh_ = -1;      // the table quad with uvs 0..1 (the FBO image once over the table)
-    int fbo_material_ = -1;  // white, textured with the placeholder image the FBO replaces
-    int fbo_image_ = -1;
     std::unique_ptr<render::Renderer> renderer_;
     std::size_t generation_ = 0;
-    double light_time_ = 0.0;
-    double jump_time_ = 0.0;
-    bool paused_ = false;
-    std::vector<double> ms_;  // ring of the last frame times
+    CourseClock clock_;
+    FrameTiming timing_;
     bool gpu_timing_ = false;
-    std::deque<gl::GpuFrame> gpu_frames_;  // the last kGpuWindow frames' GPU times
-    long frames_drawn_ = 0;
+    int width_ = 0, height_ = 0;  // of the frame being drawn
     std::string note_;  // of the last set_option
     std::string plan_text_;  // this frame's passes, for --verbose
+    bool keep_plans_ = false;
+    std::vector<render::FramePlan> plans_;  // this frame's, with keep_plans
     std::string frame_note_;  // the last frame's (frame_note())
     std::optional<render::AreaStats> area_;  // the last frame's light samples
 };

@@ -155,4 +155,21 @@ std::string parse_fly(std::string_view value, const FlyBounds& b, FlyCamera& out
     return {};
 }
 
+bool FlyRig::move(double forward, double right, double up, double yaw, double pitch) {
+    if (!fly_move(at, *bounds, forward, right, up, yaw, pitch)) return false;
+    moved = true;
+    return true;
+}
+
+void FlyRig::reset() {
+    at = start;
+    moved = false;
+}
+
+std::string FlyRig::set(std::string_view value) {
+    if (std::string err = parse_fly(value, *bounds, at); !err.empty()) return err;
+    moved = true;
+    return {};
+}
+
 }  // namespace penumbra::examples

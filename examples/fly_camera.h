@@ -51,4 +51,22 @@ std::string fly_value(const FlyCamera& c);
 // (out unchanged).
 std::string parse_fly(std::string_view text, const FlyBounds& b, FlyCamera& out);
 
+// A scene's fly camera: where it stands, where the scene's own camera stood (the start), whether
+// it has left it, and the bounds it is kept in.
+struct FlyRig {
+    FlyCamera at, start;
+    bool moved = false;
+    const FlyBounds* bounds = nullptr;
+
+    // At the scene camera's `view`, unmoved, kept in `b`.
+    FlyRig(const glm::mat4& view, const FlyBounds& b) : at(fly_from_view(view)), start(at), bounds(&b) {}
+    // fly_move within the bounds; false (nothing changed) on a number that is not finite.
+    bool move(double forward, double right, double up, double yaw, double pitch);
+    void reset();  // back to the start
+    // camera=...: "" or the problem (nothing changed).
+    std::string set(std::string_view value);
+    // The view: the scene camera's `scene_view` exactly until moved, then the fly camera's.
+    glm::mat4 view(const glm::mat4& scene_view) const { return moved ? fly_view(at) : scene_view; }
+};
+
 }  // namespace penumbra::examples

@@ -22,6 +22,7 @@
 //                                                 focused canvas, a drag on it to look around; the
 //                                                 camera goes into the URL (camera=x,y,z,yaw,pitch)
 //   #cascade-plan                                 the last frame plan's cascade or cube face lines, where it has them
+//                                                 (read from the plans' JSON: penumbra_plan_json)
 'use strict';
 
 (function () {
@@ -324,13 +325,22 @@
     canvas.addEventListener('pointercancel', endDrag);
   }
 
-  // The plan's cascade and cube face lines: a pass per cascade ("shadow-map cascade N: ... view
-  // depth A..B, texel T, ...") or per cube face ("shadow-map face +x: ... tile at (X, Y), ... depth
-  // A..B, N of M caster(s)") and the camera pass's cascades and blend, or the cube's faces drawn.
+  // The plan's cascade and cube face lines, from the last frame's plans as JSON (penumbra_plan_json:
+  // FramePlan::to_json of each): a pass per cascade ("cascade N: ... view depth A..B, texel T, ...")
+  // or per cube face ("face +x: ... tile at (X, Y), ... depth A..B, N of M caster(s)"), a pass drawn
+  // before and kept said "reused: ...", and the camera pass's cascades and blend, or the cube's faces drawn.
   function cascadePlan() {
-    const plan = Module.UTF8ToString(Module._penumbra_plan());
-    return plan.split('\n').filter((l) => /cascade|face [+-][xyz]|a cube (map )?of/.test(l))
-      .map((l) => l.trim().replace(/^\d+\.\s*(shadow-map\s*)?/, '').replace(/reused \([^)]*\)/, 'reused')).join('\n');
+    const frame = JSON.parse(Module.UTF8ToString(Module._penumbra_plan_json()));
+    const lines = [];
+    for (const plan of frame.plans || []) {
+      for (const pass of plan.passes) {
+        if (!/cascade|face [+-][xyz]|a cube (map )?of/.test(pass.name + ': ' + pass.detail)) continue;
+        // A pass kept from the last frame says so before its detail; a "reused (...)" in a detail is cut short.
+        const detail = pass.skipped ? 'reused: ' + pass.detail : pass.detail.replace(/reused \([^)]*\)/, 'reused');
+        lines.push((pass.name + ': ' + detail).trim().replace(/^shadow-map\s*/, ''));
+      }
+    }
+    return lines.join('\n');
   }
 
   // Each pass's median GPU ms, a line each (and in how many frames, where not in all: a shadow map

@@ -17,7 +17,9 @@ export const CHROMIUM_ARGS = [
   '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update',
   '--disable-sync',
 ];
-export const PAGES = ['w09p1', 'w09p2a', 'w09p2b', 'w09p2c', 'volumes', 'soft', 'stencil', 'multipass', 'cascades', 'bulb'];
+// Every exercise's page, in the list's order: the X(name) lines of examples/exercises/list.h.
+export const PAGES = [...readFileSync(new URL('../../examples/exercises/list.h', import.meta.url), 'utf8')
+  .matchAll(/^ *X\(([a-z0-9_]+)\)/gm)].map((m) => m[1]);
 
 const TYPES = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.css': 'text/css; charset=utf-8',
