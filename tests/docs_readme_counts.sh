@@ -3,7 +3,7 @@
 #   "N techniques"  the choices of --technique in the option table (`penumbra options`), and the
 #                   README's technique table has one row per technique, each named
 #   "N options"     the option table's options (`penumbra options`, one a line)
-#   "N exercises"   the exercise list (examples/exercise_list.cpp), and web/thumbs has a picture of each
+#   "N exercises"   the exercise list (examples/exercises/list.h), and web/thumbs has a picture of each
 #   "N PNGs"        what `penumbra gallery` writes (run small, into a temporary folder)
 # Each phrase must appear at least once and every occurrence must hold the code's number. A control
 # first: a copy of README.md with one count off by one must fail.
@@ -19,7 +19,7 @@ trap 'rm -rf "$tmp"' EXIT
 options=$(wc -l < "$tmp/options.tsv")
 techniques_list=$(awk -F'\t' '$1 == "technique" { print $4 }' "$tmp/options.tsv" | tr -d ' ' | tr ',' ' ')
 techniques=$(wc -w <<< "$techniques_list")
-exercise_names=$(grep -oE '^ *\{Exercise::[A-Za-z0-9]+, "[a-z0-9]+"' "$src/examples/exercise_list.cpp" | grep -oE '"[a-z0-9]+"' | tr -d '"')
+exercise_names=$(grep -oE '^ *X\([a-z0-9]+\)' "$src/examples/exercises/list.h" | grep -oE '[a-z0-9]+\)' | tr -d ')')
 exercises=$(wc -w <<< "$exercise_names")
 "$cli" gallery --size 16x16 --map-size 16 --out-dir "$tmp/gallery" > "$tmp/gallery.log" 2>/dev/null
 pngs=$(find "$tmp/gallery" -name '*.png' | wc -l)
