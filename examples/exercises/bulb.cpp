@@ -5,16 +5,6 @@
 
 namespace penumbra::examples::exercises {
 
-namespace {
-
-// The room from the fly camera: colour, visibility or the cube's faces.
-void draw(Host& host, render::Settings s, render::FrameInputs in) {
-    if (s.aov != render::Aov::Visibility && s.aov != render::Aov::Cascades) s.aov = render::Aov::Color;
-    host.render_own_scene(s, in);
-}
-
-}  // namespace
-
 Exercise bulb() {
     Exercise x{"bulb", "A point light's cube: a bare bulb in a room",
          "One shadow map sees the scene through one frustum, and a point light in a room shines every way: whatever "
@@ -51,7 +41,7 @@ Exercise bulb() {
     x.keys = {{'N', "cascades", "bulb: shadow maps cube / one map / auto, Shift+N backwards"},
               {'K', "filter", "bulb: filter hard / PCF 4x4 / PCSS"},
               {'C', "cube-layout", "bulb: the cube's faces in an atlas / a cube map"}};
-    x.draw = draw;
+    x.draw = draw_own_scene;
     return x;
 }
 

@@ -6,16 +6,6 @@
 
 namespace penumbra::examples::exercises {
 
-namespace {
-
-// The terrain from the fly camera: colour, visibility or the cascades.
-void draw(Host& host, render::Settings s, render::FrameInputs in) {
-    if (s.aov != render::Aov::Visibility && s.aov != render::Aov::Cascades) s.aov = render::Aov::Color;
-    host.render_own_scene(s, in);
-}
-
-}  // namespace
-
 Exercise cascades() {
     Exercise x{"cascades", "Cascaded shadow maps: a kilometre of terrain under a low sun",
          "One shadow map stretched over a kilometre gives each texel a quarter of a metre or more: near the camera, "
@@ -52,7 +42,7 @@ Exercise cascades() {
               {'K', "cascade-split", "cascades: split 0 / 0.25 / 0.5 / 0.75 / 0.9 / 1 (uniform .. logarithmic)"},
               {'G', "cascade-snap", "cascades: snap the windows to whole texels on / off"},
               {'B', "cascade-blend", "cascades: blend band 0 / 0.05 / 0.1 / 0.2 / 0.3 / 0.5 of a slice"}};
-    x.draw = draw;
+    x.draw = draw_own_scene;
     return x;
 }
 

@@ -3,16 +3,6 @@
 
 namespace penumbra::examples::exercises {
 
-namespace {
-
-// The colour image: the effects are drawn on it only.
-void draw(Host& host, render::Settings s, render::FrameInputs in) {
-    s.aov = render::Aov::Color;
-    host.render(s, in);
-}
-
-}  // namespace
-
 Exercise stencil() {
     const Control light = light_toggle(), jump = jump_toggle();
     Exercise x{"stencil", "Stencil effects: outline, mirror, portal",
@@ -49,7 +39,7 @@ Exercise stencil() {
           here_only({"technique", "Shadows", K::Select, {"shadowmap", "planar", "volumes", "none"}, {},
            "planar and volumes keep their shadows in the stencil too"})},
          {{"effects", "outline"}}};
-    x.draw = draw;
+    x.draw = draw_colour;
     return x;
 }
 

@@ -4,16 +4,6 @@
 
 namespace penumbra::examples::exercises {
 
-namespace {
-
-// The colour image with the planar shadow.
-void draw(Host& host, render::Settings s, render::FrameInputs in) {
-    s.aov = render::Aov::Color;
-    host.render(s, in);
-}
-
-}  // namespace
-
 Exercise w09p1() {
     const Control light = light_toggle(), jump = jump_toggle();
     Exercise x{"w09p1", "W09P1: Jumping teapot on a marble table top",
@@ -26,7 +16,7 @@ Exercise w09p1() {
          "Switch the jump off: the teapot lands and its shadow meets its base. Watch the shadow stay flat on "
          "the table as the light circles.", {light, jump}};
     x.frame = {{"technique", "planar"}};
-    x.draw = draw;
+    x.draw = draw_colour;
     return x;
 }
 

@@ -10,16 +10,8 @@ app=$1 out=$2/soft
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$out"
 
-shot() {  # shot NAME [app options...]
-  local name=$1
-  shift
-  rm -f "$out/$name.png"
-  if ! xvfb-run -a -s "-screen 0 1280x1024x24" "$app" --exercise soft --frames 5 --time 0 --aov visibility \
-       --screenshot "$out/$name.png" "$@" >"$out/$name.log" 2>&1; then
-    echo "desktop soft $name: penumbra-desktop failed:"; cat "$out/$name.log"; exit 1
-  fi
-  grep -q "^5 frames" "$out/$name.log" || { echo "desktop soft $name: did not render 5 frames:"; cat "$out/$name.log"; exit 1; }
-}
+exercise=soft time=0
+source "$here/visibility_shots.sh"
 
 shot hard --light-radius 0 --filter hard
 shot pcf --light-radius 0 --filter pcf4x4

@@ -10,16 +10,8 @@ app=$1 out=$2/volumes
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$out"
 
-shot() {  # shot NAME [app options...]
-  local name=$1
-  shift
-  rm -f "$out/$name.png"
-  if ! xvfb-run -a -s "-screen 0 1280x1024x24" "$app" --exercise volumes --frames 5 --time 0.6 --aov visibility \
-       --screenshot "$out/$name.png" "$@" >"$out/$name.log" 2>&1; then
-    echo "desktop volumes $name: penumbra-desktop failed:"; cat "$out/$name.log"; exit 1
-  fi
-  grep -q "^5 frames" "$out/$name.log" || { echo "desktop volumes $name: did not render 5 frames:"; cat "$out/$name.log"; exit 1; }
-}
+exercise=volumes time=0.6
+source "$here/visibility_shots.sh"
 
 shot scene
 shot zpass --eye in-shadow --volume-method zpass

@@ -14,17 +14,13 @@
 #include "scenes/course_scene.h"
 #include "scenes/probe_scenes.h"
 #include "measure/ray_tracer.h"
+#include "../test_finite.h"
 
 using namespace penumbra;
 
 namespace {
 
-bool finite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
-    return true;
-}
+using test::finite;
 
 class Extremes : public test::GlTest {
 protected:

@@ -13,6 +13,8 @@
 #include "shadow/light_frustum.h"
 #include "shadow/pcf.h"
 
+#include "../test_finite.h"
+
 using namespace penumbra;
 using namespace penumbra::shadow;
 
@@ -20,12 +22,7 @@ namespace {
 
 constexpr float kEps = 1e-5f;
 
-bool finite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
-    return true;
-}
+using test::finite;
 
 // A table-top scene's corner points: a 10 x 10 ground quad and a box on it.
 std::vector<glm::vec3> table_points() {

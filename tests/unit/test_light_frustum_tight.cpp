@@ -14,6 +14,7 @@
 #include "plan/plan.h"
 #include "scenes/course_scene.h"
 #include "shadow/light_frustum.h"
+#include "../test_finite.h"
 
 using namespace penumbra;
 using namespace penumbra::shadow;
@@ -22,12 +23,7 @@ using namespace penumbra::shadow;
 
 namespace {
 
-bool finite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
-    return true;
-}
+using test::finite;
 
 scene::Bounds box(const glm::vec3& lo, const glm::vec3& hi) { return scene::Bounds::around(lo, hi); }
 
