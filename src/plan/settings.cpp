@@ -2,6 +2,8 @@
 // and Settings' equality.
 #include "plan/settings.h"
 
+#include <stdexcept>
+
 namespace penumbra::render {
 
 std::string_view to_string(Technique t) {
@@ -13,6 +15,12 @@ std::string_view to_string(Technique t) {
         case Technique::None: return "none";
     }
     return "?";
+}
+
+Technique technique_named(std::string_view name) {
+    for (Technique t : kAllTechniques)
+        if (to_string(t) == name) return t;
+    throw std::invalid_argument("no technique named '" + std::string(name) + "'");
 }
 
 std::string_view to_string(MapFaces f) {

@@ -96,6 +96,9 @@ inline bool gbuffer_aov(Aov a) {
 }
 
 std::string_view to_string(Technique t);
+// The technique of that name (to_string's, the option table's choice): what a tool that picks
+// techniques to compare names them by; std::invalid_argument for a name that is none.
+Technique technique_named(std::string_view name);
 std::string_view to_string(Aov a);
 std::string_view to_string(MapFaces f);
 std::string_view to_string(LightFit f);

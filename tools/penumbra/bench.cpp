@@ -177,7 +177,7 @@ std::vector<Planned> before_rows(const Sweep& w) {
         for (int m : w.o.maps) {
             if (m != 512 && m != 1024 && m != 2048) continue;
             render::Settings s = w.base.settings;
-            s.technique = render::Technique::ShadowMap;
+            s.technique = render::technique_named("shadowmap");
             s.encoding = shadow::Encoding::RGBA;
             s.filter = f;
             s.map_size = m;
@@ -225,11 +225,11 @@ void silhouette_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& 
     std::vector<Planned> techniques;
     {
         render::Settings s = w.base.settings;
-        s.technique = render::Technique::Volumes;
+        s.technique = render::technique_named("volumes");
         s.volume_method = render::VolumeMethod::Auto;
         techniques.push_back({s, technique_label(s)});
         s = w.base.settings;
-        s.technique = render::Technique::ShadowMap;
+        s.technique = render::technique_named("shadowmap");
         s.encoding = shadow::Encoding::RGBA;
         s.filter = shadow::Filter::Hard;
         s.map_size = 1024;
@@ -334,7 +334,7 @@ void run_sweep(Sweep& w) {
         for (auto f : w.filters)
             for (int m : o.maps) {
                 render::Settings s = w.base.settings;
-                s.technique = render::Technique::ShadowMap;
+                s.technique = render::technique_named("shadowmap");
                 s.encoding = e;
                 s.filter = f;
                 s.map_size = m;
@@ -345,14 +345,14 @@ void run_sweep(Sweep& w) {
     // silhouettes and the shadows' area on screen rather than with a map.
     for (auto m : render::kAllVolumeMethods) {
         render::Settings s = w.base.settings;
-        s.technique = render::Technique::Volumes;
+        s.technique = render::technique_named("volumes");
         s.volume_method = m;
         techniques.push_back({s, technique_label(s)});
     }
     if (o.references)
-        for (auto t : {render::Technique::None, render::Technique::Planar}) {
+        for (const char* t : {"none", "planar"}) {
             render::Settings s = w.base.settings;
-            s.technique = t;
+            s.technique = render::technique_named(t);
             techniques.push_back({s, technique_label(s)});
         }
     // Work units: one accuracy frame and `rounds` timing runs per technique and scene.

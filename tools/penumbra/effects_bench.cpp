@@ -116,7 +116,7 @@ void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in)
     {
         render::Settings s = w.base.settings;
         techniques.push_back({s, technique_label(s)});
-        s.technique = render::Technique::Volumes;
+        s.technique = render::technique_named("volumes");
         s.volume_method = render::VolumeMethod::Auto;
         if (techniques.front().label != technique_label(s)) techniques.push_back({s, technique_label(s)});
     }

@@ -156,15 +156,15 @@ int run_gallery(const std::string& dir, const render::Options& base, const std::
         for (auto f : shadow::kAllFilters) {
             if (e == shadow::Encoding::DepthTex && !r.caps().depth_texture) continue;
             render::Options o = base;
-            o.settings.technique = render::Technique::ShadowMap;
+            o.settings.technique = render::technique_named("shadowmap");
             o.settings.encoding = e;
             o.settings.filter = f;
             rows.push_back({std::string(shadow::to_string(e)) + "-" + std::string(shadow::to_string(f)), o});
         }
-    for (auto t : {render::Technique::Planar, render::Technique::Volumes, render::Technique::None}) {
+    for (const char* t : {"planar", "volumes", "none"}) {
         render::Options o = base;
-        o.settings.technique = t;
-        rows.push_back({std::string(render::to_string(t)), o});
+        o.settings.technique = render::technique_named(t);
+        rows.push_back({t, o});
     }
 
     const std::string index = (fs::path(dir) / "index.html").string();

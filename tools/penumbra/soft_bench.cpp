@@ -68,7 +68,7 @@ int frames_for(const SoftRun& w, const Method& m) {
 
 render::Settings map_settings(shadow::Filter f) {
     render::Settings s;
-    s.technique = render::Technique::ShadowMap;
+    s.technique = render::technique_named("shadowmap");
     s.encoding = shadow::Encoding::RGBA;
     s.filter = f;
     s.map_size = 1024;

@@ -99,12 +99,10 @@ std::string class_summary(const measure::TruthImage& t) {
     return out;
 }
 
-// The camera matrix the renderer uses for this scene at this size: ask it (one frame, no shadows).
+// The camera matrix the renderer uses for this scene at this size: every plan's (camera_view), no
+// context needed.
 glm::mat4 renderer_view_proj(const scene::Scene& s, int width, int height) {
-    // The camera's matrix is the plan's: no context is needed to know it.
-    render::Settings none;
-    none.technique = render::Technique::None;
-    return render::plan(s, none, gl::Caps{}, render::offscreen(width, height)).camera.view_proj;
+    return render::camera_view(s, render::offscreen(width, height)).view_proj;
 }
 
 }  // namespace bench
