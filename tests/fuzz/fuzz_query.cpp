@@ -53,7 +53,7 @@ bool in_first_state(const Slot& s) {
            !a.eye_in_shadow() && a.light_time() == 0.0 && a.jump_time() == 0.0;
 }
 
-void make(Slot& s, examples::Exercise e) {
+void make(Slot& s, std::string_view e) {
     s.app = std::make_unique<CourseApp>(e);
     s.settings = s.app->settings();
     s.pairs = render::to_pairs(s.settings);
@@ -61,7 +61,7 @@ void make(Slot& s, examples::Exercise e) {
     s.toggles = toggle_values(*s.app);
 }
 
-void reset(Slot& s, examples::Exercise e) {
+void reset(Slot& s, std::string_view e) {
     CourseApp& a = *s.app;
     // Only what differs is set again (set_option on every option each time halves the speed).
     const auto now = render::to_pairs(a.settings());
@@ -91,18 +91,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::size_t count = slots.size();
     const auto& info = examples::exercise_list()[data[0] % count];
     Slot& s = slots[data[0] % count];
-    if (!s.app) make(s, info.id);
+    if (!s.app) make(s, info.name);
     const std::string_view q(reinterpret_cast<const char*>(data + 1), size - 1);
 
     check_notes(apply_to(*s.app, q));
     // A reload: the query the app writes now, read into an app in its first state.
     const std::string written = s.app->query();
     const render::Settings settings = s.app->settings();
-    reset(s, info.id);
+    reset(s, info.name);
     const std::vector<std::string> notes = apply_to(*s.app, written);
     if (!notes.empty()) fail("the app's own query '" + written + "' read back with a note: " + notes.front());
     if (s.app->query() != written) fail("the app's own query '" + written + "' read back as '" + s.app->query() + "'");
     if (!(s.app->settings() == settings)) fail("the app's own query '" + written + "' read back other settings");
-    reset(s, info.id);
+    reset(s, info.name);
     return 0;
 }
