@@ -3,6 +3,7 @@
 #include "plan/settings.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace penumbra::render {
 
