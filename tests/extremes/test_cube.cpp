@@ -18,6 +18,7 @@
 #include "plan/options.h"
 #include "scene/gltf_loader.h"
 #include "shadow/cube.h"
+#include "../cube_passes.h"
 
 using namespace penumbra;
 
@@ -68,16 +69,7 @@ protected:
     }
 
     // The passes of a plan into the cube's faces, and how many of them ran.
-    static int face_passes(const render::FramePlan& p, int* ran = nullptr) {
-        int n = 0, r = 0;
-        for (const render::Pass& pass : p.passes)
-            if (pass.name.rfind("shadow-map face ", 0) == 0) {
-                ++n;
-                r += !pass.skipped;
-            }
-        if (ran) *ran = r;
-        return n;
-    }
+    static int face_passes(const render::FramePlan& p, int* ran = nullptr) { return test::cube_face_passes(p, ran); }
 };
 
 // The valid pixels of `t` within `reach` pixels of one whose point lies in another face of the

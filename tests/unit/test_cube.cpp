@@ -14,6 +14,7 @@
 #include "plan/plan.h"
 #include "scene/primitives.h"
 #include "shadow/cube.h"
+#include "../cube_passes.h"
 
 using namespace penumbra;
 
@@ -167,16 +168,7 @@ struct CubePlan : ::testing::Test {
     render::FramePlan make(const render::FramePlan* previous = nullptr) {
         return render::plan(s, settings, caps, render::offscreen(128, 128), previous);
     }
-    static int face_passes(const render::FramePlan& p, int* ran = nullptr) {
-        int n = 0, r = 0;
-        for (const render::Pass& pass : p.passes)
-            if (pass.name.rfind("shadow-map face ", 0) == 0) {
-                ++n;
-                r += !pass.skipped;
-            }
-        if (ran) *ran = r;
-        return n;
-    }
+    static int face_passes(const render::FramePlan& p, int* ran = nullptr) { return test::cube_face_passes(p, ran); }
 };
 
 TEST_F(CubePlan, OnePassPerDrawnFaceIntoItsTileOfOneAtlas) {

@@ -132,6 +132,20 @@ export function check(condition, message) {
 }
 
 // The page's pending GL errors (window.penumbra.glError until 0; at most 16).
+// The options `want` (name -> value) in the page's URL and its module's state, and again after a
+// reload from that URL: what a student's link keeps.
+export async function checkKeptOverReload(page, want) {
+  const params = new URL(page.url()).searchParams;
+  for (const [k, v] of Object.entries(want)) check(params.get(k) === v, `URL ${page.url()}: ${k} is not ${v}`);
+  let s = await page.evaluate(() => window.penumbra.state());
+  for (const [k, v] of Object.entries(want)) check(s.options[k] === v, `module: ${k} = ${s.options[k]}, not ${v}`);
+  await page.reload({ waitUntil: 'load' });
+  await page.evaluate(() => window.penumbra.ready);
+  s = await page.evaluate(() => window.penumbra.state());
+  for (const [k, v] of Object.entries(want)) check(s.options[k] === v, `after reload ${k} = ${s.options[k]}, not ${v}`);
+  return s;
+}
+
 export async function glErrors(page) {
   return page.evaluate(() => {
     const out = [];

@@ -12,7 +12,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { runTest, openPage, waitFrames, readPixels, frameAt, compare, check, glErrors, setOptions, savePng } from './harness.mjs';
+import { runTest, openPage, waitFrames, readPixels, frameAt, compare, check, glErrors, setOptions, savePng, checkKeptOverReload } from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
 if (!cli || !outDir) throw new Error('usage: soft.mjs PENUMBRA_CLI OUT_DIR');
@@ -111,14 +111,7 @@ await runTest('web.soft', async ({ server, browser }) => {
     await page.click('#light');
     const want = { 'light-radius': '0.35', filter: 'hard', 'area-samples': '4', 'area-per-frame': '0', reference: 'off',
                    'pcss-search': '32', 'pcss-taps': '8', technique: 'planar', aov: 'visibility', light: 'on', jump: 'off' };
-    const params = new URL(page.url()).searchParams;
-    for (const [k, v] of Object.entries(want)) check(params.get(k) === v, `URL ${page.url()}: ${k} is not ${v}`);
-    s = await page.evaluate(() => window.penumbra.state());
-    for (const [k, v] of Object.entries(want)) check(s.options[k] === v, `module: ${k} = ${s.options[k]}, not ${v}`);
-    await page.reload({ waitUntil: 'load' });
-    await page.evaluate(() => window.penumbra.ready);
-    s = await page.evaluate(() => window.penumbra.state());
-    for (const [k, v] of Object.entries(want)) check(s.options[k] === v, `after reload ${k} = ${s.options[k]}, not ${v}`);
+    s = await checkKeptOverReload(page, want);
     check((await page.inputValue('#light-radius')) === '0.35', 'the slider lost 0.35');
     check((await page.inputValue('#light-radius-number')) === '0.35', 'the number box lost 0.35');
     check((await page.inputValue('#filter')) === 'hard' && (await page.inputValue('#area-samples')) === '4', 'the method selects');

@@ -9,7 +9,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng } from './harness.mjs';
+import { runTest, openPage, frameAt, compare, check, glErrors, setOptions, savePng, checkKeptOverReload } from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
 if (!cli || !outDir) throw new Error('usage: volumes.mjs PENUMBRA_CLI OUT_DIR');
@@ -44,14 +44,7 @@ await runTest('web.volumes', async ({ server, browser }) => {
     await page.click('#jump');
     const want = { 'volume-method': 'zpass', 'show-volumes': 'on', eye: 'in-shadow', aov: 'stencil-count', jump: 'off',
                    light: 'on' };
-    const params = new URL(page.url()).searchParams;
-    for (const [k, v] of Object.entries(want)) check(params.get(k) === v, `URL ${page.url()}: ${k} is not ${v}`);
-    s = await page.evaluate(() => window.penumbra.state());
-    for (const [k, v] of Object.entries(want)) check(s.options[k] === v, `module: ${k} = ${s.options[k]}, not ${v}`);
-    await page.reload({ waitUntil: 'load' });
-    await page.evaluate(() => window.penumbra.ready);
-    s = await page.evaluate(() => window.penumbra.state());
-    for (const [k, v] of Object.entries(want)) check(s.options[k] === v, `after reload ${k} = ${s.options[k]}, not ${v}`);
+    s = await checkKeptOverReload(page, want);
     check((await page.inputValue('#volume-method')) === 'zpass', 'the method select lost zpass');
     check(await page.isChecked('#show-volumes'), 'the show-the-volumes box lost its tick');
     check(await page.isChecked('#eye'), 'the eye box lost its tick');

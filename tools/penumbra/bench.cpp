@@ -74,6 +74,14 @@ void turn_light(scene::Light& light, const scene::Light& original, const glm::ve
 
 std::string technique_label(const render::Settings& s) { return render::technique_module(s.technique).label(s); }
 
+std::string row_args(const render::Options& base, const SceneSpec& spec, const render::Settings& s) {
+    render::Options labelled = base;
+    labelled.job.scene = spec.name;
+    labelled.job.time = spec.time;
+    labelled.settings = s;
+    return render::to_args(labelled);
+}
+
 void set_technique(Row& row, const render::Settings& s, const std::string& label) {
     row.technique = label;
     const bool map = render::technique_module(s.technique).depth_map();
@@ -418,15 +426,11 @@ void run_sweep(Sweep& w) {
         // Accuracy: the visibility AOV of the very frame the truth shows, for every technique.
         for (const Planned& planned : techniques) {
             render::Settings s = planned.settings;
-            render::Options labelled = w.base;  // what the row was made with, as penumbra render takes it
-            labelled.job.scene = spec.name;
-            labelled.job.time = spec.time;
-            labelled.settings = s;
             Row row;
             row.scene = spec.label;
             row.time = spec.time;
             set_technique(row, s, planned.label);
-            row.settings = render::to_args(labelled);
+            row.settings = row_args(w.base, spec, s);  // what the row was made with
             ++done;
             if (const std::string problem = r.check(still, s, in); !problem.empty()) {
                 w.notes.push_back(spec.label + ": " + row.technique + " skipped: " + problem);

@@ -155,6 +155,9 @@ std::string technique_label(const render::Settings& s);
 // A row's technique columns: its label, and the encoding, filter and map size of a shadow map
 // ("-", "-", 0 for the other techniques).
 void set_technique(Row& row, const render::Settings& s, const std::string& label);
+// The row's settings as `penumbra render` takes them: the bench's options with this scene frame
+// and these settings (Row::settings).
+std::string row_args(const render::Options& base, const SceneSpec& spec, const render::Settings& s);
 
 // "teapot@0.6" -> {teapot, 0.6, course@0.60}; "FILE.gltf" -> {FILE.gltf, 0, FILE's stem}.
 SceneSpec parse_scene_spec(const std::string& spec);

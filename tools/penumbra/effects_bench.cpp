@@ -162,11 +162,7 @@ void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in)
             set_technique(row, s, planned.label);
             row.effects = effects;
             row.post = set.post;
-            render::Options labelled = w.base;
-            labelled.job.scene = spec->name;
-            labelled.job.time = spec->time;
-            labelled.settings = s;
-            row.settings = render::to_args(labelled);
+            row.settings = row_args(w.base, *spec, s);
             if (const std::string problem = r.check(still, s, in); !problem.empty()) {
                 w.notes.push_back(spec->label + ": " + row.technique + " --effects " + effects + " skipped: " + problem);
                 continue;

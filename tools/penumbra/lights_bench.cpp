@@ -69,11 +69,7 @@ void lights_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) 
             set_technique(row, s, technique_label(s));
             row.shading = std::string(render::to_string(shading));
             row.lights = n;
-            render::Options labelled = w.base;
-            labelled.job.scene = spec->name;
-            labelled.job.time = spec->time;
-            labelled.settings = s;
-            row.settings = render::to_args(labelled);
+            row.settings = row_args(w.base, *spec, s);
             if (const std::string problem = r.check(still, s, in); !problem.empty()) {
                 w.notes.push_back(spec->label + ": --shading " + row.shading + " --lights " + std::to_string(n) +
                                   " skipped: " + problem);
