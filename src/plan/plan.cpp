@@ -291,7 +291,6 @@ FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& cap
                            out.height, 0, 0, false};
     // --post blur, bloom: the camera draws into an image of its own, which the post passes read.
     const TargetRef output = c.camera_target;
-    p.output = output;
     if (image_post(s))
         c.camera_target = {c.add_resource(texture_desc(Output::texture("post-scene", out.width, out.height,
                                                                        gl::Sampling::Linear, gl::Wrap::Clamp),

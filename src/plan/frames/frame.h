@@ -29,7 +29,6 @@ struct Planning {
     const Module& module;
     std::vector<const Module*> effects;  // drawn on the colour image (the mirror and portal on visibility too)
     size_t technique_uses = 0;           // plan.stencil's first uses are the technique's (allocate)
-    TargetRef output;                    // the frame's image (the camera draws into ctx.camera_target)
 
     Planning(const scene::Scene& scene, const Settings& s, const gl::Caps& caps, const FrameInputs& in,
              const FramePlan* previous);
