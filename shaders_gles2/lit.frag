@@ -23,7 +23,9 @@
 // GBUFFER_WRITE (--shading deferred's geometry pass: the surface into the G-buffer, gbuffer.glsl:
 // all three targets with GBUFFER_MRT through gl_FragData, else the one GBUFFER_TARGET 0/1/2 names;
 // RECEIVES: the object receives shadows), GBUFFER_READ (the lighting passes, with screen.vert: the
-// surface read back from the G-buffer at the pixel instead of the varyings and the material).
+// surface read back from the G-buffer at the pixel instead of the varyings and the material),
+// LIGHT_HORIZON (a light with a size, or one sample of it: the visibility times the part of the
+// light above the receiver's horizon).
 #include "precision.glsl"
 
 uniform vec4 u_base_color;
@@ -99,6 +101,23 @@ float goochTap(vec2 offset) { return texture2D(u_gooch, g_gooch_uv + offset * g_
 #endif
 #if defined(LIGHT_DIRECT)
 uniform float u_light_weight;
+#endif
+#ifdef LIGHT_HORIZON
+// A light with a size (PCSS), or one point of it (a Heckbert-Herf sample): the part of the light
+// above the receiver's horizon. The light is a disc of radius u_light_size facing the point (a
+// sphere light; a sun: tan of its angular radius at distance 1), as the area-light truth traces
+// it; the receiver's tangent plane cuts it at t = D (n.l) / (R sqrt(1 - (n.l)^2)) radii from its
+// centre, leaving the share (acos(-t) + t sqrt(1 - t^2)) / pi of its area above. R = 0 (a
+// sample): lit only where n.l > 0. Where a light grazes a surface this is what the shadow map
+// cannot say: the surface does not shadow itself in the map, but half the light is behind it.
+uniform float u_light_size;
+float lightHorizon(vec3 n, vec3 l, float distance) {
+    float c = dot(n, l);
+    if (u_light_size <= 0.0) return c > 0.0 ? 1.0 : 0.0;
+    float s = sqrt(max(1.0 - c * c, 1e-8));
+    float t = clamp(c * distance / (s * u_light_size), -1.0, 1.0);
+    return (acos(-t) + t * sqrt(1.0 - t * t)) / 3.14159265;
+}
 #endif
 #if defined(REFLECTED) || defined(CLIPPED)
 uniform vec4 u_clip_plane;  // world (n, d): kept where n.p + d >= 0 (the mirror's camera side, the portal's far side)
@@ -196,6 +215,10 @@ void main() {
             visibility = GOOCH_SUM(goochTap) / float(GOOCH_TAPS);
         }
     }
+#endif
+
+#ifdef LIGHT_HORIZON
+    visibility *= lightHorizon(n, l, u_light.w > 0.0 ? length(u_light.xyz - world) : 1.0);
 #endif
 
 #if defined(AOV_VISIBILITY) && defined(LIGHT_AMBIENT)

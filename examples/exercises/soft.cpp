@@ -55,6 +55,8 @@ Exercise soft() {
           {"reference", "Method", K::Checkbox, {"on", "off"}, {}, "flip between it and the method chosen"},
           {"pcss-search", "PCSS", K::Select, {}, {}, "taps finding the blockers' depth"},
           {"pcss-taps", "PCSS", K::Select, {}, {}, "taps filtering over the penumbra"},
+          {"pcss-blockers", "PCSS", K::Select, {}, {},
+           "layered: the blockers over the receiver size its penumbra; mean: every blocker found (Fernando's)"},
           here_only({"technique", "Shadows", K::Select, {}, {}, "Heckbert-Herf averages any of them; PCSS filters a shadow map"}),
           {"aov", "View", K::Select, {"color", "visibility"}}},
          {{"light", "off"}, {"jump", "off"}, {"light-radius", "0.3"}, {"filter", "pcss"}, {"area-per-frame", "4"}}};

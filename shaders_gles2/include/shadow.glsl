@@ -62,6 +62,16 @@ vec3 cubeFaceWorld(vec3 e) {
 #endif
 #endif
 
+#if (defined(BIAS_AUTO) || defined(FILTER_PCSS)) && !defined(CUBE)
+// The light's eye space, for the receiver's plane (the auto bias's slope, PCSS's blocker search).
+uniform mat3 u_light_rotation;  // world -> light eye space
+#define SHADOW_ROTATE(v) (u_light_rotation * (v))
+#ifdef LIGHT_PERSPECTIVE
+uniform vec2 u_bias_center;     // tan at the middle of the window (an asymmetric frustum; 0 when symmetric)
+#define SHADOW_CENTER u_bias_center
+#endif
+#endif
+
 #ifdef BIAS_AUTO
 // Receiver-plane slope bias, computed from the receiver's normal in the light's eye space: across
 // the kernel's reach, how far does the surface move along the light's axis? For a plane with
@@ -71,14 +81,6 @@ vec3 cubeFaceWorld(vec3 e) {
 // window depth by d(z_window)/d(z_eye). |n.r| is floored at 0.05 |r| (a surface within 3 degrees
 // of edge-on to the light, barely lit anyway), which caps the slope at 20.
 uniform vec2 u_bias_kernel;     // x: one texel in NDC (2 / map size); y: the kernel's reach in texels per axis
-#ifndef CUBE
-uniform mat3 u_light_rotation;  // world -> light eye space
-#define SHADOW_ROTATE(v) (u_light_rotation * (v))
-#ifdef LIGHT_PERSPECTIVE
-uniform vec2 u_bias_center;     // tan at the middle of the window (an asymmetric frustum; 0 when symmetric)
-#define SHADOW_CENTER u_bias_center
-#endif
-#endif
 
 // reach: how far the kernel reaches, in texels per axis.
 float shadowBiasReach(vec3 normal, vec3 c, float reach) {
@@ -206,6 +208,48 @@ vec2 coneTexels(float zr, float d) {
     return min(r, vec2(u_pcss.y));
 }
 
+#ifdef PCSS_LAYERED
+// The cone from a receiver at eye depth zr to the light's disc, in window depth: a point rho
+// from the receiver's ray (tangent units for a perspective light, world units for an
+// orthographic one) is inside it at window depths up to x - y rho. Perspective: the cone's
+// radius S (zr - e) / (zr e) >= rho while e <= S zr / (S + rho zr), and window depth
+// f / (f - n) (1 - n / e) is then f / (f - n) (1 - n / zr) - f n rho / ((f - n) S). Orthographic:
+// S (zr - e) >= rho while e <= zr - rho / S, window depth (e - n) / (f - n).
+vec2 pcssConeDepth(float zr) {
+    float n = SHADOW_SLOPE.z;
+    float f = SHADOW_SLOPE.w;
+    float size = max(u_pcss.x, 1e-6);
+#ifdef LIGHT_PERSPECTIVE
+    return vec2(f / (f - n) * (1.0 - n / zr), f * n / ((f - n) * size));
+#else
+    return vec2((zr - n) / (f - n), 1.0 / ((f - n) * size));
+#endif
+}
+#endif
+
+// The receiver's plane around the lookup: its window depth per texel of offset along the map's x
+// and y, from its normal in the light's eye space (signed, where shadowBiasReach takes the
+// absolute slope). Perspective: the plane n.p = k hit along the ray r = (x tan_x + c_x,
+// y tan_y + c_y, -1) is at eye depth z = k / (n.r), so dz/dx = -z n_x tan_x / (n.r); orthographic:
+// dz/dx = n_x half_w / n_z. |n.r| is floored as there (a surface edge-on to the light).
+vec2 receiverSlope(vec3 normal, vec3 c) {
+    vec3 nl = SHADOW_ROTATE(normal);
+    float n = SHADOW_SLOPE.z;
+    float f = SHADOW_SLOPE.w;
+    vec2 ndc = 2.0 * u_texmapscale;  // one texel in NDC
+#ifdef LIGHT_PERSPECTIVE
+    vec3 ray = vec3((2.0 * c.x - 1.0) * SHADOW_SLOPE.x + SHADOW_CENTER.x, (2.0 * c.y - 1.0) * SHADOW_SLOPE.y + SHADOW_CENTER.y, -1.0);
+    float nr = dot(nl, ray);
+    float floorNr = 0.05 * length(ray);
+    nr = nr < 0.0 ? min(nr, -floorNr) : max(nr, floorNr);
+    float zEye = lightEyeDepth(c.z);
+    return -zEye * nl.xy * SHADOW_SLOPE.xy / nr * ndc * n * f / ((f - n) * zEye * zEye);
+#else
+    float nz = nl.z < 0.0 ? min(nl.z, -0.05) : max(nl.z, 0.05);
+    return nl.xy * SHADOW_SLOPE.xy / nz * ndc / (f - n);
+#endif
+}
+
 // One turn of the golden angle: the step from one Vogel tap to the next.
 const vec2 kGolden = vec2(-0.7373688, 0.6754903);
 vec2 turnGolden(vec2 d) { return vec2(d.x * kGolden.x - d.y * kGolden.y, d.x * kGolden.y + d.y * kGolden.x); }
@@ -219,21 +263,55 @@ float shadowVisibility(vec4 shadowCoord, vec3 normal) {
     vec2 start = vec2(cos(angle), sin(angle));
 
     // (1) Blockers: taps nearer the light than the receiver (by the bias of a small kernel).
+    // PCSS_LAYERED (--pcss-blockers layered): nearer than the receiver's plane there (a receiver
+    // lit at a grazing angle is not its own blocker), and the blockers that shadow this receiver
+    // told from the rest: a blocker at depth d can hide part of the light only if it lies inside
+    // the cone from the receiver to the light's disc at d. Their mean depth sizes the filter, so a
+    // receiver under stacked casters, or beside a pole's foot, gets the penumbra of the layer over
+    // it rather than of all the depths around. With no tap inside (too few taps for a narrow
+    // cone), the mean of all blockers, as Fernando's.
     vec2 search = coneTexels(zr, SHADOW_SLOPE.z);
     float bias = shadowBias(normal, c);
+#ifdef PCSS_LAYERED
+    vec2 slope = receiverSlope(normal, c);
+    // A tap r (0..1) of the way out holds a blocker inside the cone when its window depth is at
+    // most coneDepth.x - coneDepth.y r: the deepest point of the cone at that distance from the
+    // ray, linear in it (shadow::pcss_cone_depth), so no division per tap.
+    vec2 reach = search * 2.0 * SHADOW_SLOPE.xy * u_texmapscale;  // tangent (perspective) or world units
+    vec2 coneDepth = pcssConeDepth(zr) * vec2(1.0, max(reach.x, reach.y));
+    float inCone = 0.0;
+    float sumIn = 0.0;
+#endif
     float blockers = 0.0;
     float sum = 0.0;
     vec2 dir = start;
     for (int i = 0; i < PCSS_SEARCH_TAPS; ++i) {
-        vec2 o = sqrt((float(i) + 0.5) / float(PCSS_SEARCH_TAPS)) * dir;
+        float r = sqrt((float(i) + 0.5) / float(PCSS_SEARCH_TAPS));
+        vec2 o = r * dir;
+#ifdef PCSS_LAYERED
+        vec2 t = o * search;
+        float d = shadowDepth(c.xy + t * u_texmapscale);
+        if (c.z + dot(slope, t) > MP(d + bias)) {
+            if (d <= coneDepth.x - coneDepth.y * r) {
+                inCone += 1.0;
+                sumIn += d;
+            }
+#else
         float d = shadowDepth(c.xy + o * search * u_texmapscale);
         if (c.z > MP(d + bias)) {
+#endif
             blockers += 1.0;
             sum += d;
         }
         dir = turnGolden(dir);
     }
     if (blockers == 0.0) return 1.0;
+#ifdef PCSS_LAYERED
+    if (inCone > 0.0) {
+        sum = sumIn;
+        blockers = inCone;
+    }
+#endif
 
     // (2) The penumbra's half-width from the blockers' mean depth; (3) the filter over it.
     vec2 width = coneTexels(zr, lightEyeDepth(sum / blockers));

@@ -227,6 +227,15 @@ std::vector<Option<Options>> make_table() {
     add(pcss_taps, [](Options& o, std::string_view v) { o.settings.pcss_taps = int_of(v); },
         [](const Options& o) { return std::to_string(o.settings.pcss_taps); });
 
+    OptionInfo pcss_blockers = make_option_info(
+        "pcss-blockers", P::Technique, T::Choice,
+        "--filter pcss: which blockers size the penumbra: layered = those inside the cone from the receiver to the "
+        "light at their own depth, beyond the receiver's plane (stacked casters, a pole's foot); mean = the mean depth "
+        "of every tap nearer than the receiver (Fernando 2005)",
+        "PCSS blockers", {{"layered", "layered: the blockers over the receiver"}, {"mean", "mean of all blockers"}});
+    add(pcss_blockers, [](Options& o, std::string_view v) { o.settings.pcss_layered = v == "layered"; },
+        [](const Options& o) { return std::string(o.settings.pcss_layered ? "layered" : "mean"); });
+
     OptionInfo area_samples = make_option_info("area-samples", P::Technique, T::Integer,
                          "Heckbert-Herf soft shadows: the technique run for N points on the light (stratified, the "
                          "same every frame), the visibilities averaged; 1 = the light's centre (hard)",

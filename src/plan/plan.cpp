@@ -151,6 +151,7 @@ LitFeatures PlanContext::base_features(const Draw& d) const {
     f.double_sided = m.double_sided;
     f.spot = light.type == scene::LightType::Spot;
     f.visibility_aov = settings.aov == Aov::Visibility;
+    f.horizon = light_sample;
     return f;
 }
 
@@ -173,6 +174,7 @@ std::vector<Binding> PlanContext::lit_bindings() const {
                        {{"u_spot_direction", glm::normalize(light.direction)},
                         {"u_spot_cos", glm::vec2(std::cos(light.spot_outer_cone), std::cos(light.spot_inner_cone))}},
                        {}});
+    if (light_sample) out.push_back({"light sample", {{"u_light_size", 0.0f}}, {}});
     return out;
 }
 

@@ -79,7 +79,7 @@ bool Settings::operator==(const Settings& o) const {
            cascade_snap == o.cascade_snap && cascade_blend == o.cascade_blend && cube_map == o.cube_map && bias == o.bias && bias_auto == o.bias_auto && map_faces == o.map_faces &&
            light_fit == o.light_fit && precision == o.precision && volume_method == o.volume_method &&
            show_volumes == o.show_volumes && aov == o.aov && light_radius == o.light_radius &&
-           pcss_search == o.pcss_search && pcss_taps == o.pcss_taps && area_samples == o.area_samples &&
+           pcss_search == o.pcss_search && pcss_taps == o.pcss_taps && pcss_layered == o.pcss_layered && area_samples == o.area_samples &&
            area_per_frame == o.area_per_frame && gooch_planes == o.gooch_planes && gooch_method == o.gooch_method &&
            blend_shadows == o.blend_shadows &&
            effects == o.effects && outline_color == o.outline_color && outline_width == o.outline_width &&

@@ -143,6 +143,10 @@ struct Settings {
     // --filter pcss: blocker-search taps and filter taps (Vogel discs turned per pixel).
     int pcss_search = 16;
     int pcss_taps = 16;
+    // --pcss-blockers: layered = the blockers inside the receiver's cone to the light, beyond its
+    // plane, size the penumbra (shadow::pcss_blocker_depth); mean = every tap nearer than the
+    // receiver, Fernando's.
+    bool pcss_layered = true;
     // Heckbert and Herf: the technique run for this many points on the light, the visibilities
     // accumulated (1: the light's centre only, the hard shadow). With area_per_frame > 0 a still
     // frame adds that many per frame until all are in (progressive); 0: all in one frame.

@@ -88,6 +88,7 @@ Variant lit_variant(const LitFeatures& f) {
         if (pcss) {
             v.defines.push_back("PCSS_SEARCH_TAPS " + std::to_string(f.pcss_search));
             v.defines.push_back("PCSS_FILTER_TAPS " + std::to_string(f.pcss_taps));
+            if (f.pcss_layered) v.defines.emplace_back("PCSS_LAYERED");
         }
         if (f.bias_auto) v.defines.emplace_back("BIAS_AUTO");
         if (f.light_perspective && (f.bias_auto || pcss)) v.defines.emplace_back("LIGHT_PERSPECTIVE");
@@ -108,6 +109,7 @@ Variant lit_variant(const LitFeatures& f) {
     if (f.textured) v.defines.emplace_back("TEXTURED");
     if (f.spot) v.defines.emplace_back("LIGHT_SPOT");
     if (f.visibility_aov) v.defines.emplace_back("AOV_VISIBILITY");
+    if (f.horizon) v.defines.emplace_back("LIGHT_HORIZON");
     if (f.cascades_aov) v.defines.emplace_back("AOV_CASCADES");
     if (f.alpha_test) v.defines.emplace_back("ALPHA_TEST");
     if (f.alpha_blend) v.defines.emplace_back("ALPHA_BLEND");
@@ -272,6 +274,21 @@ std::vector<Variant> all_variants() {
             base.alpha_test = base.alpha_blend = base.double_sided = false;
             out.push_back(lit_variant(base));
             if (base.mediump) continue;
+            // LIGHT_HORIZON: PCSS of a light with a size (either blocker estimate); a
+            // Heckbert-Herf sample's hard visibility.
+            if (base.shadow_map && base.filter == shadow::Filter::PCSS) {
+                for (bool layered : {true, false}) {
+                    LitFeatures h = base;
+                    h.pcss_layered = layered;
+                    if (!layered) out.push_back(lit_variant(h));
+                    h.horizon = true;
+                    out.push_back(lit_variant(h));
+                }
+            } else if (base.visibility_aov && !base.area_lookup && base.gooch_taps == 0) {
+                LitFeatures h = base;
+                h.horizon = true;
+                out.push_back(lit_variant(h));
+            }
             base.alpha_test = true;
             for (bool two : {false, true}) {
                 base.double_sided = two;

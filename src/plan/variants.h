@@ -54,7 +54,9 @@ struct LitFeatures {
     bool cube_map = false;           // with cube: the faces of a GL cube map instead (--cube-layout cubemap)
     bool cascades_aov = false;       // --aov cascades: the colour tinted by the cascade (or cube face) used
     int pcss_search = 16, pcss_taps = 16;  // filter PCSS: taps of the blocker search and the filter
+    bool pcss_layered = true;              // filter PCSS: the layered blocker estimate (PCSS_LAYERED)
     bool area_lookup = false;        // Heckbert-Herf: visibility from the accumulated light samples
+    bool horizon = false;            // a light with a size (PCSS) or one sample of it: the part above the horizon
     // Gooch: which terms the pass writes (planes: the ground ambient-only first, then the direct
     // light scaled by u_light_weight added once per plane that lights it) and, with gooch_taps > 0,
     // the visibility from the shadow texture sampled linearly at that many offsets (texture).

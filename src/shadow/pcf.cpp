@@ -60,6 +60,30 @@ PcssRadii pcss_radii(float light_size, bool perspective, float receiver_depth, f
     return {cone(near), cone(blocker_depth)};
 }
 
+PcssConeDepth pcss_cone_depth(float light_size, bool perspective, float receiver_depth, float near, float far) {
+    // Perspective: the cone's radius S (zr - e) / (zr e) reaches rho while e <= S zr / (S + rho zr),
+    // whose window depth f / (f - n) (1 - n / e) is f / (f - n) (1 - n / zr) - f n rho / ((f - n) S).
+    // Orthographic: S (zr - e) >= rho while e <= zr - rho / S; window depth (e - n) / (f - n).
+    const float n = near, f = far, zr = receiver_depth, size = std::max(light_size, 1e-6f);
+    if (perspective) return {f / (f - n) * (1.0f - n / zr), f * n / ((f - n) * size)};
+    return {(zr - n) / (f - n), 1.0f / ((f - n) * size)};
+}
+
+float pcss_blocker_depth(const std::vector<PcssBlocker>& blockers, const PcssConeDepth& cone, bool layered) {
+    if (blockers.empty()) return -1.0f;
+    float all = 0.0f, inside = 0.0f;
+    int n_inside = 0;
+    for (const PcssBlocker& b : blockers) {
+        all += b.depth;
+        if (b.depth <= cone.deepest(b.rho)) {
+            inside += b.depth;
+            ++n_inside;
+        }
+    }
+    if (layered && n_inside > 0) return inside / static_cast<float>(n_inside);
+    return all / static_cast<float>(blockers.size());
+}
+
 bool pcf_is_corner(Filter filter, glm::vec2 offset) {
     const float reach = largest_offset(filter);
     return std::fabs(offset.x) == reach && std::fabs(offset.y) == reach;

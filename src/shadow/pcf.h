@@ -47,6 +47,27 @@ struct PcssRadii {
     float penumbra = 0.0f;
 };
 PcssRadii pcss_radii(float light_size, bool perspective, float receiver_depth, float blocker_depth, float near);
+
+// The same cone in the map's window depth (the shader's pcssConeDepth): a point `rho` from the
+// receiver's ray (the units of pcss_radii) is inside the cone at window depths up to
+// at_ray - per_unit * rho. `near`, `far`: the light's planes (eye depths).
+struct PcssConeDepth {
+    float at_ray = 0.0f;
+    float per_unit = 0.0f;
+    float deepest(float rho) const { return at_ray - per_unit * rho; }
+};
+PcssConeDepth pcss_cone_depth(float light_size, bool perspective, float receiver_depth, float near, float far);
+
+// One blocker the search found: its window depth and its distance from the receiver's ray.
+struct PcssBlocker {
+    float depth = 0.0f;
+    float rho = 0.0f;
+};
+// The window depth that sizes the penumbra (--pcss-blockers): layered, the mean depth of the
+// blockers inside the cone (those that can hide part of the light from this receiver; if none
+// is, all of them); mean, of all of them (Fernando 2005). No blockers: -1 (the receiver is lit).
+float pcss_blocker_depth(const std::vector<PcssBlocker>& blockers, const PcssConeDepth& cone, bool layered);
+
 bool pcf_is_corner(Filter filter, glm::vec2 offset);
 
 // The CPU mirror of the shader's lookup: the fraction of taps where the receiver at depth z is lit

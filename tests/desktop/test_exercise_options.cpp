@@ -23,7 +23,7 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
     // The soft exercise starts still (a frame can converge), with a light of radius 0.3 and PCSS.
     EXPECT_EQ(CourseApp("soft").query(),
               "light=off&jump=off&light-radius=0.3&filter=pcss&area-samples=1&area-per-frame=4&reference=off&"
-              "pcss-search=16&pcss-taps=16&technique=shadowmap&aov=color");
+              "pcss-search=16&pcss-taps=16&pcss-blockers=layered&technique=shadowmap&aov=color");
     // The stencil exercise starts with the outline on.
     EXPECT_EQ(CourseApp("stencil").query(),
               "light=on&jump=on&effects=outline&outline-width=3&outline-color=ff8c00&reflectivity=0.5&technique=shadowmap");
@@ -39,7 +39,7 @@ TEST(ExerciseOptions, EveryChangeReadsBack) {
         {"light", "off"}, {"jump", "off"},   {"projection", "ortho"}, {"fbo-view", "camera"}, {"rtt", "copy"}, {"map-view", "off"},
         {"encoding", "r8"}, {"filter", "pcf4x4"}, {"bias", "0.003"},   {"map-size", "2048"},     {"aov", "visibility"},
         {"precision", "mediump"}, {"volume-method", "zfail"}, {"show-volumes", "on"}, {"eye", "in-shadow"},
-        {"light-radius", "0.45"}, {"pcss-search", "32"}, {"pcss-taps", "8"}, {"area-samples", "64"},
+        {"light-radius", "0.45"}, {"pcss-search", "32"}, {"pcss-taps", "8"}, {"pcss-blockers", "mean"}, {"area-samples", "64"},
         {"area-per-frame", "0"}, {"reference", "on"}};
     for (const auto& x : exercise_list()) {
         const std::string_view e = x.name;

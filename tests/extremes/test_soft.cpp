@@ -365,17 +365,19 @@ TEST_F(Soft, ThePenumbraNarrowsToNothingAtTheContact) {
     const double truth_near = width_across(t.soft, near_x), truth_far = width_across(t.soft, far_x);
     std::printf("pole: the truth's penumbra is %.3f wide at x = %.2f, %.3f at x = %.2f\n", truth_near, near_x, truth_far, far_x);
     EXPECT_LT(truth_near, 0.3 * truth_far);
-    // PCSS's penumbra far from the foot is about 40 % narrower than the truth's: its blocker search
-    // spans the cone from the receiver to the light at the light's near plane, which maps over the
-    // lower pole too, and those blockers, nearer the receiver, pull the mean blocker depth down
-    // (PCSS's mean-depth estimate; counting only the taps inside the cone at their own depth was
-    // tried: with 16 taps it finds no blocker near the foot and did worse on the course scene).
+    // PCSS with the mean depth of every blocker its search finds (--pcss-blockers mean, Fernando's)
+    // is about 40 % too narrow far from the foot: the search spans the cone from the receiver to
+    // the light at the light's near plane, which maps over the lower pole too, and those blockers,
+    // nearer the receiver, pull the mean depth down. The layered estimate (the default) counts the
+    // blockers inside the cone at their own depth: within 15 % there (the goal; measured
+    // -8 % on llvmpipe). Near the foot it stays about a third too narrow (0.037 against 0.055,
+    // measured; 0.039 with 64/64 taps, so not the tap count), inside the 0.05 bound below.
     struct Case {
         const char* args;
         double far_tolerance;  // of the truth's width far from the foot
     };
     for (const Case& cs : {Case{"technique=shadowmap area-samples=64", 0.1}, Case{"technique=volumes area-samples=64", 0.1},
-                           Case{"technique=shadowmap filter=pcss", 0.5}}) {
+                           Case{"technique=shadowmap filter=pcss", 0.15}}) {
         const char* args = cs.args;
         const std::vector<float> v = red(frame(sc, settings(args), in));
         const double wn = width_across(v, near_x), wf = width_across(v, far_x);
@@ -388,6 +390,112 @@ TEST_F(Soft, ThePenumbraNarrowsToNothingAtTheContact) {
         EXPECT_NEAR(wn, truth_near, 0.05) << args;
         EXPECT_LT(score.mae_soft_pct, 1.0) << args;
     }
+    // The control: the mean estimate misses the 15 % far from the foot (measured -39 %).
+    const double mean_far = width_across(red(frame(sc, settings("technique=shadowmap filter=pcss pcss-blockers=mean"), in)), far_x);
+    std::printf("pole: --pcss-blockers mean: penumbra %.3f wide far from the foot\n", mean_far);
+    EXPECT_LT(mean_far, 0.85 * truth_far);
+}
+
+// Stacked casters: the disc scene's disc (radius 1 at height 1) and, beside its penumbra on +x, a
+// small low disc (radius 0.15 at height 0.08, centred at x = 1.6) whose texels lie inside the
+// blocker search of the receivers in the big disc's outer penumbra, but outside their cones to
+// the light: it hides none of the light from them. The exact visibility of a ground point is the
+// part of the light's disc (radius 0.7 at height 5) that neither disc hides, integrated here over
+// a fine polar grid of the light (the projections are discs, so this is exact to the grid).
+constexpr float kLowX = 1.6f, kLowR = 0.15f, kLowH = 0.08f, kStackR = 0.7f;
+
+scene::Scene stacked_scene() {
+    scene::Scene s = disc_scene();
+    s.meshes.push_back(disc(kLowR, 64));
+    s.objects.push_back(object("low disc", 2, glm::translate(glm::mat4(1.0f), glm::vec3(kLowX, kLowH, 0.0f))));
+    s.objects.back().receives_shadow = false;
+    // A small disc high up, 1 below the light and off to -z: the light's near plane moves up to
+    // it, so the receivers' blocker search (the cone at the near plane) reaches the low disc
+    // while their filter (the cone at the big disc) does not. Its shadow falls at z = -1.5 + -0.25,
+    // away from the line measured (z = 0), and it hides no light from that line.
+    s.meshes.push_back(disc(0.05f, 32));
+    s.objects.push_back(object("high disc", 3, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, kLightH - 1.0f, -0.3f))));
+    s.objects.back().receives_shadow = false;
+    s.light.radius = kStackR;
+    return s;
+}
+
+double stacked_visibility(double x) {
+    constexpr int kRings = 96, kSpokes = 192;
+    int lit = 0;
+    for (int i = 0; i < kRings; ++i)
+        for (int j = 0; j < kSpokes; ++j) {
+            const double r = kStackR * std::sqrt((i + 0.5) / kRings), a = 2.0 * kPi * (j + 0.5) / kSpokes;
+            const double qx = r * std::cos(a), qz = r * std::sin(a);
+            // The segment from (x, 0, 0) to the light's point at height kLightH, at height h.
+            const auto at = [&](double h, double& px, double& pz) {
+                px = x + (qx - x) * h / kLightH;
+                pz = qz * h / kLightH;
+            };
+            double px, pz;
+            at(kH, px, pz);
+            if (px * px + pz * pz <= kA * kA) continue;
+            at(kLowH, px, pz);
+            if ((px - kLowX) * (px - kLowX) + pz * pz <= kLowR * kLowR) continue;
+            ++lit;
+        }
+    return static_cast<double>(lit) / (kRings * kSpokes);
+}
+
+// Mean |rendered - exact| along the ground line z = 0 (5 rows) for x from x0 to x1 (x1 < x0: the
+// -x side, its mirror image), and where the rendered and exact profiles cross 1/2 (from x0).
+struct Line {
+    double mae = 0.0, half = 0.0, exact_half = 0.0;
+};
+Line along(const std::vector<std::uint8_t>& rgba, double x0, double x1) {
+    const double px = 2.0 * kHalfView / kSize;
+    std::vector<double> v, e;
+    Line l;
+    const int c0 = static_cast<int>((x0 + kHalfView) / px), c1 = static_cast<int>((x1 + kHalfView) / px);
+    const int step = c1 > c0 ? 1 : -1;
+    for (int col = c0; col != c1; col += step) {
+        double sum = 0.0;
+        for (int row = kSize / 2 - 2; row <= kSize / 2 + 2; ++row) sum += rgba[4 * static_cast<size_t>(row * kSize + col)] / 255.0;
+        v.push_back(sum / 5.0);
+        e.push_back(stacked_visibility(-kHalfView + (col + 0.5) * px));
+        l.mae += std::fabs(v.back() - e.back());
+    }
+    l.mae /= static_cast<double>(v.size());
+    l.half = crossing(v, 0.0, px, 0.5);
+    l.exact_half = crossing(e, 0.0, px, 0.5);
+    return l;
+}
+
+TEST_F(Soft, StackedCastersTheLayeredEstimateKeepsEachPenumbra) {
+    const scene::Scene sc = stacked_scene();
+    const render::FrameInputs in = top_down();
+    // The exact answer: the low disc changes nothing up to x = 1.44 (where it starts, seen from
+    // above, is 1.45); the big disc's penumbra runs from (aH - Rh) / (H - h) = 1.075 to 1.425.
+    EXPECT_NEAR(stacked_visibility(1.2), stacked_visibility(-1.2), 1e-9);
+    EXPECT_NEAR(stacked_visibility(1.0), 0.0, 1e-9);
+    EXPECT_NEAR(stacked_visibility(1.44), 1.0, 2e-3);
+    // Measured on llvmpipe, over x in [1.05, 1.3] (the filter of those receivers does not reach
+    // the low disc; their search does): layered 0.0111 beside the low disc, 0.0133 alone; mean
+    // 0.0139 beside it; Heckbert-Herf 64 0.0119 and 0.0166. The bounds: the layered estimate is
+    // no worse beside the low disc than alone (+0.002 for a driver's other rounding of the taps'
+    // noise), and the mean one is worse beside it than the layered one (the control).
+    double layered_plus = 0.0, mean_plus = 0.0;
+    for (const char* args : {"technique=shadowmap filter=pcss", "technique=shadowmap filter=pcss pcss-blockers=mean",
+                             "technique=shadowmap area-samples=64"}) {
+        const auto rgba = frame(sc, settings(args), in);
+        const Line plus = along(rgba, 1.05, 1.3), minus = along(rgba, -1.05, -1.3);
+        std::printf("stacked: %-52s +x (low disc beside): mean abs %.4f, half at %.4f (exact %.4f); "
+                    "-x (alone): mean abs %.4f, half at %.4f\n",
+                    args, plus.mae, 1.05 + plus.half, 1.05 + plus.exact_half, minus.mae, 1.05 + minus.half);
+        const bool mean = std::string(args).find("mean") != std::string::npos;
+        if (mean) mean_plus = plus.mae;
+        else if (std::string(args).find("pcss") != std::string::npos) layered_plus = plus.mae;
+        if (mean) continue;
+        EXPECT_LT(plus.mae, 0.02) << args;
+        EXPECT_NEAR(plus.half, plus.exact_half, 0.01) << args;
+        EXPECT_LT(plus.mae, minus.mae + 0.002) << args;
+    }
+    EXPECT_GT(mean_plus, layered_plus);
 }
 
 TEST_F(Soft, HeckbertHerfConvergesToTheAreaLightOnTheCourseScene) {

@@ -158,6 +158,60 @@ TEST(Pcss, TheVariantAndTheLookupsUniforms) {
         for (const auto& u : b.uniforms)
             if (u.name == "u_pcss") size = std::get<glm::vec2>(u.value).x == 0.2f;
     EXPECT_TRUE(size) << "the light's radius reaches the shader";
+    // The layered blocker estimate by default, and the part of the light above the horizon.
+    EXPECT_TRUE(has("PCSS_LAYERED"));
+    EXPECT_TRUE(has("LIGHT_HORIZON"));
+    ASSERT_EQ(render::parse_option(s, "pcss-blockers", "mean"), "");
+    EXPECT_NE(render::parse_option(s, "pcss-blockers", "median"), "");
+    const render::FramePlan m = render::plan(course.scene, s, caps(), render::offscreen(64, 64));
+    const auto& md = m.passes.back().draws.front().variant.defines;
+    EXPECT_EQ(std::find(md.begin(), md.end(), "PCSS_LAYERED"), md.end());
+    EXPECT_NE(m.passes.back().detail.find("mean blockers"), std::string::npos) << m.passes.back().detail;
+    // A point light (radius 0): neither, so PCSS is the hard lookup.
+    ASSERT_EQ(render::parse_option(s, "light-radius", "0"), "");
+    const render::FramePlan point = render::plan(course.scene, s, caps(), render::offscreen(64, 64));
+    const auto& pd = point.passes.back().draws.front().variant.defines;
+    EXPECT_EQ(std::find(pd.begin(), pd.end(), "LIGHT_HORIZON"), pd.end());
+}
+
+TEST(Pcss, TheConeInWindowDepthIsTheConeOfTheRadii) {
+    // A blocker at eye depth e exactly the penumbra's radius from the ray is on the cone's edge:
+    // its window depth is the deepest the cone allows there.
+    const float n = 0.5f, f = 20.0f, zr = 8.0f;
+    for (const bool persp : {true, false}) {
+        const float size = persp ? 0.6f : 0.05f;
+        const shadow::PcssConeDepth cone = shadow::pcss_cone_depth(size, persp, zr, n, f);
+        for (const float e : {1.0f, 3.0f, 6.0f, 7.9f}) {
+            const float rho = shadow::pcss_radii(size, persp, zr, e, n).penumbra;
+            const float window = persp ? f / (f - n) * (1.0f - n / e) : (e - n) / (f - n);
+            EXPECT_NEAR(cone.deepest(rho), window, 1e-5f) << (persp ? "perspective" : "orthographic") << " e " << e;
+        }
+        EXPECT_NEAR(cone.deepest(0.0f), persp ? f / (f - n) * (1.0f - n / zr) : (zr - n) / (f - n), 1e-6f) << "the receiver";
+    }
+}
+
+TEST(Pcss, StackedCastersTheLayerOverTheReceiverSizesThePenumbra) {
+    // A receiver at eye depth 8 under a light of radius 0.6 (perspective, planes 0.5 and 20). Its
+    // search finds two layers: a caster at eye depth 4 straight over it (rho 0.01, inside the cone
+    // there, whose radius is 0.6 * 4 / 32 = 0.075), and a low caster beside it at eye depth 7.5, 0.05
+    // from the ray: outside the cone at that depth (radius 0.6 * 0.5 / 60 = 0.005), so it hides
+    // none of the light from this receiver. Exact answer: the penumbra of the caster at 4.
+    const float n = 0.5f, f = 20.0f, zr = 8.0f, size = 0.6f;
+    const auto window = [&](float e) { return f / (f - n) * (1.0f - n / e); };
+    const shadow::PcssConeDepth cone = shadow::pcss_cone_depth(size, true, zr, n, f);
+    std::vector<shadow::PcssBlocker> taps;
+    for (int i = 0; i < 3; ++i) taps.push_back({window(4.0f), 0.01f});
+    for (int i = 0; i < 5; ++i) taps.push_back({window(7.5f), 0.05f});
+    EXPECT_FLOAT_EQ(shadow::pcss_blocker_depth(taps, cone, true), window(4.0f));
+    const float mean = shadow::pcss_blocker_depth(taps, cone, false);
+    EXPECT_FLOAT_EQ(mean, (3.0f * window(4.0f) + 5.0f * window(7.5f)) / 8.0f);
+    // The mean lies between the layers: its penumbra is too narrow for the caster over the receiver.
+    const auto eye = [&](float w) { return n / (1.0f - w * (f - n) / f); };
+    EXPECT_LT(shadow::pcss_radii(size, true, zr, eye(mean), n).penumbra, 0.5f * shadow::pcss_radii(size, true, zr, 4.0f, n).penumbra);
+    // The low caster alone (nothing inside the cone): the mean of all, as Fernando's; none: lit.
+    const std::vector<shadow::PcssBlocker> low(taps.begin() + 3, taps.end());
+    EXPECT_FLOAT_EQ(shadow::pcss_blocker_depth(low, cone, true), window(7.5f));
+    EXPECT_EQ(shadow::pcss_blocker_depth({}, cone, true), -1.0f);
 }
 
 TEST(Pcss, RadiiFollowFromSimilarTriangles) {

@@ -81,7 +81,7 @@ await runTest('web.soft', async ({ server, browser }) => {
     let s = await page.evaluate(() => window.penumbra.state());
     check(s.exercise === 'soft' && s.status === 'running', `state: ${s.exercise}, '${s.status}'`);
     check(s.query === 'light=off&jump=off&light-radius=0.3&filter=pcss&area-samples=1&area-per-frame=4&reference=off&' +
-                      'pcss-search=16&pcss-taps=16&technique=shadowmap&aov=color', `defaults: ${s.query}`);
+                      'pcss-search=16&pcss-taps=16&pcss-blockers=layered&technique=shadowmap&aov=color', `defaults: ${s.query}`);
     check((await page.inputValue('#light-radius')) === '0.3' && (await page.inputValue('#light-radius-number')) === '0.3',
           'the radius controls do not show 0.3');
     const techniques = await page.$$eval('#technique option', (os) => os.map((o) => o.value));
@@ -96,6 +96,7 @@ await runTest('web.soft', async ({ server, browser }) => {
     check((await page.inputValue('#filter')) === 'hard', '16 light samples did not put the filter back to hard');
     await page.selectOption('#pcss-search', '32');
     await page.selectOption('#pcss-taps', '8');
+    await page.selectOption('#pcss-blockers', 'mean');
     await page.selectOption('#technique', 'planar');
     await page.uncheck('#area-per-frame');
     await page.selectOption('#aov', 'visibility');
@@ -110,12 +111,13 @@ await runTest('web.soft', async ({ server, browser }) => {
     await page.selectOption('#area-samples', '4');
     await page.click('#light');
     const want = { 'light-radius': '0.35', filter: 'hard', 'area-samples': '4', 'area-per-frame': '0', reference: 'off',
-                   'pcss-search': '32', 'pcss-taps': '8', technique: 'planar', aov: 'visibility', light: 'on', jump: 'off' };
+                   'pcss-search': '32', 'pcss-taps': '8', 'pcss-blockers': 'mean', technique: 'planar', aov: 'visibility', light: 'on', jump: 'off' };
     s = await checkKeptOverReload(page, want);
     check((await page.inputValue('#light-radius')) === '0.35', 'the slider lost 0.35');
     check((await page.inputValue('#light-radius-number')) === '0.35', 'the number box lost 0.35');
     check((await page.inputValue('#filter')) === 'hard' && (await page.inputValue('#area-samples')) === '4', 'the method selects');
-    check((await page.inputValue('#pcss-search')) === '32' && (await page.inputValue('#pcss-taps')) === '8', 'the PCSS selects');
+    check((await page.inputValue('#pcss-search')) === '32' && (await page.inputValue('#pcss-taps')) === '8' &&
+          (await page.inputValue('#pcss-blockers')) === 'mean', 'the PCSS selects');
     check((await page.inputValue('#technique')) === 'planar', 'the technique select lost planar');
     check(!(await page.isChecked('#area-per-frame')), 'the converge box came back ticked');
     check(!(await page.isChecked('#reference')), 'the reference box came back ticked');

@@ -117,7 +117,7 @@ void plan_area(Planning& p) {
         for (int k = start; k < a.done; ++k) {
             // No previous plan: a sample's shadow map is never taken for another's.
             plan_hard_visibility(p, hard, shadow::area_light_sample(c.light, k, axis), nullptr,
-                                 {one_r, out.width, out.height, 0, 0, false}, "area-camera");
+                                 {one_r, out.width, out.height, 0, 0, false}, "area-camera", true);
 
             Pass add;
             add.name = "area-add";

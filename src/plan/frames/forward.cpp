@@ -146,9 +146,10 @@ void screen_lookup(PlanContext& c, Pass& cam, std::vector<CameraItem>& items, co
 
 
 void plan_hard_visibility(Planning& p, const Settings& settings, const scene::Light& light, const FramePlan* previous,
-                          TargetRef target, const char* name) {
+                          TargetRef target, const char* name, bool light_sample) {
     PlanContext& c = p.ctx;
     PlanContext sc = c.with(settings, target);
+    sc.light_sample = light_sample;
     sc.light = light;
     sc.previous = previous;
     p.module.before_camera(sc);

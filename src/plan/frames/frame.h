@@ -68,9 +68,10 @@ void screen_lookup(PlanContext& c, Pass& cam, std::vector<CameraItem>& items, co
                    const glm::vec4& weights, const char* binding);
 // The technique's passes before and after a camera pass into `target` with `settings` (a hard
 // visibility: a light sample's, the visibility to blur): `light` its light, `previous` the plan
-// whose resources it may reuse. The camera pass is named `name`.
+// whose resources it may reuse. The camera pass is named `name`. `light_sample`: `light` is one
+// point of an area light (PlanContext::light_sample).
 void plan_hard_visibility(Planning& p, const Settings& settings, const scene::Light& light, const FramePlan* previous,
-                          TargetRef target, const char* name);
+                          TargetRef target, const char* name, bool light_sample = false);
 
 // The shapes (each file's).
 extern const FrameShape kDeferredShape;

@@ -529,15 +529,19 @@ public:
             const float radius = c.light.radius;
             const float size = f.perspective ? radius : std::tan(std::min(radius, 1.5f));
             b.uniforms.push_back({"u_pcss", glm::vec2(size, 0.125f / texel)});
+            // The part of the light above the receiver's horizon (lit.frag, LIGHT_HORIZON).
+            if (size > 0.0f) b.uniforms.push_back({"u_light_size", size});
         }
-        if (s.bias_auto) {
-            // A cube turns the normal by its face's rotation in the shader (cubeFaceEye).
+        if (s.bias_auto || (pcss && s.pcss_layered)) {
+            // The receiver's plane in the light's eye space (the slope bias, PCSS's search). A cube
+            // turns the normal by its face's rotation in the shader (cubeFaceEye).
             if (!cube) b.uniforms.push_back({"u_light_rotation", glm::mat3(f.view)});
-            b.uniforms.push_back({"u_bias_kernel", glm::vec2(2.0f * texel, shadow::kernel_reach_texels(s.filter))});
             // The window's middle (tangents) of an asymmetric perspective frustum: P[2][0] / P[0][0].
             if (f.perspective && !cube)
                 b.uniforms.push_back({"u_bias_center", glm::vec2(f.proj[2][0] / f.proj[0][0], f.proj[2][1] / f.proj[1][1])});
         }
+        if (s.bias_auto)
+            b.uniforms.push_back({"u_bias_kernel", glm::vec2(2.0f * texel, shadow::kernel_reach_texels(s.filter))});
         const std::uint32_t bit = 1u << cam.bindings.size();
         cam.bindings.push_back(std::move(b));
         for (CameraItem& it : items) {
@@ -552,6 +556,8 @@ public:
             lf.mediump = s.precision == shadow::Precision::Mediump;
             lf.pcss_search = s.pcss_search;
             lf.pcss_taps = s.pcss_taps;
+            lf.pcss_layered = s.pcss_layered;
+            if (pcss && c.light.radius > 0.0f) lf.horizon = true;
             lf.cascades = static_cast<int>(cascades.size());
             lf.cube = cube != nullptr;
             lf.cube_map = cube && cube->cube_map;
@@ -562,8 +568,9 @@ public:
         std::string kernel =
             shadow::pcf_early_exit_applies(s.filter) ? " " + std::string(shadow::to_string(s.pcf_kernel)) : "";
         if (pcss)
-            kernel = " (" + std::to_string(s.pcss_search) + " search + " + std::to_string(s.pcss_taps) +
-                     " filter taps, light radius " + number(static_cast<double>(c.light.radius)) + ")";
+            kernel = " (" + std::to_string(s.pcss_search) + " search + " + std::to_string(s.pcss_taps) + " filter taps, " +
+                     (s.pcss_layered ? "layered" : "mean") + " blockers, light radius " +
+                     number(static_cast<double>(c.light.radius)) + ")";
         if (cube)
             cam.detail += std::string(", a cube") + (cube->cube_map ? " map" : "") + " of " +
                           std::to_string(cube->drawn()) + " face(s) drawn of 6";

@@ -83,6 +83,9 @@ struct PlanContext {
     // with `prefix`, and its draws' meshes are the portal's (Draw::beyond).
     std::string prefix;
     bool beyond = false;
+    // One point of an area light (a Heckbert-Herf sample, `light` moved there): the lit passes
+    // count only what faces it (LitFeatures::horizon with a light size of 0).
+    bool light_sample = false;
 
     // A context of `scene` on `plan`: no objects yet (the caller lists them), no target.
     static PlanContext of(const scene::Scene& scene, const Settings& settings, const gl::Caps& caps,
