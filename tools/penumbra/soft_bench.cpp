@@ -110,6 +110,12 @@ SoftRun configure(const BenchOptions& in) {
         m.s.pcss_taps = taps;
         w.methods.push_back(m);
     }
+    // The blocker estimate before the layered one (--pcss-blockers mean), beside it at 16/16.
+    {
+        Method m{"pcss 16/16 mean", "pcss", map_settings(shadow::Filter::PCSS), 1};
+        m.s.pcss_layered = false;
+        w.methods.push_back(m);
+    }
     for (int n : o.quick ? std::vector<int>{4, 16, 64} : std::vector<int>{4, 16, 64, 256}) w.methods.push_back(hh_method(n));
     // --post shadow-blur: the hard map's visibility blurred in screen space, a fixed radius in
     // pixels whatever the light's size or the receiver's distance from the caster.
