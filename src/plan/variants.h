@@ -55,6 +55,7 @@ struct LitFeatures {
     bool cascades_aov = false;       // --aov cascades: the colour tinted by the cascade (or cube face) used
     int pcss_search = 16, pcss_taps = 16;  // filter PCSS: taps of the blocker search and the filter
     bool area_lookup = false;        // Heckbert-Herf: visibility from the accumulated light samples
+    int area_interleave = 1;         // with area_lookup, > 1: filtered over K x K pixel classes
     // Gooch: which terms the pass writes (planes: the ground ambient-only first, then the direct
     // light scaled by u_light_weight added once per plane that lights it) and, with gooch_taps > 0,
     // the visibility from the shadow texture sampled linearly at that many offsets (texture).
@@ -125,7 +126,8 @@ Variant outline_variant();
 Variant far_plane_variant();
 
 // Heckbert-Herf: one light sample's visibility (a texture) added as a count into one channel.
-Variant area_add_variant();
+// Interleaved: only one pixel class counts it (u_class).
+Variant area_add_variant(bool interleaved = false);
 
 // --post (plan/post.h): one direction of the Gaussian of radius 1..kMaxBlurRadius (BLUR_RADIUS,
 // BLUR_SUM generated), the bright pass (also the 2x2 downsample), the image plus its bloom.
