@@ -248,9 +248,9 @@ std::vector<Option<Options>> make_table() {
 
     OptionInfo area_interleave = make_option_info("area-interleave", P::Technique, T::Choice,
                          "with --area-samples N: interleaved sampling, the image tiled K x K and each pixel of a tile "
-                         "counting a different N / K^2 of the samples per round, filtered over the tile (bands of thin "
-                         "casters become a smooth gradient); a still frame adds the other rounds until every pixel has "
-                         "all N (the same image as 1); 1 = off", "Interleave",
+                         "counting a different N / K^2 of the samples per round, filtered over the tile (most of the "
+                         "bands of thin casters' shadow copies go); a still frame adds the other rounds until every "
+                         "pixel has all N (then the same image as 1); 1 = off", "Interleave",
                          {{"1", "1 (off)"}, {"2", "2 x 2"}, {"4", "4 x 4"}});
     add(area_interleave, [](Options& o, std::string_view v) { o.settings.area_interleave = int_of(v); },
         [](const Options& o) { return std::to_string(o.settings.area_interleave); });
