@@ -5,7 +5,8 @@
 // light's six faces in one atlas, the one in the fragment's direction looked up; AOV_CASCADES:
 // the image tinted by that cascade's or face's colour), IN_SHADOW (planar shadow region: visibility 0),
 // AREA_LOOKUP (Heckbert-Herf: the visibility averaged over light samples, from a target; --post
-// shadow-blur: the visibility AOV blurred, from a target),
+// shadow-blur: the visibility AOV blurred, from a target; with AREA_INTERLEAVE K, the counts of the
+// (K + 1) x (K + 1) neighbourhood, a tent whose weights give each of the K x K pixel classes 1),
 // GOOCH_TEXTURE (Gooch's shadow texture, black casters on white, sampled linearly at GOOCH_TAPS
 // offsets over the penumbra's width at this receiver's distance from the light), LIGHT_AMBIENT /
 // LIGHT_DIRECT (only that term: Gooch's planes add the direct light once per plane that lights the
@@ -87,6 +88,24 @@ varying vec4 v_shadow_coord;
 uniform sampler2D u_area;
 uniform vec4 u_area_window;  // xy: the viewport's lower-left corner; zw: 1 / its size
 uniform vec4 u_area_weights;  // what each channel counts: 255 / the samples in (area), (1, 0, 0, 0) (shadow-blur)
+#ifdef AREA_INTERLEAVE
+// Interleaved light samples: each pixel class (x mod K, y mod K) counted its own share of them.
+// Offsets -K/2..K/2 on each axis, the two ends (the same class) weighted 1/2: every class weighs
+// 1, so the sum is the lit counts of all the samples drawn (u_area_weights: 255 / their number),
+// centred on the pixel.
+vec4 areaCounts(vec2 pixel) {
+    vec4 sum = vec4(0.0);
+    for (int j = 0; j <= AREA_INTERLEAVE; ++j) {
+        float wy = j == 0 || j == AREA_INTERLEAVE ? 0.5 : 1.0;
+        for (int i = 0; i <= AREA_INTERLEAVE; ++i) {
+            float w = (i == 0 || i == AREA_INTERLEAVE ? 0.5 : 1.0) * wy;
+            vec2 offset = vec2(float(i - AREA_INTERLEAVE / 2), float(j - AREA_INTERLEAVE / 2));
+            sum += w * texture2D(u_area, (pixel + offset) * u_area_window.zw);
+        }
+    }
+    return sum;
+}
+#endif
 #endif
 
 #ifdef GOOCH_TEXTURE
@@ -203,7 +222,11 @@ void main() {
 #elif defined(IN_SHADOW)
     visibility = 0.0;
 #elif defined(AREA_LOOKUP)
+#ifdef AREA_INTERLEAVE
+    vec4 counts = areaCounts(gl_FragCoord.xy - u_area_window.xy);
+#else
     vec4 counts = texture2D(u_area, (gl_FragCoord.xy - u_area_window.xy) * u_area_window.zw);
+#endif
     visibility = min(dot(counts, u_area_weights), 1.0);
 #elif defined(GOOCH_TEXTURE)
     // Behind the light or outside its frustum: lit.

@@ -190,7 +190,7 @@ d = sys.argv[1]
 rows = list(csv.DictReader(open(d + "/soft.csv")))
 sweep = {r["method"]: r for r in rows if r["section"] == "sweep"}
 conv = sorted((r for r in rows if r["section"] == "convergence"), key=lambda r: int(r["samples"]))
-want = {"hard", "pcf4x4", "pcss 16/16", "pcss 16/16 mean", "hh 4", "hh 16", "hh 64", "shadow-blur 4"}
+want = {"hard", "pcf4x4", "pcss 16/16", "pcss 16/16 mean", "hh 4", "hh 16", "hh 64", "hh 16 interleaved", "hh 64 interleaved", "shadow-blur 4"}
 assert want <= set(sweep), sorted(sweep)
 assert set(sweep) - want <= {"gooch"}, sorted(sweep)
 for r in rows:
@@ -204,7 +204,8 @@ for r in rows:
     if r["section"] == "sweep": assert float(r["ms_per_frame"]) > 0.0 and int(r["frames"]) >= 2, r
     else: assert r["ms_per_frame"] == "", r
 for m, r in sweep.items():
-    if m.startswith("hh "): assert "--area-samples " + m[3:] in r["settings"], r
+    if m.startswith("hh "): assert "--area-samples " + m[3:].split()[0] + " " in r["settings"], r
+    if m.endswith(" interleaved"): assert "--area-interleave 2" in r["settings"], r
     if m.startswith("pcss"): assert "--filter pcss" in r["settings"] and "--pcss-taps 16" in r["settings"], r
     if m.startswith("pcss"): assert ("--pcss-blockers " + ("mean" if m.endswith("mean") else "layered")) in r["settings"], r
     if m.startswith("shadow-blur"): assert "--post shadow-blur:4" in r["settings"] and r["family"] == "screen blur", r

@@ -26,6 +26,7 @@ void settings(const Toggles& toggles, render::Settings& s) {
     s.filter = shadow::Filter::Hard;
     s.area_samples = kReferenceSamples;
     s.area_per_frame = kReferencePerFrame;
+    s.area_interleave = 1;
 }
 
 }  // namespace
@@ -52,6 +53,9 @@ Exercise soft() {
            "Heckbert-Herf: more than 1 averages that many hard shadows (the filter goes back to hard)"},
           {"area-per-frame", "Method", K::Checkbox, {"4", "0"}, "Converge while still",
            "4 light samples added per frame while nothing moves; off: all of them every frame"},
+          {"area-interleave", "Method", K::Select, {}, {},
+           "Heckbert-Herf: neighbouring pixels take different light samples, filtered over the tile (no bands on "
+           "thin casters); a still frame goes on until every pixel has them all"},
           {"reference", "Method", K::Checkbox, {"on", "off"}, {}, "flip between it and the method chosen"},
           {"pcss-search", "PCSS", K::Select, {}, {}, "taps finding the blockers' depth"},
           {"pcss-taps", "PCSS", K::Select, {}, {}, "taps filtering over the penumbra"},

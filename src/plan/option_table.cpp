@@ -255,6 +255,15 @@ std::vector<Option<Options>> make_table() {
     add(area_per_frame, [](Options& o, std::string_view v) { o.settings.area_per_frame = int_of(v); },
         [](const Options& o) { return std::to_string(o.settings.area_per_frame); });
 
+    OptionInfo area_interleave = make_option_info("area-interleave", P::Technique, T::Choice,
+                         "with --area-samples N: interleaved sampling, the image tiled K x K and each pixel of a tile "
+                         "counting a different N / K^2 of the samples per round, filtered over the tile (most of the "
+                         "bands of thin casters' shadow copies go); a still frame adds the other rounds until every "
+                         "pixel has all N (then the same image as 1); 1 = off", "Interleave",
+                         {{"1", "1 (off)"}, {"2", "2 x 2"}, {"4", "4 x 4"}});
+    add(area_interleave, [](Options& o, std::string_view v) { o.settings.area_interleave = int_of(v); },
+        [](const Options& o) { return std::to_string(o.settings.area_interleave); });
+
     OptionInfo gooch_planes = make_option_info("gooch-planes", P::Technique, T::Integer,
                          "--technique gooch: how many receiving planes, offset towards and away from the light by up "
                          "to a spread from the light's radius, are averaged (texture: taps); 1 = the planar shadow",

@@ -80,7 +80,7 @@ bool Settings::operator==(const Settings& o) const {
            light_fit == o.light_fit && precision == o.precision && volume_method == o.volume_method &&
            show_volumes == o.show_volumes && aov == o.aov && light_radius == o.light_radius &&
            pcss_search == o.pcss_search && pcss_taps == o.pcss_taps && pcss_layered == o.pcss_layered && area_samples == o.area_samples &&
-           area_per_frame == o.area_per_frame && gooch_planes == o.gooch_planes && gooch_method == o.gooch_method &&
+           area_per_frame == o.area_per_frame && area_interleave == o.area_interleave && gooch_planes == o.gooch_planes && gooch_method == o.gooch_method &&
            blend_shadows == o.blend_shadows &&
            effects == o.effects && outline_color == o.outline_color && outline_width == o.outline_width &&
            reflectivity == o.reflectivity && post == o.post && shading == o.shading && lights == o.lights;

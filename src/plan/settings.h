@@ -152,6 +152,11 @@ struct Settings {
     // frame adds that many per frame until all are in (progressive); 0: all in one frame.
     int area_samples = 1;
     int area_per_frame = 0;
+    // Interleaved sampling (plan/frames/area_light.cpp): 1 = off; K = 2 or 4 tiles the image K x K,
+    // each pixel class counting its own share of the samples per round (a frame adds one round of
+    // N sample passes, or area_per_frame of them), the camera pass filtering over the tile until
+    // K * K rounds give every pixel all N (then it equals area_interleave 1 exactly).
+    int area_interleave = 1;
     // --technique gooch: planes (or texture taps) averaged; 1 = the planar shadow (planes).
     int gooch_planes = 8;
     GoochMethod gooch_method = GoochMethod::Planes;

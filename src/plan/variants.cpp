@@ -100,6 +100,7 @@ Variant lit_variant(const LitFeatures& f) {
         v.defines = {"IN_SHADOW"};
     } else if (f.area_lookup) {
         v.defines = {"AREA_LOOKUP"};
+        if (f.area_interleave > 1) v.defines.push_back("AREA_INTERLEAVE " + std::to_string(f.area_interleave));
     } else if (f.gooch_taps > 0) {
         v.defines = {"GOOCH_TEXTURE"};
         for (auto& d : gooch_tap_defines(f.gooch_taps)) v.defines.push_back(std::move(d));
@@ -180,7 +181,9 @@ std::vector<std::string> gooch_tap_defines(int taps) {
 
 Variant outline_variant() { return {"outline.vert", "probe.frag", {}}; }
 
-Variant area_add_variant() { return {"light_depth.vert", "area_add.frag", {}}; }
+Variant area_add_variant(bool interleaved) {
+    return {"light_depth.vert", "area_add.frag", interleaved ? std::vector<std::string>{"AREA_INTERLEAVE"} : std::vector<std::string>{}};
+}
 
 Variant blur_variant(int radius) {
     const std::vector<float> w = gaussian_weights(radius);
@@ -230,6 +233,10 @@ std::vector<Variant> all_variants() {
     LitFeatures area;
     area.area_lookup = true;
     shadowing.push_back(area);
+    for (int k : {2, 4}) {  // --area-interleave
+        area.area_interleave = k;
+        shadowing.push_back(area);
+    }
     // Gooch: the planes' ambient and direct terms; the texture's taps, 1..kMaxGoochPlanes.
     for (LightTerm t : {LightTerm::Ambient, LightTerm::Direct}) {
         LitFeatures g;
@@ -309,6 +316,7 @@ std::vector<Variant> all_variants() {
     out.push_back(probe_variant());
     out.push_back(volume_variant());
     out.push_back(area_add_variant());
+    out.push_back(area_add_variant(true));
     for (int r = 1; r <= kMaxBlurRadius; ++r) out.push_back(blur_variant(r));
     out.push_back(bright_variant());
     out.push_back(bloom_add_variant());

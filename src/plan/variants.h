@@ -56,6 +56,7 @@ struct LitFeatures {
     int pcss_search = 16, pcss_taps = 16;  // filter PCSS: taps of the blocker search and the filter
     bool pcss_layered = true;              // filter PCSS: the layered blocker estimate (PCSS_LAYERED)
     bool area_lookup = false;        // Heckbert-Herf: visibility from the accumulated light samples
+    int area_interleave = 1;         // with area_lookup, > 1: filtered over K x K pixel classes
     bool horizon = false;            // a light with a size (PCSS) or one sample of it: the part above the horizon
     // Gooch: which terms the pass writes (planes: the ground ambient-only first, then the direct
     // light scaled by u_light_weight added once per plane that lights it) and, with gooch_taps > 0,
@@ -127,7 +128,8 @@ Variant outline_variant();
 Variant far_plane_variant();
 
 // Heckbert-Herf: one light sample's visibility (a texture) added as a count into one channel.
-Variant area_add_variant();
+// Interleaved: only one pixel class counts it (u_class).
+Variant area_add_variant(bool interleaved = false);
 
 // --post (plan/post.h): one direction of the Gaussian of radius 1..kMaxBlurRadius (BLUR_RADIUS,
 // BLUR_SUM generated), the bright pass (also the 2x2 downsample), the image plus its bloom.

@@ -22,7 +22,7 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
               "light=on&jump=on&volume-method=auto&show-volumes=off&eye=scene&aov=color");
     // The soft exercise starts still (a frame can converge), with a light of radius 0.3 and PCSS.
     EXPECT_EQ(CourseApp("soft").query(),
-              "light=off&jump=off&light-radius=0.3&filter=pcss&area-samples=1&area-per-frame=4&reference=off&"
+              "light=off&jump=off&light-radius=0.3&filter=pcss&area-samples=1&area-per-frame=4&area-interleave=1&reference=off&"
               "pcss-search=16&pcss-taps=16&pcss-blockers=layered&technique=shadowmap&aov=color");
     // The stencil exercise starts with the outline on.
     EXPECT_EQ(CourseApp("stencil").query(),
@@ -40,7 +40,7 @@ TEST(ExerciseOptions, EveryChangeReadsBack) {
         {"encoding", "r8"}, {"filter", "pcf4x4"}, {"bias", "0.003"},   {"map-size", "2048"},     {"aov", "visibility"},
         {"precision", "mediump"}, {"volume-method", "zfail"}, {"show-volumes", "on"}, {"eye", "in-shadow"},
         {"light-radius", "0.45"}, {"pcss-search", "32"}, {"pcss-taps", "8"}, {"pcss-blockers", "mean"}, {"area-samples", "64"},
-        {"area-per-frame", "0"}, {"reference", "on"}};
+        {"area-per-frame", "0"}, {"area-interleave", "2"}, {"reference", "on"}};
     for (const auto& x : exercise_list()) {
         const std::string_view e = x.name;
         CourseApp a(e);

@@ -228,3 +228,152 @@ TEST(Pcss, RadiiFollowFromSimilarTriangles) {
 }
 
 }  // namespace
+
+// --area-interleave K: sample passes counting one light sample at one of the K x K pixel classes.
+namespace interleave {
+
+bool has_define(const render::Pass& pass, const std::string& prefix) {
+    for (const render::Draw& d : pass.draws)
+        for (const std::string& x : d.variant.defines)
+            if (x.rfind(prefix, 0) == 0) return true;
+    return false;
+}
+
+bool has_uniform(const render::Pass& pass, const std::string& name) {
+    for (const auto& b : pass.bindings)
+        for (const auto& u : b.uniforms)
+            if (u.name == name) return true;
+    return false;
+}
+
+float area_weight(const render::Pass& cam) {
+    for (const auto& b : cam.bindings)
+        for (const auto& u : b.uniforms)
+            if (u.name == "u_area_weights") return std::get<glm::vec4>(u.value).x;
+    return -1.0f;
+}
+
+// The class each of a plan's area-add passes counts at, from its u_class (x + K y).
+std::vector<int> classes_of(const render::FramePlan& p) {
+    std::vector<int> out;
+    for (const render::Pass& x : p.passes)
+        if (x.name == "area-add")
+            for (const auto& b : x.bindings)
+                for (const auto& u : b.uniforms)
+                    if (u.name == "u_class") {
+                        const glm::vec4 c = std::get<glm::vec4>(u.value);
+                        out.push_back(static_cast<int>(c.x + c.z * c.y));
+                    }
+    return out;
+}
+
+}  // namespace interleave
+
+TEST(AreaPlan, InterleaveOneIsThePlanWithoutIt) {
+    scene::CourseScene course = scene::make_course_scene(4);
+    render::Settings s;
+    s.light_radius = 0.3f;
+    s.area_samples = 6;
+    s.area_per_frame = 4;
+    render::Settings one = s;
+    ASSERT_EQ(render::parse_option(one, "area-interleave", "1"), "");
+    EXPECT_NE(render::parse_option(one, "area-interleave", "3"), "") << "K is 1, 2 or 4";
+    const render::FrameInputs in = render::offscreen(64, 64);
+    const render::FramePlan a = render::plan(course.scene, s, caps(), in);
+    const render::FramePlan b = render::plan(course.scene, one, caps(), in);
+    EXPECT_EQ(a.to_json(), b.to_json());
+    EXPECT_EQ(render::to_args(s), render::to_args(one)) << "the default is not printed";
+    // The report as before: no interleave in it (the settings' line lists --area-interleave 1).
+    EXPECT_EQ(render::AreaStats::json(*render::area_of(a)).find("interleave"), std::string::npos);
+    EXPECT_NE(a.to_text().find("light samples (Heckbert-Herf): 4 of 6 in the sum, 4 drawn this frame"), std::string::npos);
+    for (const render::Pass& x : a.passes) {
+        EXPECT_FALSE(interleave::has_define(x, "AREA_INTERLEAVE")) << x.name;
+        EXPECT_FALSE(interleave::has_uniform(x, "u_class")) << x.name;
+    }
+    EXPECT_EQ(render::area_of(a)->total, 6);
+    EXPECT_EQ(render::area_of(a)->done, 4);
+    EXPECT_FLOAT_EQ(interleave::area_weight(a.passes.back()), 255.0f / 4.0f);
+}
+
+TEST(AreaPlan, InterleavedStepsGiveEveryClassEverySampleOnce) {
+    for (int k : {2, 4})
+        for (int n : {3, 8, 16, 37, 64}) {
+            const int classes = k * k;
+            std::vector<int> seen(static_cast<size_t>(n * classes), 0);
+            for (int s = 0; s < n * classes; ++s) {
+                const render::AreaStep st = render::area_step(s, n, k);
+                ASSERT_GE(st.pixel_class, 0);
+                ASSERT_LT(st.pixel_class, classes);
+                EXPECT_EQ(st.sample, s % n);
+                ++seen[static_cast<size_t>(st.sample * classes + st.pixel_class)];
+            }
+            for (int x : seen) EXPECT_EQ(x, 1) << "K " << k << " N " << n;
+            // The classes' counts after any number of passes, against counting them one by one.
+            std::vector<int> count(static_cast<size_t>(classes), 0);
+            for (int done = 0; done <= n * classes; ++done) {
+                for (int j = 0; j < classes; ++j)
+                    ASSERT_EQ(render::area_class_samples(j, done, n, k), count[static_cast<size_t>(j)])
+                        << "K " << k << " N " << n << " after " << done;
+                if (done < n * classes) ++count[static_cast<size_t>(render::area_step(done, n, k).pixel_class)];
+            }
+            if (n % classes == 0) {  // a round: each class a block of N / K^2 consecutive samples
+                for (int j = 0; j < classes; ++j) EXPECT_EQ(render::area_class_samples(j, n, n, k), n / classes);
+            }
+        }
+}
+
+TEST(AreaPlan, InterleavedFramesAddRoundsAndTheLastIsUnfiltered) {
+    scene::CourseScene course = scene::make_course_scene(4);
+    render::Settings s;
+    s.light_radius = 0.3f;
+    s.area_samples = 8;
+    s.area_interleave = 2;
+    const render::FrameInputs in = render::offscreen(64, 64);
+    std::vector<render::FramePlan> frames;
+    std::vector<int> per_class(4, 0);
+    for (int f = 0; f < 5; ++f) {
+        frames.push_back(render::plan(course.scene, s, caps(), in, frames.empty() ? nullptr : &frames.back()));
+        const render::FramePlan& p = frames.back();
+        const render::AreaStats& a = *render::area_of(p);
+        EXPECT_EQ(a.total, 32);
+        EXPECT_EQ(a.samples, 8);
+        EXPECT_EQ(a.interleave, 2);
+        EXPECT_EQ(a.done, std::min(32, 8 * (f + 1))) << "one round of the 8 samples per frame";
+        EXPECT_EQ(a.added, f < 4 ? 8 : 0);
+        EXPECT_EQ(count_passes(p, "area-add"), a.added);
+        EXPECT_EQ(count_passes(p, "area-camera"), a.added);
+        for (int j : interleave::classes_of(p)) ++per_class[static_cast<size_t>(j)];
+        for (int j = 0; j < 4; ++j) EXPECT_EQ(per_class[static_cast<size_t>(j)], 2 * std::min(f + 1, 4)) << j;
+        EXPECT_EQ(a.pixel_min, 2 * std::min(f + 1, 4));
+        EXPECT_EQ(a.pixel_max, a.pixel_min);
+        const render::Pass& cam = p.passes.back();
+        EXPECT_EQ(cam.name, "camera");
+        // Filtered over the tile until the last round; then each pixel's own 8, as without it.
+        EXPECT_EQ(interleave::has_define(cam, "AREA_INTERLEAVE 2"), a.done < 32) << f;
+        EXPECT_FLOAT_EQ(interleave::area_weight(cam), 255.0f / static_cast<float>(a.done < 32 ? a.done : 8)) << f;
+        const std::string text = p.to_text();
+        EXPECT_NE(text.find("interleaved 2x2"), std::string::npos) << text;
+        EXPECT_NE(p.to_json().find("\"interleave\":2"), std::string::npos);
+    }
+    // The complete frame's camera pass is the one without interleaving.
+    render::Settings plain = s;
+    plain.area_interleave = 1;
+    const render::FramePlan q = render::plan(course.scene, plain, caps(), in);
+    const auto variants = [](const render::Pass& cam) {
+        std::vector<std::string> v;
+        for (const render::Draw& d : cam.draws) v.push_back(d.variant.key());
+        return v;
+    };
+    EXPECT_EQ(variants(frames[3].passes.back()), variants(q.passes.back()));
+    // Progressive: --area-per-frame passes per frame, across the rounds.
+    s.area_per_frame = 5;
+    s.area_interleave = 4;
+    s.area_samples = 16;
+    const render::FramePlan a = render::plan(course.scene, s, caps(), in);
+    const render::FramePlan b = render::plan(course.scene, s, caps(), in, &a);
+    EXPECT_EQ(render::area_of(a)->total, 256);
+    EXPECT_EQ(render::area_of(b)->done, 10);
+    EXPECT_EQ(render::area_of(b)->pixel_min, 0);
+    EXPECT_EQ(render::area_of(b)->pixel_max, 1);
+    EXPECT_EQ(interleave::classes_of(b), (std::vector<int>{5, 6, 7, 8, 9})) << "sample k at class k (N = K^2)";
+}

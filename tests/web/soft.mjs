@@ -80,7 +80,7 @@ await runTest('web.soft', async ({ server, browser }) => {
     const { page, problems } = await openPage(browser, `${server.url}/soft.html`);
     let s = await page.evaluate(() => window.penumbra.state());
     check(s.exercise === 'soft' && s.status === 'running', `state: ${s.exercise}, '${s.status}'`);
-    check(s.query === 'light=off&jump=off&light-radius=0.3&filter=pcss&area-samples=1&area-per-frame=4&reference=off&' +
+    check(s.query === 'light=off&jump=off&light-radius=0.3&filter=pcss&area-samples=1&area-per-frame=4&area-interleave=1&reference=off&' +
                       'pcss-search=16&pcss-taps=16&pcss-blockers=layered&technique=shadowmap&aov=color', `defaults: ${s.query}`);
     check((await page.inputValue('#light-radius')) === '0.3' && (await page.inputValue('#light-radius-number')) === '0.3',
           'the radius controls do not show 0.3');

@@ -75,6 +75,9 @@ render::Settings map_settings(shadow::Filter f) {
     return s;
 }
 
+// The interleaved rows' K (--area-interleave): 2, the better of 2 and 4 on the bench scenes (docs/soft.md).
+constexpr int kBenchInterleave = 2;
+
 Method hh_method(int n) {
     Method m{"hh " + std::to_string(n), "heckbert-herf", map_settings(shadow::Filter::Hard), n};
     m.s.area_samples = n;
@@ -117,6 +120,14 @@ SoftRun configure(const BenchOptions& in) {
         w.methods.push_back(m);
     }
     for (int n : o.quick ? std::vector<int>{4, 16, 64} : std::vector<int>{4, 16, 64, 256}) w.methods.push_back(hh_method(n));
+    // --area-interleave: the same N per frame, each pixel of a K x K tile a different N / K^2 of
+    // them, filtered over the tile (the first round: what a moving frame shows).
+    for (int n : {16, 64}) {
+        Method m = hh_method(n);
+        m.name += " interleaved";
+        m.s.area_interleave = kBenchInterleave;
+        w.methods.push_back(m);
+    }
     // --post shadow-blur: the hard map's visibility blurred in screen space, a fixed radius in
     // pixels whatever the light's size or the receiver's distance from the caster.
     for (int r : o.quick ? std::vector<int>{4} : std::vector<int>{4, 8, 16}) {

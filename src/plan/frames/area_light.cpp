@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "plan/frames/frame.h"
 #include "plan/json.h"
@@ -67,11 +68,28 @@ std::string area_key(const PlanContext& c) {
     return key.str();
 }
 
+// Interleaved and not yet complete: the tile's filter (lit.frag, AREA_INTERLEAVE) sums every
+// class once, i.e. every sample pass once: the counts over the passes drawn. Complete: each pixel's
+// own N, as without interleaving.
 void area_lookup(PlanContext& c, Pass& cam, std::vector<CameraItem>& items) {
     const AreaStats& a = *area_of(c.plan);
-    screen_lookup(c, cam, items, kAreaLight, glm::vec4(255.0f / static_cast<float>(std::max(a.done, 1))), "light samples");
-    cam.detail += ", visibility averaged over " + std::to_string(a.done) + " of " + std::to_string(a.total) +
-                  " light samples";
+    const bool filtered = a.interleave > 1 && a.done < a.total;
+    const int over = filtered ? a.done : a.interleave > 1 ? a.samples : a.done;
+    screen_lookup(c, cam, items, kAreaLight, glm::vec4(255.0f / static_cast<float>(std::max(over, 1))), "light samples");
+    if (filtered)
+        for (CameraItem& it : items)
+            if (it.features.area_lookup) it.features.area_interleave = a.interleave;
+    if (a.interleave == 1) {
+        cam.detail += ", visibility averaged over " + std::to_string(a.done) + " of " + std::to_string(a.total) +
+                      " light samples";
+    } else if (filtered) {
+        const int k = a.interleave;
+        cam.detail += ", visibility averaged over " + std::to_string(a.done) + " of " + std::to_string(a.total) +
+                      " sample passes, filtered over " + std::to_string(k + 1) + "x" + std::to_string(k + 1) +
+                      " pixels (each of the " + std::to_string(k * k) + " classes weighing 1)";
+    } else {
+        cam.detail += ", visibility averaged over all " + std::to_string(a.samples) + " light samples (interleaving complete, no filter)";
+    }
 }
 
 // The frame with --area-samples N: for each light sample not yet in the accumulation, the hard
@@ -85,14 +103,27 @@ void plan_area(Planning& p) {
     const Settings& s = c.settings;
     const Output& out = c.inputs.output;
     AreaStats a;
-    a.total = s.area_samples;
+    const int classes = s.area_interleave * s.area_interleave;
+    a.samples = s.area_samples;
+    a.interleave = s.area_interleave;
+    a.total = s.area_samples * classes;
     a.key = area_key(c);
     int start = 0;
     if (const AreaStats* before = c.previous ? area_of(*c.previous) : nullptr;
         before && before->key == a.key && before->total == a.total)
         start = before->done;
-    a.done = s.area_per_frame > 0 ? std::min(a.total, start + s.area_per_frame) : a.total;
+    // Interleaved, "all in one frame" is one round: every pixel class gets its share of the N.
+    const int per_frame = s.area_per_frame > 0 ? s.area_per_frame : classes > 1 ? s.area_samples : a.total;
+    a.done = std::min(a.total, start + per_frame);
     a.added = a.done - start;
+    if (classes > 1) {
+        a.pixel_min = a.samples;
+        for (int j = 0; j < classes; ++j) {
+            const int n = area_class_samples(j, a.done, a.samples, a.interleave);
+            a.pixel_min = std::min(a.pixel_min, n);
+            a.pixel_max = std::max(a.pixel_max, n);
+        }
+    }
     p.plan.put(a);
 
     ResourceDesc acc;
@@ -114,7 +145,9 @@ void plan_area(Planning& p) {
         const glm::vec3 axis = c.light.type == scene::LightType::Directional || b.empty()
                                    ? c.light.direction
                                    : b.center() - c.light.position;
-        for (int k = start; k < a.done; ++k) {
+        for (int step = start; step < a.done; ++step) {
+            const AreaStep st = area_step(step, a.samples, a.interleave);
+            const int k = st.sample;
             // No previous plan: a sample's shadow map is never taken for another's.
             plan_hard_visibility(p, hard, shadow::area_light_sample(c.light, k, axis), nullptr,
                                  {one_r, out.width, out.height, 0, 0, false}, "area-camera", true);
@@ -123,22 +156,35 @@ void plan_area(Planning& p) {
             add.name = "area-add";
             add.module = "area";
             add.target = {acc_r, out.width, out.height, 0, 0, false};
-            if (k == 0) add.clear = Clear{glm::vec4(0.0f), false, false};
+            if (step == 0) add.clear = Clear{glm::vec4(0.0f), false, false};
             add.state.depth_test = add.state.depth_write = false;
             add.state.cull = gl::Cull::None;
             add.state.blend = gl::Blend::Add;
             add.object_uniforms = ObjectUniforms::None;
             glm::vec4 channel(0.0f);
             channel[k % 4] = 1.0f / 255.0f;
-            add.bindings.push_back({"light sample", {{"u_sample", kAreaUnit}, {"u_channel", channel}}, {{kAreaUnit, one_r}}});
+            const int ki = a.interleave, jx = st.pixel_class % ki, jy = st.pixel_class / ki;
+            if (ki == 1) {
+                add.bindings.push_back({"light sample", {{"u_sample", kAreaUnit}, {"u_channel", channel}}, {{kAreaUnit, one_r}}});
+            } else {
+                const glm::vec4 cls(static_cast<float>(jx), static_cast<float>(jy), static_cast<float>(ki), 0.0f);
+                add.bindings.push_back({"light sample", {{"u_sample", kAreaUnit}, {"u_channel", channel}, {"u_class", cls}},
+                                        {{kAreaUnit, one_r}}});
+            }
             Draw d;
             d.fullscreen = true;
-            d.variant = area_add_variant();
+            d.variant = area_add_variant(ki > 1);
             d.bindings = 1u;
             add.draws.push_back(std::move(d));
-            char detail[96];
-            std::snprintf(detail, sizeof detail, "light sample %d of %d counted in channel %c", k + 1, a.total,
-                          "rgba"[k % 4]);
+            char detail[160];
+            if (ki == 1)
+                std::snprintf(detail, sizeof detail, "light sample %d of %d counted in channel %c", k + 1, a.total,
+                              "rgba"[k % 4]);
+            else
+                std::snprintf(detail, sizeof detail,
+                              "light sample %d of %d counted in channel %c at the pixels (%d, %d) mod %d (pass %d of %d, round %d of %d)",
+                              k + 1, a.samples, "rgba"[k % 4], jx, jy, ki, step + 1, a.total, step / a.samples + 1,
+                              ki * ki);
             add.detail = detail;
             c.add_pass(std::move(add));
         }
@@ -159,15 +205,52 @@ void plan_area(Planning& p) {
 const FrameShape kAreaLightShape{"area light", area_applies, plan_area};
 
 std::string AreaStats::text(const AreaStats& a) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "light samples (Heckbert-Herf): %d of %d in the sum, %d drawn this frame%s\n", a.done,
-                  a.total, a.added, a.added == 0 ? " (still: the sum is reused)" : "");
+    char buf[320];
+    if (a.interleave > 1) {
+        const std::string has = a.pixel_min == a.pixel_max ? std::to_string(a.pixel_min)
+                                                           : std::to_string(a.pixel_min) + " to " + std::to_string(a.pixel_max);
+        std::snprintf(buf, sizeof buf,
+                      "light samples (Heckbert-Herf, interleaved %dx%d): %d of %d sample passes in the sum (%d light "
+                      "samples over %d pixel classes; each pixel has %s of them%s), %d drawn this frame%s\n",
+                      a.interleave, a.interleave, a.done, a.total, a.samples, a.interleave * a.interleave, has.c_str(),
+                      a.done < a.total ? ", filtered over the tile" : ": complete, unfiltered", a.added,
+                      a.added == 0 ? " (still: the sum is reused)" : "");
+    } else {
+        std::snprintf(buf, sizeof buf, "light samples (Heckbert-Herf): %d of %d in the sum, %d drawn this frame%s\n", a.done,
+                      a.total, a.added, a.added == 0 ? " (still: the sum is reused)" : "");
+    }
     return buf;
 }
 
 std::string AreaStats::json(const AreaStats& a) {
+    std::string interleaved;
+    if (a.interleave > 1)
+        interleaved = ",\"samples\":" + std::to_string(a.samples) + ",\"interleave\":" + std::to_string(a.interleave) +
+                      ",\"pixel_min\":" + std::to_string(a.pixel_min) + ",\"pixel_max\":" + std::to_string(a.pixel_max);
     return "{\"total\":" + std::to_string(a.total) + ",\"done\":" + std::to_string(a.done) +
-           ",\"added\":" + std::to_string(a.added) + ",\"key\":" + json_quote(a.key) + "}";
+           ",\"added\":" + std::to_string(a.added) + interleaved + ",\"key\":" + json_quote(a.key) + "}";
+}
+
+AreaStep area_step(int s, int samples, int interleave) {
+    const int classes = interleave * interleave;
+    const int k = s % samples, round = s / samples;
+    return {k, (k * classes / samples + round) % classes};
+}
+
+int area_class_samples(int j, int done, int samples, int interleave) {
+    // A whole round gives each class one block; the rest, the steps of the round under way.
+    const int classes = interleave * interleave;
+    const int rounds = done / samples;
+    int n = 0;
+    for (int r = 0; r < std::min(rounds, classes); ++r) {
+        const int block = ((j - r) % classes + classes) % classes;  // the block class j gets in round r
+        // Block b: the samples k with k * classes / samples == b.
+        n += (block + 1) * samples / classes + ((block + 1) * samples % classes ? 1 : 0) -
+             (block * samples / classes + (block * samples % classes ? 1 : 0));
+    }
+    for (int s = rounds * samples; s < done; ++s)
+        if (area_step(s, samples, interleave).pixel_class == j) ++n;
+    return n;
 }
 
 const AreaStats* area_of(const FramePlan& p) { return p.find<AreaStats>(); }
