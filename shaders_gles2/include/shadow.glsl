@@ -62,13 +62,22 @@ vec3 cubeFaceWorld(vec3 e) {
 #endif
 #endif
 
-#if (defined(BIAS_AUTO) || defined(FILTER_PCSS)) && !defined(CUBE)
-// The light's eye space, for the receiver's plane (the auto bias's slope, PCSS's blocker search).
+#if defined(BIAS_AUTO) || defined(PCSS_LAYERED)
+// The light's eye space, for the receiver's plane (the auto bias's slope, PCSS's layered blocker
+// search). A cube has its own (cubeFaceEye, centre 0).
+#ifndef CUBE
 uniform mat3 u_light_rotation;  // world -> light eye space
 #define SHADOW_ROTATE(v) (u_light_rotation * (v))
 #ifdef LIGHT_PERSPECTIVE
 uniform vec2 u_bias_center;     // tan at the middle of the window (an asymmetric frustum; 0 when symmetric)
 #define SHADOW_CENTER u_bias_center
+#endif
+#endif
+#ifdef LIGHT_PERSPECTIVE
+// The ray from the light through the lookup c, in its eye space (z = -1).
+vec3 lightRay(vec3 c) {
+    return vec3((2.0 * c.x - 1.0) * SHADOW_SLOPE.x + SHADOW_CENTER.x, (2.0 * c.y - 1.0) * SHADOW_SLOPE.y + SHADOW_CENTER.y, -1.0);
+}
 #endif
 #endif
 
@@ -89,7 +98,7 @@ float shadowBiasReach(vec3 normal, vec3 c, float reach) {
     float f = SHADOW_SLOPE.w;
     float across = (abs(nl.x) * SHADOW_SLOPE.x + abs(nl.y) * SHADOW_SLOPE.y) * u_bias_kernel.x * reach;
 #ifdef LIGHT_PERSPECTIVE
-    vec3 ray = vec3((2.0 * c.x - 1.0) * SHADOW_SLOPE.x + SHADOW_CENTER.x, (2.0 * c.y - 1.0) * SHADOW_SLOPE.y + SHADOW_CENTER.y, -1.0);
+    vec3 ray = lightRay(c);
     float facing = max(abs(dot(nl, ray)), 0.05 * length(ray));
     float zEye = 2.0 * n * f / (f + n - (2.0 * c.z - 1.0) * (f - n));
     float dz = zEye * across / facing;
@@ -225,7 +234,6 @@ vec2 pcssConeDepth(float zr) {
     return vec2((zr - n) / (f - n), 1.0 / ((f - n) * size));
 #endif
 }
-#endif
 
 // The receiver's plane around the lookup: its window depth per texel of offset along the map's x
 // and y, from its normal in the light's eye space (signed, where shadowBiasReach takes the
@@ -238,7 +246,7 @@ vec2 receiverSlope(vec3 normal, vec3 c) {
     float f = SHADOW_SLOPE.w;
     vec2 ndc = 2.0 * u_texmapscale;  // one texel in NDC
 #ifdef LIGHT_PERSPECTIVE
-    vec3 ray = vec3((2.0 * c.x - 1.0) * SHADOW_SLOPE.x + SHADOW_CENTER.x, (2.0 * c.y - 1.0) * SHADOW_SLOPE.y + SHADOW_CENTER.y, -1.0);
+    vec3 ray = lightRay(c);
     float nr = dot(nl, ray);
     float floorNr = 0.05 * length(ray);
     nr = nr < 0.0 ? min(nr, -floorNr) : max(nr, floorNr);
@@ -249,6 +257,7 @@ vec2 receiverSlope(vec3 normal, vec3 c) {
     return nl.xy * SHADOW_SLOPE.xy / nz * ndc / (f - n);
 #endif
 }
+#endif
 
 // One turn of the golden angle: the step from one Vogel tap to the next.
 const vec2 kGolden = vec2(-0.7373688, 0.6754903);

@@ -164,13 +164,10 @@ void plan_area(Planning& p) {
             glm::vec4 channel(0.0f);
             channel[k % 4] = 1.0f / 255.0f;
             const int ki = a.interleave, jx = st.pixel_class % ki, jy = st.pixel_class / ki;
-            if (ki == 1) {
-                add.bindings.push_back({"light sample", {{"u_sample", kAreaUnit}, {"u_channel", channel}}, {{kAreaUnit, one_r}}});
-            } else {
-                const glm::vec4 cls(static_cast<float>(jx), static_cast<float>(jy), static_cast<float>(ki), 0.0f);
-                add.bindings.push_back({"light sample", {{"u_sample", kAreaUnit}, {"u_channel", channel}, {"u_class", cls}},
-                                        {{kAreaUnit, one_r}}});
-            }
+            add.bindings.push_back({"light sample", {{"u_sample", kAreaUnit}, {"u_channel", channel}}, {{kAreaUnit, one_r}}});
+            if (ki > 1)  // the pixel class that counts this pass (area_add.frag, AREA_INTERLEAVE)
+                add.bindings.back().uniforms.push_back(
+                    {"u_class", glm::vec4(static_cast<float>(jx), static_cast<float>(jy), static_cast<float>(ki), 0.0f)});
             Draw d;
             d.fullscreen = true;
             d.variant = area_add_variant(ki > 1);
@@ -238,17 +235,9 @@ AreaStep area_step(int s, int samples, int interleave) {
 }
 
 int area_class_samples(int j, int done, int samples, int interleave) {
-    // A whole round gives each class one block; the rest, the steps of the round under way.
-    const int classes = interleave * interleave;
-    const int rounds = done / samples;
+    // The passes drawn so far that counted at class j (at most samples * K^2 of them).
     int n = 0;
-    for (int r = 0; r < std::min(rounds, classes); ++r) {
-        const int block = ((j - r) % classes + classes) % classes;  // the block class j gets in round r
-        // Block b: the samples k with k * classes / samples == b.
-        n += (block + 1) * samples / classes + ((block + 1) * samples % classes ? 1 : 0) -
-             (block * samples / classes + (block * samples % classes ? 1 : 0));
-    }
-    for (int s = rounds * samples; s < done; ++s)
+    for (int s = 0; s < done; ++s)
         if (area_step(s, samples, interleave).pixel_class == j) ++n;
     return n;
 }

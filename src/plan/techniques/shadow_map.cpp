@@ -519,6 +519,9 @@ public:
         else if (cascades.empty()) b.uniforms.push_back({"u_light_matrix", shadow::clip_to_texture() * f.view_proj()});
         else add_cascade_uniforms(c, b, map);
         const bool pcss = s.filter == shadow::Filter::PCSS;
+        // A light with a size: PCSS counts the part of it above the receiver's horizon (lit.frag,
+        // LIGHT_HORIZON); a point light (radius 0) leaves PCSS the hard lookup.
+        const bool horizon = pcss && c.light.radius > 0.0f;
         if (cascades.empty() && (s.bias_auto || pcss))
             // 1/P[0][0] and 1/P[1][1]: tan of the half-angles (perspective) or the half-extents
             // (orthographic) of the light's frustum.
@@ -529,8 +532,7 @@ public:
             const float radius = c.light.radius;
             const float size = f.perspective ? radius : std::tan(std::min(radius, 1.5f));
             b.uniforms.push_back({"u_pcss", glm::vec2(size, 0.125f / texel)});
-            // The part of the light above the receiver's horizon (lit.frag, LIGHT_HORIZON).
-            if (size > 0.0f) b.uniforms.push_back({"u_light_size", size});
+            if (horizon) b.uniforms.push_back({"u_light_size", size});
         }
         if (s.bias_auto || (pcss && s.pcss_layered)) {
             // The receiver's plane in the light's eye space (the slope bias, PCSS's search). A cube
@@ -557,7 +559,7 @@ public:
             lf.pcss_search = s.pcss_search;
             lf.pcss_taps = s.pcss_taps;
             lf.pcss_layered = s.pcss_layered;
-            if (pcss && c.light.radius > 0.0f) lf.horizon = true;
+            lf.horizon = lf.horizon || horizon;  // a light sample has it already (PlanContext::light_sample)
             lf.cascades = static_cast<int>(cascades.size());
             lf.cube = cube != nullptr;
             lf.cube_map = cube && cube->cube_map;
