@@ -281,6 +281,7 @@ void CourseApp::create_gl(const platform::Platform& context) {
     renderer_->gpu_timer().enable(gpu_timing_);
     if (settings_.encoding == shadow::Encoding::DepthTex && !renderer_->caps().depth_texture)
         settings_.encoding = shadow::Encoding::RGBA;
+    renderer_->set_snippets(snippets_);  // the lab's: they passed the scan (set_snippets)
 }
 
 // The objects died with the context; deleting their names on a lost context does nothing.
@@ -329,7 +330,54 @@ render::Settings CourseApp::frame_settings() const {
         else if (held_here_only(name)) option.store(o, option.print(defaults));
     }
     if (x.settings) x.settings(toggles_, o.settings);
+    if (lab_) {
+        const render::Settings lab = render::lab_settings(o.settings);
+        if (render::lab_refusal(lab).empty()) return lab;
+    }
     return o.settings;
+}
+
+// ---- the shader lab -------------------------------------------------------------------------
+
+bool CourseApp::lab_available() const {
+    CourseApp& self = const_cast<CourseApp&>(*this);
+    const bool on = lab_;
+    self.lab_ = false;
+    const render::Settings s = frame_settings();
+    self.lab_ = on;
+    return !own_scene() && render::lab_refusal(render::lab_settings(s)).empty();
+}
+
+std::vector<render::SnippetProblem> CourseApp::set_snippets(std::string_view text) {
+    if (!renderer_) {
+        // No context yet: the scan now, the compiler when the context is made (create_gl).
+        auto problems = render::scan_snippets(text).problems;
+        if (problems.empty()) snippets_ = std::string(text);
+        return problems;
+    }
+    if (!lab_available()) return {{0, render::lab_refusal(render::lab_settings(frame_settings()))}};
+    scene::animate_course(course_, clock_.light, clock_.jump);
+    auto problems = render::set_snippets(*renderer_, course_.scene, frame_settings(), text);
+    if (problems.empty()) snippets_ = std::string(text);
+    return problems;
+}
+
+render::LabVerdict CourseApp::lab_check(std::string_view text, int width, int height) {
+    render::LabVerdict v;
+    if (!renderer_) {
+        v.problems = {{0, "no GL context"}};
+        return v;
+    }
+    if (!lab_available()) {
+        v.problems = {{0, render::lab_refusal(render::lab_settings(frame_settings()))}};
+        return v;
+    }
+    scene::animate_course(course_, clock_.light, clock_.jump);
+    course_.scene.camera = scene_camera_;
+    v = render::lab_check(*renderer_, course_.scene, frame_settings(), text, render::offscreen(width, height));
+    if (v.compiles) snippets_ = std::string(text);
+    else renderer_->set_snippets(snippets_);
+    return v;
 }
 
 render::FrameInputs CourseApp::light_view(render::Output output, bool ortho, const render::Output& camera) const {
@@ -369,6 +417,7 @@ void CourseApp::draw(int width, int height) {
     // The frame's plans are timed as one GPU frame (a plan that throws leaves it unfinished: the
     // next frame drops it).
     gl::PassTimer& timer = renderer_->gpu_timer();
+    renderer_->set_snippets(snippets_);  // the lab's last good text (lab_check may have drawn others)
     timer.begin_group();
     exercise_->draw(*this, frame_settings(), std::move(in));
     timer.end_group();

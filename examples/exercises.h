@@ -28,6 +28,7 @@
 #include "plan/frames/area_light.h"
 #include "plan/plan.h"
 #include "plan/settings.h"
+#include "render/lab.h"
 #include "render/renderer.h"
 #include "scenes/course_scene.h"
 
@@ -145,6 +146,20 @@ public:
     // The scene the current exercise draws.
     const scene::Scene& scene() const;
 
+    // The shader lab (docs/snippets.md): on, the frames are drawn with Settings::lab
+    // (render::lab_settings of the exercise's) and the snippets set here, where the exercise's
+    // settings fit the lab (lab_available); elsewhere it has no effect.
+    bool lab_available() const;
+    void set_lab(bool on) { lab_ = on; }
+    bool lab() const { return lab_; }
+    // Checks and compiles `text` (render::set_snippets) for the current frame's settings: the
+    // problems, else the frames use it from now on. On a problem the last good text stays.
+    std::vector<render::SnippetProblem> set_snippets(std::string_view text);
+    const std::string& snippets() const { return snippets_; }  // the last good text ("" = the sheet's answer)
+    // The verdict on `text` (render::lab_check) at the current frame's time and settings, drawn
+    // offscreen at width x height; `text` becomes the snippets when it compiles.
+    render::LabVerdict lab_check(std::string_view text, int width, int height);
+
     // Desktop keys: the help text, and one key's action. Returns a line saying what changed,
     // or "" when the key means nothing here.
     static std::string key_help();
@@ -196,6 +211,8 @@ private:
     std::vector<render::FramePlan> plans_;  // this frame's, with keep_plans
     std::string frame_note_;  // the last frame's (frame_note())
     std::optional<render::AreaStats> area_;  // the last frame's light samples
+    bool lab_ = false;
+    std::string snippets_;
 };
 
 }  // namespace penumbra::examples

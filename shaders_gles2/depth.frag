@@ -12,7 +12,10 @@ void main() {
     // A cut-out (glTF MASK) casts only where it is kept: the gaps of a fence leave no depth.
     if (materialAlpha(v_uv) < u_alpha_cutoff) discard;
 #endif
-#if defined(ENC_R8)
+#if defined(LAB)
+    // The shader lab: the sheet's packing, as written (render/snippets.h).
+    gl_FragColor = packDepth(gl_FragCoord.z);
+#elif defined(ENC_R8)
     // 8 bits in red: the sheet's first shadow map.
     gl_FragColor = packDepthR8(gl_FragCoord.z);
 #elif defined(ENC_RGBA)

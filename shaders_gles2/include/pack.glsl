@@ -14,6 +14,15 @@
 // Written as b/255 instead, a context that truncates may store b - 1 where b/255 * 255 lands below b.
 const float UNORM_OFFSET = 0.25;
 
+#ifdef LAB
+// The shader lab (docs/snippets.md): the sheet's packDepth, unpackDepth, shadowTest and
+// offset_lookup, as a student wrote them or the sheet's answer, inserted by the shader library at
+// the marker below (render::snippet_block). texmapscale is the sheet's name for u_texmapscale.
+uniform vec2 u_texmapscale;  // 1/width, 1/height of the shadow map: one texel in texture space
+#define texmapscale u_texmapscale
+// @snippets
+#else
+
 #ifdef EMULATE_MEDIUMP
 const float MAX_PACKED_DEPTH = 0.99951171875;  // 1 - 2^-11: the largest half below 1
 #else
@@ -36,4 +45,5 @@ vec4 packDepthR8(float depth) {
     float byte = floor(MP(depth) * 255.0 + 0.5);
     return vec4(MP((byte + UNORM_OFFSET) / 255.0), 0.0, 0.0, 1.0);
 }
+#endif  // LAB
 #endif  // PACK_GLSL

@@ -9,7 +9,9 @@ uniform samplerCube u_shadow_cube;  // --cube-layout cubemap: the cube's faces (
 #else
 uniform sampler2D u_shadow_map;
 #endif
+#ifndef LAB  // the lab declares it in pack.glsl, before its functions
 uniform vec2 u_texmapscale;  // 1/width, 1/height of the shadow map: one texel in texture space
+#endif
 uniform float u_bias;        // the fragment is in shadow if z_l > depth + bias (auto: the constant part)
 #if defined(CASCADES) || defined(CUBE)
 // Cascaded shadow maps (CASCADES maps) or a point light's cube (CUBE: six faces), tiles of one
@@ -146,14 +148,25 @@ float shadowDepth(vec2 uv) {
 }
 #endif
 
+#ifdef LAB
+// The shader lab: the sheet's test on the sheet's lookup (render/snippets.h), one 2D map.
+float litAt(vec2 uv, float z, float bias) {
+    return shadowTest(z, unpackDepth(offset_lookup(u_shadow_map, vec3(uv, z), vec2(0.0))), bias);
+}
+#else
 float litAt(vec2 uv, float z, float bias) {
     return z > MP(shadowDepth(uv) + bias) ? 0.0 : 1.0;
 }
+#endif
 
 #ifdef PCF_TAPS
 // One tap of the kernel: `offset` in texels from the lookup point.
 float litTap(vec2 offset, vec2 uv, float z, float bias) {
+#ifdef LAB
+    return shadowTest(z, unpackDepth(offset_lookup(u_shadow_map, vec3(uv, z), offset)), bias);
+#else
     return litAt(uv + offset * u_texmapscale, z, bias);
+#endif
 }
 
 // 1.0 where the light reaches, 0.0 in shadow, PCF fractions in between. Points outside the

@@ -220,7 +220,7 @@ Planning::Planning(const scene::Scene& scene, const Settings& s, const gl::Caps&
         (blend ? ctx.translucent : ctx.drawable).push_back(static_cast<int>(i));
         if (casts(scene, o, s.blend_shadows)) ctx.casters.push_back(static_cast<int>(i));
     }
-    ctx.depth_path = {s.precision == shadow::Precision::Mediump};
+    ctx.depth_path = {s.precision == shadow::Precision::Mediump, s.lab};
     if (s.light_radius) ctx.light.radius = *s.light_radius;
     plan.camera = camera_view(scene, in);
     // The mirror and the portal show surfaces: in the visibility AOV, the visibility of the surface
@@ -271,6 +271,8 @@ std::string check(const scene::Scene& scene, const Settings& s, const gl::Caps& 
             (ov.mesh >= 0 && !valid_mesh(scene, ov.mesh)) || ov.material >= static_cast<int>(scene.materials.size()))
             return "an object override names an object, mesh or material the scene does not have";
     if (std::string why = aov_problem(s.technique, s.aov); !why.empty()) return why;
+    if (s.lab)
+        if (std::string why = lab_refusal(s); !why.empty()) return why;
     Planning p(scene, s, caps, in, nullptr);
     if (std::string why = shading_problem(p.ctx); !why.empty()) return why;
     if (std::string why = p.module.check(p.ctx); !why.empty()) return why;

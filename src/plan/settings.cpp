@@ -83,7 +83,23 @@ bool Settings::operator==(const Settings& o) const {
            area_per_frame == o.area_per_frame && area_interleave == o.area_interleave && gooch_planes == o.gooch_planes && gooch_method == o.gooch_method &&
            blend_shadows == o.blend_shadows &&
            effects == o.effects && outline_color == o.outline_color && outline_width == o.outline_width &&
-           reflectivity == o.reflectivity && post == o.post && shading == o.shading && lights == o.lights;
+           reflectivity == o.reflectivity && post == o.post && shading == o.shading && lights == o.lights &&
+           lab == o.lab;
+}
+
+std::string lab_refusal(const Settings& s) {
+    const std::string lab = "the shader lab ";
+    if (s.technique != Technique::ShadowMap) return lab + "runs on the shadow map (--technique shadow-map)";
+    if (s.encoding == shadow::Encoding::DepthTex)
+        return lab + "packs the depth into an RGBA8 map: --encoding r8 or rgba, not depthtex";
+    if (s.filter == shadow::Filter::PCSS) return lab + "runs the sheet's filters: --filter hard, pcf2x2 or pcf4x4";
+    if (s.cascades != 1) return lab + "draws one map: --cascades 1";
+    if (s.bias_auto) return lab + "takes a constant bias (the sheet's unless --bias says), not --bias auto";
+    if (s.shading != Shading::Forward) return lab + "shades forward: --shading forward";
+    if (s.area_samples > 1) return lab + "draws one light sample: --area-samples 1";
+    if (s.lights > 0) return lab + "lights with the scene's light only: --lights 0";
+    if (!s.effects.empty()) return lab + "draws no effects: --effects none";
+    return "";
 }
 
 }  // namespace penumbra::render

@@ -173,6 +173,11 @@ struct Settings {
     std::vector<PostStep> post;
     Shading shading = Shading::Forward;
     int lights = 0;  // --lights: point lights beside the scene's, 0..kMaxLights
+    // The shader lab (render/lab.h, docs/snippets.md): the depth pass packs and the camera pass
+    // unpacks, tests and looks up through the sheet's functions, written by a student (the
+    // renderer's snippets) or the sheet's answer, in place of the renderer's exact packing.
+    // Set by `render --snippets`, the pages' lab panel and the desktop app; no option of its own.
+    bool lab = false;
 
     // The step of that kind, or null.
     const PostStep* post_step(PostKind k) const {
@@ -194,5 +199,10 @@ struct Settings {
     bool operator==(const Settings& o) const;
     bool operator!=(const Settings& o) const { return !(*this == o); }
 };
+
+// What the shader lab can run (Settings::lab): the shadow-map technique with one 2D map, the r8 or
+// rgba encoding, the hard or a PCF filter, a constant bias, forward shading, no point lights,
+// effects or light samples. "" when `s` fits, else one line naming what does not.
+std::string lab_refusal(const Settings& s);
 
 }  // namespace penumbra::render

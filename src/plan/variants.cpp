@@ -93,6 +93,7 @@ Variant lit_variant(const LitFeatures& f) {
         if (f.bias_auto) v.defines.emplace_back("BIAS_AUTO");
         if (f.light_perspective && (f.bias_auto || pcss)) v.defines.emplace_back("LIGHT_PERSPECTIVE");
         if (f.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
+        if (f.lab) v.defines.emplace_back("LAB");
         if (f.cascades > 1) v.defines.push_back("CASCADES " + std::to_string(f.cascades));
         if (f.cube) v.defines.emplace_back("CUBE");
         if (f.cube && f.cube_map) v.defines.emplace_back("CUBE_MAP");
@@ -143,6 +144,7 @@ void add_alpha(Variant& v, AlphaTest alpha) {
 Variant depth_variant(shadow::Encoding e, const DepthPath& path, AlphaTest alpha) {
     Variant v{"depth.vert", "depth.frag", {encoding_define(e)}};
     if (path.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
+    if (path.lab && e != shadow::Encoding::DepthTex) v.defines.emplace_back("LAB");
     add_alpha(v, alpha);
     return v;
 }
@@ -305,6 +307,25 @@ std::vector<Variant> all_variants() {
             base.alpha_blend = true;
             if (!base.visibility_aov) out.push_back(lit_variant(base));
         }
+    // The shader lab (Settings::lab, render::lab_refusal): r8 and rgba, the hard and PCF filters with
+    // every tap, a constant bias; compiled here with the sheet's answer as the snippets.
+    for (auto e : {shadow::Encoding::R8, shadow::Encoding::RGBA}) {
+        for (auto f : {shadow::Filter::Hard, shadow::Filter::PCF2x2, shadow::Filter::PCF4x4})
+            for (int bits = 0; bits < 8; ++bits) {
+                LitFeatures lab;
+                lab.shadow_map = lab.lab = true;
+                lab.encoding = e;
+                lab.filter = f;
+                lab.textured = bits & 1;
+                lab.spot = bits & 2;
+                lab.visibility_aov = bits & 4;
+                out.push_back(lit_variant(lab));
+            }
+        for (bool mediump : {false, true}) {
+            out.push_back(depth_variant(e, {mediump, true}));
+            for (bool textured : {false, true}) out.push_back(depth_variant(e, {mediump, true}, {true, textured}));
+        }
+    }
     for (auto e : shadow::kAllEncodings)
         for (bool mediump : {false, true}) {
             out.push_back(depth_variant(e, {mediump}));

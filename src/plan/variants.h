@@ -78,6 +78,7 @@ struct LitFeatures {
     int point_lights = 0;
     bool points_only = false;
     Gbuffer gbuffer = Gbuffer::None;
+    bool lab = false;        // with shadow_map: the lab's unpackDepth, shadowTest, offset_lookup (LAB)
     int gbuffer_target = 0;  // WriteOne: 0 colour, 1 normal, 2 depth
     bool receives = false;   // WriteAll, WriteOne: the object receives shadows (the depth target's flag)
 };
@@ -93,6 +94,7 @@ struct AlphaTest {
 // context: pack.glsl writes bytes that any unorm8 conversion keeps.)
 struct DepthPath {
     bool mediump = false;
+    bool lab = false;  // Settings::lab: the lab's packDepth (LAB)
 };
 
 Variant lit_variant(const LitFeatures& f);

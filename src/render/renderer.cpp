@@ -64,6 +64,12 @@ std::string Renderer::unorm_report() const {
            "; the packing stores the same bytes under each)";
 }
 
+void Renderer::set_snippets(std::string text) {
+    if (text == shaders_.snippets()) return;
+    shaders_.set_snippets(std::move(text));
+    previous_.reset();
+}
+
 std::string Renderer::check(const scene::Scene& scene, const Settings& s, const FrameInputs& in) const {
     return render::check(scene, s, caps_, in);
 }

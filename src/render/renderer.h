@@ -57,6 +57,9 @@ public:
     void finish() { device_.finish(); }
 
     ShaderLibrary& shaders() { return shaders_; }
+    // The shader lab's snippets for Settings::lab frames (render/lab.h checks them first): the
+    // previous plan is forgotten, so no map drawn with other snippets is reused.
+    void set_snippets(std::string text);
     // For work outside a frame plan on the same context (render/mipmaps.h): its state cache.
     gl::Device& device() { return device_; }
     const ResourcePool& pool() const { return pool_; }

@@ -1,15 +1,17 @@
 #include "render/shader_library.h"
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <set>
 
 #include "gl/check.h"
 #include "render/shader_sources.h"
+#include "render/snippets.h"
 
 namespace penumbra::render {
 
-std::string variant_source(const std::string& file, const std::vector<std::string>& defines) {
+std::string variant_source(const std::string& file, const std::vector<std::string>& defines, const std::string& snippets) {
     for (const ShaderSource& s : embedded_shaders()) {
         if (file != s.name) continue;
         std::string text = s.text;
@@ -21,6 +23,16 @@ std::string variant_source(const std::string& file, const std::vector<std::strin
         for (const auto& d : defines)
             if (d == "GBUFFER_MRT") lines = "#extension GL_EXT_draw_buffers : require\n" + lines;
         text.insert(version.size(), lines);
+        const bool lab = std::find(defines.begin(), defines.end(), "LAB") != defines.end();
+        const std::string marker = "// @snippets\n";
+        if (lab) {
+            // pack.glsl is spliced in once per file that includes it, its guard keeping one: the
+            // marker of each copy (the one compiled may be any of them).
+            const bool r8 = std::find(defines.begin(), defines.end(), "ENC_R8") != defines.end();
+            const std::string block = snippet_block(snippets, r8 ? shadow::Encoding::R8 : shadow::Encoding::RGBA);
+            for (size_t at = text.find(marker); at != std::string::npos; at = text.find(marker, at + block.size()))
+                text.replace(at, marker.size(), block);
+        }
         return text;
     }
     throw gl::Error("shader '" + file + "' is not embedded");
@@ -77,12 +89,12 @@ std::vector<std::string> defines_read_by(const std::string& file, const std::vec
     return out;
 }
 
-std::vector<std::string> check_variants(const std::vector<Variant>& variants) {
+std::vector<std::string> check_variants(const std::vector<Variant>& variants, const std::string& snippets) {
     std::vector<gl::ProgramSources> programs;
     programs.reserve(variants.size());
     for (const Variant& v : variants)
-        programs.push_back({variant_source(v.vertex, defines_read_by(v.vertex, v.defines)),
-                            variant_source(v.fragment, defines_read_by(v.fragment, v.defines)), v.key()});
+        programs.push_back({variant_source(v.vertex, defines_read_by(v.vertex, v.defines), snippets),
+                            variant_source(v.fragment, defines_read_by(v.fragment, v.defines), snippets), v.key()});
     std::vector<std::string> failed;
     for (std::string& e : gl::check_programs(programs))
         if (!e.empty()) failed.push_back(std::move(e));
@@ -93,8 +105,21 @@ const gl::Program& ShaderLibrary::get(const Variant& v) {
     const std::string key = v.key();
     auto it = programs_.find(key);
     if (it != programs_.end()) return it->second;
-    gl::Program p(variant_source(v.vertex, v.defines), variant_source(v.fragment, v.defines), key);
+    gl::Program p(variant_source(v.vertex, v.defines, snippets_), variant_source(v.fragment, v.defines, snippets_), key);
     return programs_.emplace(key, std::move(p)).first->second;
+}
+
+void ShaderLibrary::set_snippets(std::string text) {
+    if (text == snippets_) return;
+    snippets_ = std::move(text);
+    for (auto it = programs_.begin(); it != programs_.end();) {
+        const std::string& key = it->first;
+        if (key.find("[LAB") != std::string::npos || key.find(",LAB,") != std::string::npos ||
+            key.find(",LAB]") != std::string::npos)
+            it = programs_.erase(it);
+        else
+            ++it;
+    }
 }
 
 }  // namespace penumbra::render

@@ -43,6 +43,8 @@
 #include "measure.h"
 #include "measure_commands.h"
 #include "mipmaps_command.h"
+#include "lab_command.h"
+#include "render/lab.h"
 
 namespace fs = std::filesystem;
 using namespace penumbra;
@@ -73,7 +75,27 @@ void write_image(render::Renderer& r, const render::Options& o, const std::strin
 
 // ---- render, plan ---------------------------------------------------------------------------
 
-int run_render(const render::Options& o, bool verbose, const std::vector<std::string>& allow_outside) {
+// --snippets FILE (render, plan): the shader lab's settings (render::lab_settings) with the file's
+// functions compiled into the renderer; a file that is refused or does not compile is exit status 2.
+render::Options with_snippets(render::Options o, const std::string& snippets, std::string& text) {
+    if (snippets.empty()) return o;
+    text = tools::read_snippets("--snippets", snippets);
+    o.settings = render::lab_settings(o.settings);
+    if (const std::string why = render::lab_refusal(o.settings); !why.empty()) throw Failure{"--snippets: " + why, 2};
+    return o;
+}
+
+void load_snippets(render::Renderer& r, const scene::Scene& scene, const render::Options& o, const std::string& path,
+                   const std::string& text, const render::FrameInputs& in) {
+    if (path.empty()) return;
+    if (const auto problems = render::set_snippets(r, scene, o.settings, text, in); !problems.empty())
+        throw Failure{tools::snippet_problems_text(path, problems), 2};
+}
+
+int run_render(const render::Options& given, bool verbose, const std::vector<std::string>& allow_outside,
+               const std::string& snippets) {
+    std::string text;
+    const render::Options o = with_snippets(given, snippets, text);
     const render::Job& job = o.job;
     if (!job.out.empty()) tools::check_output_file("--out", job.out, ".png");  // before any work
     scene::SceneSource src =
@@ -85,6 +107,7 @@ int run_render(const render::Options& o, bool verbose, const std::vector<std::st
         std::cerr << ctx->description() << "\n"
                   << r.caps().summary() << "\n" << r.unorm_report() << "\nsettings: " << render::to_args(o) << "\n";
     if (const std::string problem = r.check(src.at(job.time), o.settings, in); !problem.empty()) throw Failure{problem, 2};
+    load_snippets(r, src.at(job.time), o, snippets, text, in);
 
     std::vector<double> ms;
     r.gpu_timer().enable(verbose);  // -v: each pass's GPU time too, read after the last frame
@@ -121,7 +144,10 @@ int run_render(const render::Options& o, bool verbose, const std::vector<std::st
 
 // The plan of frame --frames (1: the first; the frames before it are rendered, so a later frame
 // shows what it reuses), as text or JSON, on the headless context's real capabilities.
-int run_plan(const render::Options& o, bool json, const std::vector<std::string>& allow_outside) {
+int run_plan(const render::Options& given, bool json, const std::vector<std::string>& allow_outside,
+             const std::string& snippets) {
+    std::string text;
+    const render::Options o = with_snippets(given, snippets, text);
     const render::Job& job = o.job;
     scene::SceneSource src =
         open_scene(job.scene, job.eye_in_shadow ? scene::Eye::InShadow : scene::Eye::Scene, allow_outside);
@@ -129,6 +155,7 @@ int run_plan(const render::Options& o, bool json, const std::vector<std::string>
     render::Renderer r(gl::probe_caps(*ctx));
     const render::FrameInputs in = render::offscreen(job.width, job.height);
     if (const std::string problem = r.check(src.at(job.time), o.settings, in); !problem.empty()) throw Failure{problem, 2};
+    load_snippets(r, src.at(job.time), o, snippets, text, in);
     for (int i = 0; i + 1 < job.frames; ++i) r.render(src.at(job.time + static_cast<double>(i) / 60.0), o.settings, in);
     const render::FramePlan plan = r.plan(src.at(job.time + static_cast<double>(job.frames - 1) / 60.0), o.settings, in);
     std::printf("%s%s", json ? plan.to_json().c_str() : plan.to_text().c_str(), json ? "\n" : "");
@@ -264,6 +291,11 @@ int run(int argc, char** argv) {
     tools::add_allow_outside(render_cmd, render_allow);
     bool verbose = false;
     render_cmd->add_flag("-v,--verbose", verbose, "list the context, the settings and each frame's passes");
+    std::string render_snippets, plan_snippets;
+    const std::string snippets_help =
+        "FILE: the shader lab's functions (packDepth, unpackDepth, shadowTest, offset_lookup; docs/snippets.md) "
+        "in place of the renderer's packing and lookup";
+    render_cmd->add_option("--snippets", render_snippets, snippets_help);
 
     auto* plan_cmd = app.add_subcommand("plan", "print the frame plan: every pass (target, state, variants, draws) and resource");
     std::vector<std::string> plan_names;
@@ -273,6 +305,7 @@ int run(int argc, char** argv) {
     tools::add_allow_outside(plan_cmd, plan_allow);
     bool plan_json = false;
     plan_cmd->add_flag("--json", plan_json, "as JSON (passes, resources, uniforms, variants)");
+    plan_cmd->add_option("--snippets", plan_snippets, snippets_help);
 
     auto* gallery_cmd = app.add_subcommand("gallery", "the course scene in every encoding x filter, with an index.html");
     std::string gallery_dir = "out/gallery";
@@ -295,6 +328,8 @@ int run(int argc, char** argv) {
     const auto measure = tools::add_measure_commands(app);
 
 #ifdef PENUMBRA_HAVE_TRUTH
+    tools::GradeOptions grade;
+    auto* grade_cmd = tools::add_grade_command(app, grade);
     auto* sweep_cmd = app.add_subcommand(
         "bias-sweep", "acne and peter-panning against bias, elevation, encoding and precision (results/precision)");
     tools::BiasSweepOptions sweep;
@@ -345,8 +380,8 @@ int run(int argc, char** argv) {
     }
 
     try {
-        if (*render_cmd) return run_render(render_options.parse(), verbose, render_allow);
-        if (*plan_cmd) return run_plan(plan_options.parse(), plan_json, plan_allow);
+        if (*render_cmd) return run_render(render_options.parse(), verbose, render_allow, render_snippets);
+        if (*plan_cmd) return run_plan(plan_options.parse(), plan_json, plan_allow, plan_snippets);
         if (*gallery_cmd) return run_gallery(gallery_dir, gallery_options.parse(), gallery_allow);
         if (*shaders_cmd) return run_shaders(shader_dir);
         if (*caps_cmd) return run_caps();
@@ -358,6 +393,7 @@ int run(int argc, char** argv) {
         if (const int rc = tools::run_measure_commands(*measure); rc >= 0) return rc;
 #ifdef PENUMBRA_HAVE_TRUTH
         if (*sweep_cmd) return tools::run_bias_sweep(sweep);
+        if (*grade_cmd) return tools::run_grade(grade);
 #endif
     } catch (const Failure& f) {
         std::fprintf(stderr, "penumbra: error: %s\n", tools::one_line(f.message).c_str());

@@ -164,6 +164,7 @@ void add_packing(ContentKey& key, const PlanContext& c) {
     key.add(c.settings.encoding);
     key.add(c.settings.map_faces);
     key.add(c.depth_path.mediump);
+    key.add(c.depth_path.lab);
 }
 
 // The frame's cascades report (made on first use).
@@ -556,6 +557,7 @@ public:
             lf.bias_auto = s.bias_auto;
             lf.light_perspective = f.perspective;
             lf.mediump = s.precision == shadow::Precision::Mediump;
+            lf.lab = s.lab;
             lf.pcss_search = s.pcss_search;
             lf.pcss_taps = s.pcss_taps;
             lf.pcss_layered = s.pcss_layered;
@@ -583,7 +585,8 @@ public:
                       std::string(shadow::to_string(s.encoding)) + ", bias " +
                       (s.bias_auto ? "auto (" + number(static_cast<double>(s.effective_bias())) + " + slope)"
                                    : number(static_cast<double>(s.effective_bias()))) +
-                      (s.precision == shadow::Precision::Mediump ? ", mediump emulated" : "");
+                      (s.precision == shadow::Precision::Mediump ? ", mediump emulated" : "") +
+                      (s.lab ? ", the shader lab's packDepth, unpackDepth, shadowTest and offset_lookup" : "");
     }
 };
 
