@@ -10,7 +10,7 @@
 
 #include "plan/settings.h"
 #include "render/renderer.h"
-#include "render/snippets.h"
+#include "plan/snippets.h"
 #include "scene/scene.h"
 
 namespace penumbra::render {

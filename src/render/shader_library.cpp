@@ -7,7 +7,7 @@
 
 #include "gl/check.h"
 #include "render/shader_sources.h"
-#include "render/snippets.h"
+#include "plan/snippets.h"
 
 namespace penumbra::render {
 

@@ -36,7 +36,7 @@ public:
     const gl::Program& get(const Variant& v);
     std::size_t compiled() const { return programs_.size(); }
     void clear() { programs_.clear(); }
-    // The shader lab's snippets for the LAB variants (render/snippets.h; "" = the sheet's answer):
+    // The shader lab's snippets for the LAB variants (plan/snippets.h; "" = the sheet's answer):
     // their programs compiled before are dropped when the text changes.
     void set_snippets(std::string text);
     const std::string& snippets() const { return snippets_; }

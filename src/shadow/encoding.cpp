@@ -93,6 +93,27 @@ float unpack_rgba(const std::array<std::uint8_t, 4>& bytes, PackContext c) {
     return mp(sum, c);
 }
 
+std::array<std::uint8_t, 4> sheet_pack_rgba(double depth, UnormRounding r) {
+    double digit[5];
+    for (int i = 0; i < 5; ++i) {
+        const double scaled = depth * std::pow(256.0, i);
+        digit[i] = scaled - std::floor(scaled);
+    }
+    std::array<std::uint8_t, 4> out{};
+    for (int i = 0; i < 4; ++i) {
+        const double c = i < 3 ? digit[i] - digit[i + 1] / 256.0 : digit[3];
+        const double v = std::clamp(c, 0.0, 1.0) * 255.0;
+        out[static_cast<size_t>(i)] = static_cast<std::uint8_t>(r == UnormRounding::Round ? std::floor(v + 0.5) : std::floor(v));
+    }
+    return out;
+}
+
+double sheet_unpack_rgba(const std::array<std::uint8_t, 4>& bytes) {
+    double sum = 0.0;
+    for (int i = 0; i < 4; ++i) sum += bytes[static_cast<size_t>(i)] / 255.0 / std::pow(256.0, i);
+    return sum;
+}
+
 float depth_quantum(Encoding e, Precision p) {
     const float mediump_read = 1.0f / 2048.0f;  // half of fp16's 2^-10 step just below 1
     switch (e) {

@@ -89,6 +89,15 @@ float unpack_r8(std::uint8_t byte, PackContext c = {});
 std::array<std::uint8_t, 4> pack_rgba(float depth, PackContext c = {});
 float unpack_rgba(const std::array<std::uint8_t, 4>& bytes, PackContext c = {});
 
+// The sheet's answer's bit-shift packing as the sheet prints it (render::sheet_answer, the shader
+// lab's reference): channel i = fract(d 256^i) - fract(d 256^(i+1)) / 256 (the last keeps its
+// fraction), multiples of 1/256 that the store turns into bytes of 1/255; read back as
+// dot(texel, 1/256^i). Not exact: a store that rounds keeps up to half a step less or more per
+// channel, so depths read back up to 0.00195 nearer or farther (docs/snippets.md); a store that
+// truncates, up to 0.0039 nearer. In double precision, as exact arithmetic would give.
+std::array<std::uint8_t, 4> sheet_pack_rgba(double depth, UnormRounding r);
+double sheet_unpack_rgba(const std::array<std::uint8_t, 4>& bytes);
+
 // The depth quantum of an encoding under a precision: the largest error of a stored-then-read
 // depth (r8: half a step of 1/255, plus 2^-11 under mediump; rgba: 2^-24 under highp, 2^-11 under mediump (half of fp16's
 // 2^-10 step below 1); depthtex: 2^-24 for a 24-bit depth, 2^-11 once the read is mediump).

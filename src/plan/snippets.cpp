@@ -1,4 +1,4 @@
-#include "render/snippets.h"
+#include "plan/snippets.h"
 
 #include <algorithm>
 #include <cctype>
@@ -65,14 +65,19 @@ std::vector<Token> tokenize(std::string_view s, std::vector<SnippetProblem>& pro
             problems.push_back({line, buf});
             return out;
         }
+        // Comments may hold any byte but NUL (a student's own language: snippet_block writes it as '?').
         if (c == '/' && i + 1 < s.size() && s[i + 1] == '/') {
-            while (i < s.size() && s[i] != '\n') ++i;
+            while (i < s.size() && s[i] != '\n' && s[i] != '\0') ++i;
             continue;
         }
         if (c == '/' && i + 1 < s.size() && s[i + 1] == '*') {
             const int start = line;
             size_t j = i + 2;
-            while (j + 1 < s.size() && !(s[j] == '*' && s[j + 1] == '/')) line += s[j++] == '\n';
+            while (j + 1 < s.size() && !(s[j] == '*' && s[j + 1] == '/') && s[j] != '\0') line += s[j++] == '\n';
+            if (j < s.size() && s[j] == '\0') {
+                i = j;
+                continue;  // said at the NUL
+            }
             if (j + 1 >= s.size()) {
                 problems.push_back({start, "a /* comment is never closed"});
                 return out;
@@ -323,6 +328,7 @@ private:
                 }
                 stack.push_back(l);
                 mult *= l.iterations;
+                calls.push_back({"", mult});  // the iterations themselves: a step each
                 i = j;
                 continue;
             }
@@ -421,7 +427,7 @@ private:
     // Steps per call of `name`: 1, plus each call's times its callee's cost. -1 on a cycle.
     double cost_of(const std::string& name, const std::map<std::string, std::vector<Call>>& calls) {
         auto f = std::find_if(fns_.begin(), fns_.end(), [&](const Function& g) { return g.name == name; });
-        if (f == fns_.end()) return 0;  // a built-in (texture2D, dot, ...): counted as its call
+        if (f == fns_.end()) return 1;  // a built-in (texture2D, dot, ...), or "": one step
         if (f->cost == -2) {
             problems_.push_back({f->line, name + " calls itself (recursion is not allowed in GLSL ES 1.00)"});
             return -1;
@@ -432,7 +438,7 @@ private:
         for (const Call& c : calls.at(name)) {
             const double sub = cost_of(c.callee, calls);
             if (sub < 0) return -1;
-            cost += c.times * std::max(sub, 1.0);
+            cost += c.times * sub;
         }
         f = std::find_if(fns_.begin(), fns_.end(), [&](const Function& g) { return g.name == name; });
         f->cost = cost;
@@ -462,90 +468,33 @@ SnippetScan scan_snippets(std::string_view text) {
 
 namespace {
 
-// The sheet's answer, one function at a time (02561 W09: "Drawing depth and considering numerical
-// precision", "Shadow mapping in the fragment shader", "Percentage-closer filtering").
-std::string answer_fn(SnippetFn f, shadow::Encoding e) {
-    const bool r8 = e == shadow::Encoding::R8;
-    switch (f) {
-        case SnippetFn::PackDepth:
-            if (r8)
-                return "// The depth as red: 8 bits.\n"
-                       "vec4 packDepth(float z) {\n"
-                       "    return vec4(z, 0.0, 0.0, 0.0);\n"
-                       "}\n";
-            return "// Bit-shift packing: each channel holds the next 8 bits of the depth.\n"
-                   "vec4 packDepth(float z) {\n"
-                   "    const vec4 bitShift = vec4(1.0, 256.0, 256.0 * 256.0, 256.0 * 256.0 * 256.0);\n"
-                   "    const vec4 bitMask = vec4(1.0 / 256.0, 1.0 / 256.0, 1.0 / 256.0, 0.0);\n"
-                   "    vec4 rgbaDepth = fract(z * bitShift);\n"
-                   "    rgbaDepth -= rgbaDepth.gbaa * bitMask;\n"
-                   "    return rgbaDepth;\n"
-                   "}\n";
-        case SnippetFn::UnpackDepth:
-            if (r8)
-                return "float unpackDepth(const in vec4 rgbaDepth) {\n"
-                       "    return rgbaDepth.r;\n"
-                       "}\n";
-            return "float unpackDepth(const in vec4 rgbaDepth) {\n"
-                   "    const vec4 bitShift = vec4(1.0, 1.0 / 256.0, 1.0 / (256.0 * 256.0), 1.0 / (256.0 * 256.0 * 256.0));\n"
-                   "    return dot(rgbaDepth, bitShift);\n"
-                   "}\n";
-        case SnippetFn::ShadowTest:
-            return "// 1.0 where the light reaches, 0.0 in shadow: in shadow if zLight > depth + bias.\n"
-                   "float shadowTest(float zLight, float depth, float bias) {\n"
-                   "    return zLight > depth + bias ? 0.0 : 1.0;\n"
-                   "}\n";
-        case SnippetFn::OffsetLookup:
-            return "// One tap of the 4x4 kernel: offset in texels, texmapscale = (1/width, 1/height).\n"
-                   "vec4 offset_lookup(sampler2D map, vec3 shadowCoord, vec2 offset) {\n"
-                   "    return texture2D(map, shadowCoord.xy + offset * texmapscale);\n"
-                   "}\n";
+// `text` with every byte outside printable ASCII in its comments written as '?' (GLSL ES 1.00's
+// character set is ASCII; the scan refuses such bytes outside comments).
+std::string ascii_comments(std::string_view text) {
+    std::string out(text);
+    enum { Code, Line, Block } state = Code;
+    for (size_t i = 0; i < out.size(); ++i) {
+        const char c = out[i];
+        const char next = i + 1 < out.size() ? out[i + 1] : '\0';
+        if (state == Code && c == '/' && next == '/') state = Line, ++i;
+        else if (state == Code && c == '/' && next == '*') state = Block, ++i;
+        else if (state == Line && c == '\n') state = Code;
+        else if (state == Block && c == '*' && next == '/') state = Code, ++i;
+        else if (state != Code && (static_cast<unsigned char>(c) > 0x7e || (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r')))
+            out[i] = '?';
     }
-    return "";
-}
-
-}  // namespace
-
-std::string sheet_answer(shadow::Encoding e) {
-    std::string out = e == shadow::Encoding::R8
-                          ? "// The sheet's answer (02561 W09), 8-bit shadow map: bias 0.005 = 2^-8 + e.\n"
-                          : "// The sheet's answer (02561 W09), bit-shift packing: bias 0.0015 = 2^-10 + e.\n";
-    for (SnippetFn f : kAllSnippetFns) out += "\n" + answer_fn(f, e);
     return out;
 }
 
-std::string snippet_skeleton() {
-    return "// The shader lab: write the sheet's functions (02561 W09). A function left out is the\n"
-           "// sheet's answer's. This skeleton compiles and draws no shadow.\n"
-           "\n"
-           "// The light's depth gl_FragCoord.z in [0, 1], written into the RGBA8 shadow map.\n"
-           "vec4 packDepth(float z) {\n"
-           "    return vec4(0.0);\n"
-           "}\n"
-           "\n"
-           "// The depth back from the map's texel.\n"
-           "float unpackDepth(const in vec4 rgbaDepth) {\n"
-           "    return 1.0;\n"
-           "}\n"
-           "\n"
-           "// 1.0 where the light reaches the point at depth zLight, 0.0 in shadow.\n"
-           "float shadowTest(float zLight, float depth, float bias) {\n"
-           "    return 1.0;\n"
-           "}\n"
-           "\n"
-           "// The map's texel `offset` texels from shadowCoord.xy (texmapscale: 1/width, 1/height).\n"
-           "vec4 offset_lookup(sampler2D map, vec3 shadowCoord, vec2 offset) {\n"
-           "    return texture2D(map, shadowCoord.xy);\n"
-           "}\n";
-}
+}  // namespace
 
 std::string snippet_block(std::string_view text, shadow::Encoding e) {
     const SnippetScan scan = scan_snippets(text);
     std::string out = "// The sheet's answer for the functions the snippets leave out.\n";
     for (SnippetFn f : kAllSnippetFns)
-        if (!scan.defines_fn(f)) out += answer_fn(f, e);
+        if (!scan.defines_fn(f)) out += sheet_answer_fn(f, e);
     out += "#line 1 " + std::to_string(kSnippetSourceString) + "\n";
-    out += text;
+    out += ascii_comments(text);
     if (out.empty() || out.back() != '\n') out += '\n';
     out += "#line 1 0\n";
     return out;
@@ -591,37 +540,6 @@ std::vector<SnippetProblem> snippet_log_problems(std::string_view log) {
         while (!text.empty() && (text.back() == '\r' || text.back() == ' ' || text.back() == '\0')) text.pop_back();
         if (!text.empty()) out.push_back({at, text});
     }
-    return out;
-}
-
-std::vector<SnippetMistake> snippet_mistakes(shadow::Encoding e) {
-    const bool r8 = e == shadow::Encoding::R8;
-    std::vector<SnippetMistake> out;
-    out.push_back({"no-bias",
-                   "No bias: the surface shadows itself in stripes (shadow acne). Compare with depth + bias: the "
-                   "stored depth is rounded, so a lit surface reads as slightly behind itself.",
-                   "float shadowTest(float zLight, float depth, float bias) {\n    return zLight > depth ? 0.0 : 1.0;\n}\n"});
-    if (!r8) {
-        out.push_back({"8-bit-threshold",
-                       "The 8-bit threshold 0.005 with bit-shift packing: the packed depth is good to 2^-10, so the "
-                       "sheet's bias is 0.0015; 0.005 lifts the shadow off the teapot's foot.",
-                       "float shadowTest(float zLight, float depth, float bias) {\n"
-                       "    return zLight > depth + 0.005 ? 0.0 : 1.0;\n}\n"});
-        out.push_back({"red-only",
-                       "Only the red channel unpacked: with bit-shift packing red holds the depth's first 8 bits; "
-                       "unpackDepth must add the other channels, each 256 times smaller.",
-                       "float unpackDepth(const in vec4 rgbaDepth) {\n    return rgbaDepth.r;\n}\n"});
-    }
-    out.push_back({"detached",
-                   "A bias so large that the shadow detaches from its caster (peter-panning): the bias should be "
-                   "just over the stored depth's precision.",
-                   "float shadowTest(float zLight, float depth, float bias) {\n"
-                   "    return zLight > depth + 0.05 ? 0.0 : 1.0;\n}\n"});
-    out.push_back({"no-texmapscale",
-                   "Offsets without texmapscale: the offset is in texels, the texture coordinates in [0, 1]; "
-                   "multiply the offset by texmapscale = (1/width, 1/height).",
-                   "vec4 offset_lookup(sampler2D map, vec3 shadowCoord, vec2 offset) {\n"
-                   "    return texture2D(map, shadowCoord.xy + offset);\n}\n"});
     return out;
 }
 

@@ -34,8 +34,10 @@ inline constexpr std::size_t kMaxSnippetBytes = 64 * 1024;
 // The most iterations of one loop, and the deepest loop nesting.
 inline constexpr int kMaxLoopIterations = 16;
 inline constexpr int kMaxLoopDepth = 2;
-// The most steps one call of a contract function may take: 1 per call of a function of the file
-// plus its steps, times the iterations of the loops around the call (the sheet's answer: 1 each).
+// The most steps one call of a contract function may take, counted without compiling: 1, plus 1
+// per loop iteration and per call of a built-in (texture2D, dot, a constructor), plus each call of
+// a function of the file times its own steps, each times the iterations of the loops around it
+// (the sheet's answer: 2 to 4 each). A file within it runs at most 16 x 3 x 256 steps per pixel.
 inline constexpr int kMaxSnippetCost = 256;
 
 // What a snippets file is, found without compiling it: the contract's functions it defines, and
@@ -59,6 +61,7 @@ SnippetScan scan_snippets(std::string_view text);
 // passes the sheet's bias: 0.005 for R8, 0.0015 for RGBA) and the 4x4 lookup's offset_lookup.
 // A starter skeleton: the four signatures with bodies that compile and draw no shadow.
 std::string sheet_answer(shadow::Encoding e);
+std::string sheet_answer_fn(SnippetFn f, shadow::Encoding e);  // one function of it
 std::string snippet_skeleton();
 
 // The GLSL inserted into a LAB variant where pack.glsl marks it: the sheet's answer's functions
