@@ -10,7 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "plan/options.h"
-#include "render/snippets.h"
+#include "plan/snippets.h"
 
 namespace penumbra::tools {
 
