@@ -6,15 +6,17 @@
 //
 //   penumbra-desktop [--exercise NAME] [--size WxH] [--frames N] [--screenshot FILE.png]
 //                    [--resize WxH] [--no-vsync] [-v] [--time T] [--keys KEYS] [--print-title]
-//                    [any option the pages take]
+//                    [--snippets FILE] [any option the pages take]
 //
 // The options the pages take (the exercises' toggles and the technique settings) come from the
 // option tables (examples/exercise_list.h, plan/options.h), as does --help. --frames N stops
 // after N frames (for unattended runs), --screenshot writes the last frame as a PNG (top row
 // first), --resize asks the window for a new size halfway through, --time fixes both clocks
 // (paused), --keys presses keys one a frame from the second (unattended runs, tests), --print-title
-// prints the window's title whenever its controls change and at the end. Bad input gets one line
-// and exit status 2; a GL failure exit status 1.
+// prints the window's title whenever its controls change and at the end. --snippets FILE draws
+// with the shader lab's functions from FILE (docs/snippets.md), read again whenever it is saved:
+// what does not compile is printed at its lines and the last good functions stay (at first, the
+// sheet's answer). Bad input gets one line and exit status 2; a GL failure exit status 1.
 //
 // The window title is the exercise and its controls' state as the page shows it and keeps in its
 // URL (CourseApp::options(): the same names and values), then the ms/frame:
@@ -24,10 +26,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "exercises.h"
+#include "file_watch.h"
 #include "gl/check.h"
 #include "platform/platform.h"
 #include "measure/image_io.h"
@@ -46,6 +52,7 @@ struct Args {
     bool verbose = false;
     std::string keys;  // --keys: pressed one a frame from the second
     bool print_title = false;
+    std::string snippets;  // --snippets FILE
     std::vector<std::pair<std::string, std::string>> options;  // for CourseApp::set_option
 };
 
@@ -108,7 +115,9 @@ void print_help() {
         "  --time T            both clocks at T seconds, paused\n"
         "  --keys KEYS         press these keys, one a frame from the second (letters as typed:\n"
         "                      upper case with Shift; digits, [ ] - = , . and space)\n"
-        "  --print-title       print the window title when its controls change, and at the end\n\n"
+        "  --print-title       print the window title when its controls change, and at the end\n"
+        "  --snippets FILE     the shader lab: packDepth, unpackDepth, shadowTest, offset_lookup from FILE\n"
+        "                      (docs/snippets.md), read again when it is saved (w09p2c)\n\n"
         "as the web pages' controls and URL:\n%s\n%s",
         examples::exercise_names().c_str(), options.c_str(), examples::CourseApp::key_help().c_str());
 }
@@ -162,12 +171,46 @@ Args parse_args(int argc, char** argv) {
                     usage_error("--keys: " + std::string(shown) + " is not a key here (letters, digits, [ ] - = , . and space)");
                 }
             a.keys = value;
+        } else if (name == "snippets") {
+            a.snippets = value;
         } else {
             a.options.emplace_back(name, value);
         }
     }
     if (!a.screenshot.empty() && a.frames == 0) usage_error("--screenshot needs --frames N");
     return a;
+}
+
+// The snippets file's text; a file that cannot be read is bad input (exit status 2) at the start,
+// and said (the last good text kept) when reloading.
+bool read_snippets(const std::string& path, std::string& text) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) return false;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return false;
+    std::stringstream s;
+    s << in.rdbuf();
+    text = s.str();
+    return !in.bad();
+}
+
+// Compiles the file's text into the app's lab and says what came of it.
+void load_snippets(examples::CourseApp& app, const std::string& path, const char* what) {
+    std::string text;
+    if (!read_snippets(path, text)) {
+        std::fprintf(stderr, "penumbra-desktop: snippets: %s: cannot read it; the last good functions stay\n", path.c_str());
+        return;
+    }
+    const auto problems = app.set_snippets(text);
+    for (const auto& p : problems)
+        std::fprintf(stderr, "penumbra-desktop: snippets: %s%s: %s\n", path.c_str(),
+                     p.line > 0 ? (":" + std::to_string(p.line)).c_str() : "", p.message.c_str());
+    if (problems.empty())
+        std::printf("snippets: %s %s\n", path.c_str(), what);
+    else
+        std::printf("snippets: %s does not compile; drawing with %s\n", path.c_str(),
+                    app.snippets().empty() ? "the sheet's answer" : "the last good functions");
+    std::fflush(stdout);
 }
 
 }  // namespace
@@ -183,6 +226,15 @@ int main(int argc, char** argv) {
     for (const auto& [name, value] : args.options) {
         if (const std::string err = app.set_option(name, value); !err.empty()) usage_error("--" + err);
         if (name != "map-size") note();  // a map size is set again, and said, once the context's limit is known
+    }
+
+    if (!args.snippets.empty()) {
+        std::string text;
+        if (!read_snippets(args.snippets, text)) usage_error("--snippets " + args.snippets + ": cannot read it");
+        app.set_lab(true);
+        if (!app.lab_available())
+            usage_error("--snippets: " + render::lab_refusal(render::lab_settings(app.frame_settings())) + " (exercise " +
+                        args.exercise + "; the lab runs on w09p2c)");
     }
 
     std::string error;
@@ -212,6 +264,8 @@ int main(int argc, char** argv) {
     std::printf("%s\n%s\n%s\n%s", window->description().c_str(), app.caps()->summary().c_str(),
                 std::string(app.exercise().title).c_str(), examples::CourseApp::key_help().c_str());
     std::fflush(stdout);
+    examples::FileWatch watch(args.snippets);
+    if (!args.snippets.empty()) load_snippets(app, args.snippets, "compiled");
 
     bool quit = false;
     const auto on_key = [&](const platform::KeyEvent& k) {
@@ -237,6 +291,7 @@ int main(int argc, char** argv) {
         if (quit) return false;
         if (last_t >= 0.0) app.advance(f.time_s - last_t);
         last_t = f.time_s;
+        if (!args.snippets.empty() && watch.changed(f.time_s)) load_snippets(app, args.snippets, "reloaded: compiled");
         if (f.width != last_w || f.height != last_h) {
             if (last_w) std::printf("window resized to %dx%d\n", f.width, f.height);
             last_w = f.width;
