@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs one libFuzzer target of a built fuzz tree: run.sh BUILD_DIR TARGET [libFuzzer flags...]
 # (ctest's fuzz.* pass -max_total_time=60; scripts/fuzz.sh builds first and passes its own).
-# TARGET: gltf, options or query. The corpus grows in BUILD_DIR/fuzz/corpus/TARGET (seeds in
+# TARGET: gltf, options, query or snippets. The corpus grows in BUILD_DIR/fuzz/corpus/TARGET (seeds in
 # BUILD_DIR/fuzz/seeds/TARGET are read, never written); a crash, leak or timeout is written to
 # BUILD_DIR/fuzz/crashes/TARGET/ and fails the run; the log is BUILD_DIR/fuzz/logs/TARGET-*.log.
 set -euo pipefail
@@ -13,7 +13,8 @@ case "$target" in
   gltf) dict=$here/gltf.dict; max_len=8192 ;;
   options) dict=$here/options.dict; max_len=1024 ;;
   query) dict=$here/options.dict; max_len=9000 ;;  # past examples/query.h's kMaxQueryBytes
-  *) echo "run.sh: unknown target '$target' (gltf, options, query)" >&2; exit 2 ;;
+  snippets) dict=$here/snippets.dict; max_len=4096 ;;
+  *) echo "run.sh: unknown target '$target' (gltf, options, query, snippets)" >&2; exit 2 ;;
 esac
 bin=$build/tests/fuzz/fuzz_$target
 [ -x "$bin" ] || { echo "run.sh: $bin not built (cmake --build --preset fuzz)" >&2; exit 2; }
