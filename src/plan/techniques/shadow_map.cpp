@@ -164,7 +164,7 @@ void add_packing(ContentKey& key, const PlanContext& c) {
     key.add(c.settings.encoding);
     key.add(c.settings.map_faces);
     key.add(c.depth_path.mediump);
-    key.add(c.depth_path.lab);
+    if (c.depth_path.lab) key.add(c.depth_path.lab);  // (plans without the lab keep their keys)
 }
 
 // The frame's cascades report (made on first use).
