@@ -1,6 +1,7 @@
 #include "render/lab.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <set>
 
@@ -75,13 +76,17 @@ std::vector<SnippetProblem> set_snippets(Renderer& r, const scene::Scene& scene,
     const Settings ls = lab_settings(s);
     if (std::string why = lab_refusal(ls); !why.empty()) return {{0, why}};
     if (std::string why = r.check(scene, ls, in); !why.empty()) return {{0, why}};
+    // The lab's programs of this frame and of its visibility view (lab_frame's).
     std::vector<Variant> variants;
     std::set<std::string> keys;
-    for (const Pass& p : r.plan(scene, ls, in).passes)
-        for (const Draw& d : p.draws)
-            if (std::find(d.variant.defines.begin(), d.variant.defines.end(), "LAB") != d.variant.defines.end() &&
-                keys.insert(d.variant.key()).second)
-                variants.push_back(d.variant);
+    Settings visibility = ls;
+    visibility.aov = Aov::Visibility;
+    for (const Settings* t : {&ls, static_cast<const Settings*>(&visibility)})
+        for (const Pass& p : r.plan(scene, *t, in).passes)
+            for (const Draw& d : p.draws)
+                if (std::find(d.variant.defines.begin(), d.variant.defines.end(), "LAB") != d.variant.defines.end() &&
+                    keys.insert(d.variant.key()).second)
+                    variants.push_back(d.variant);
     std::vector<std::string> failed = check_variants(variants, std::string(text));
     if (!failed.empty()) return compile_problems(failed);
     r.set_snippets(std::string(text));
