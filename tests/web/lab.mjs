@@ -6,8 +6,8 @@
 // the encoding (typed into the editor) gets its hint's name; broken code typed from the keyboard is
 // marked at its line (gutter, line, message) and the picture keeps the last good frame; the code is
 // in the address and in localStorage: a reload, a visit without the address's code and a fresh
-// browser given the link each restore it; the depth texture is refused and said; Reset gives the
-// skeleton back; closing turns the lab off.
+// browser given the link each restore it; the r8 answer matches too; the depth texture is refused
+// and said; Reset gives the skeleton back; closing turns the lab off.
 import { runTest, openPage, frameAt, compare, check, checkNoGlErrors } from './harness.mjs';
 
 const T = 0.6;  // the page's frame read before and after the broken code (any fixed time would do)
@@ -168,6 +168,18 @@ await runTest('web.lab', async ({ server, browser }) => {
   check(other.problems.length === 0, other.problems.join('; '));
   await other.context.close();
 
+  // The 8-bit encoding: the answer button gives its answer (the depth in the red channel), which
+  // matches there too.
+  check((await page.evaluate(() => window.penumbra.setOption('encoding', 'r8'))) === '', 'encoding=r8 refused');
+  await page.waitForFunction(() => /for r8/.test(document.getElementById('lab-bias').textContent), null, { timeout: 10000 });
+  before = await page.evaluate(() => window.penumbraLab.checks());
+  await page.click('#lab-answer');
+  r = await settle(page, before);
+  const answerR8 = await moduleText(page, 1);
+  check(answerR8 !== answer && (await editorText(page)) === answerR8, 'the answer button did not give the r8 answer');
+  check(r.verdict.matches && r.shown === 'matches', `the r8 answer: ${JSON.stringify(r)}`);
+  check((await page.evaluate(() => window.penumbra.setOption('encoding', 'rgba'))) === '', 'encoding=rgba refused');
+
   // Settings the lab cannot run (the depth texture, where the context has one): said, with the
   // module's reason; back to the page's encoding, the lab runs again.
   if ((await page.evaluate(() => window.penumbra.state())).depthTexture) {
@@ -175,7 +187,7 @@ await runTest('web.lab', async ({ server, browser }) => {
     await page.waitForFunction(() => /off for these settings/.test(document.getElementById('lab-bias').textContent), null,
                                { timeout: 10000 });
     check((await page.evaluate(() => window.penumbra.setOption('encoding', 'rgba'))) === '', 'encoding=rgba refused');
-    await page.waitForFunction(() => /constant bias/.test(document.getElementById('lab-bias').textContent), null,
+    await page.waitForFunction(() => /constant bias for rgba/.test(document.getElementById('lab-bias').textContent), null,
                                { timeout: 10000 });
   }
 

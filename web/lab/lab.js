@@ -34,6 +34,7 @@
   let lastState = '';  // the module's lab state (JSON) at the last poll
   let marks = [];  // the editor's error marks: {line, widget}
   let truth = null;  // {vis, mask}: the truth's visibility and valid pixels, a byte a pixel
+  let truthFailed = false;
   let verdict = null;  // the last check's {…, verdict}
   let checks = 0;  // how many checks ran (the tests wait for the next)
   const el = {};
@@ -194,6 +195,7 @@
       <div class="row">
         <button type="button" id="lab-reset">Reset</button>
         <button type="button" id="lab-answer">Show the sheet's answer</button>
+        <span class="hint">Tab indents; Esc leaves the editor</span>
       </div>
       <div id="lab-editor"></div>
       <p id="lab-status" role="status" aria-live="polite"></p>
@@ -288,12 +290,21 @@
     return n ? (100 * sum) / (255 * n) : null;
   }
 
+  // The error against the truth of the last verdict's images (again once the truth has loaded).
+  function showTruth() {
+    const v = verdict;
+    if (!v) return;
+    v.truthPct = errorVsTruth(v.images[0], v.width, v.height);
+    v.referenceTruthPct = errorVsTruth(v.images[1], v.width, v.height);
+    el['lab-truth'].textContent = v.truthPct !== null
+      ? v.truthPct.toFixed(2) + ' % (the sheet\'s answer: ' + v.referenceTruthPct.toFixed(2) + ' %)'
+      : !v.compiles ? '–' : truthFailed ? 'the truth image did not load' : 'loading the truth…';
+  }
+
   function check(text) {
     const v = runCheck(text);
     ++checks;
     v.verdict = !v.compiles ? 'error' : v.matches ? 'matches' : v.mistake ? 'mistake' : 'differs';
-    v.truthPct = errorVsTruth(v.images[0], v.width, v.height);
-    v.referenceTruthPct = errorVsTruth(v.images[1], v.width, v.height);
     verdict = v;
     const out = el['lab-verdict'];
     out.dataset.verdict = v.verdict;
@@ -301,7 +312,7 @@
     if (v.verdict === 'error') {
       out.textContent = 'Not checked: ' + v.problems.map((p) => p.message).join('; ');
     } else if (v.verdict === 'matches') {
-      out.textContent = 'Matches the sheet\'s answer. ' + (v.hint || '');
+      out.textContent = v.hint || 'Matches the sheet\'s answer.';
     } else if (v.verdict === 'mistake') {
       out.textContent = 'Looks like a classic mistake (' + v.mistake + '): ' + v.hint;
     } else {
@@ -311,8 +322,7 @@
       draw(el[id], v.images[i], v.width, v.height);
     el['lab-differing'].textContent = v.compiles
       ? (+v.differingPct.toFixed(3)) + ' % of ' + v.width + ' x ' + v.height + ' pixels' : '–';
-    el['lab-truth'].textContent = v.truthPct === null ? (truth ? '–' : 'the truth image did not load')
-      : v.truthPct.toFixed(2) + ' % (the sheet\'s answer: ' + v.referenceTruthPct.toFixed(2) + ' %)';
+    showTruth();
     return v;
   }
 
@@ -355,10 +365,14 @@
         await Promise.all([loadCss('lab/codemirror.css'), loadCss('lab/lab.css'), loadScript('lab/codemirror.js')]);
         await loadScript('lab/clike.js');  // the GLSL mode needs CodeMirror loaded
         build();
-        loadImage('lab/truth-visibility.png').then(async (vis) => {
-          truth = { vis, mask: await loadImage('lab/truth-mask.png') };
-          if (verdict && verdict.compiles && lastGood !== null) check(lastGood);
-        }).catch((e) => console.warn('penumbra lab: ' + e.message));
+        Promise.all([loadImage('lab/truth-visibility.png'), loadImage('lab/truth-mask.png')]).then(([vis, mask]) => {
+          truth = { vis, mask };
+          showTruth();
+        }).catch((e) => {
+          truthFailed = true;
+          showTruth();
+          console.warn('penumbra lab: ' + e.message);
+        });
       })();
     }
     return built;
@@ -382,7 +396,8 @@
       editor = window.CodeMirror(el['lab-editor'], {
         value: text, mode: 'x-shader/x-fragment', lineNumbers: true, indentUnit: 4,
         gutters: ['CodeMirror-linenumbers', 'lab-errors'], viewportMargin: Infinity,
-        extraKeys: { Tab: (cm) => cm.replaceSelection('    ') },
+        // Tab indents; Esc leaves the editor, so that Tab moves on from there (keyboard users).
+        extraKeys: { Tab: (cm) => cm.replaceSelection('    '), Esc: (cm) => cm.getInputField().blur() },
       });
       editor.on('changes', () => {
         clearTimeout(timer);
