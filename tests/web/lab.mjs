@@ -4,11 +4,12 @@
 // (CodeMirror) shows line numbers and GLSL highlighting and starts on the skeleton; the sheet's
 // answer, put in by its button, is checked as matching the sheet's answer, each classic mistake of
 // the encoding (typed into the editor) gets its hint's name; broken code typed from the keyboard is
-// marked at its line (gutter, line, message) and the picture keeps the last good frame; the code is
-// in the address and in localStorage: a reload, a visit without the address's code and a fresh
-// browser given the link each restore it; the r8 answer matches too; the depth texture is refused
-// and said; Reset gives the skeleton back; closing turns the lab off.
-import { runTest, openPage, frameAt, compare, check, checkNoGlErrors } from './harness.mjs';
+// marked at its line (gutter, line, message) and the picture keeps the last good frame, also after
+// a lost and restored context; the code is in the address and in localStorage: a reload, a visit
+// without the address's code and a fresh browser given the link each restore it; the r8 answer
+// matches too; the depth texture is refused and said; Reset gives the skeleton back; closing turns
+// the lab off.
+import { runTest, openPage, frameAt, compare, check, checkNoGlErrors, loseAndRestore } from './harness.mjs';
 
 const T = 0.6;  // the page's frame read before and after the broken code (any fixed time would do)
 
@@ -139,6 +140,9 @@ await runTest('web.lab', async ({ server, browser }) => {
   check(/keeps your last code/.test(r.status), `the status says "${r.status}"`);
   const kept = compare(good, await frameAt(page, T));
   check(kept.differing === 0, `the frame after the broken code differs from the last good one in ${kept.differing} pixels`);
+  // A lost and restored context: the lab's frame (the last good code) drawn again, pixel for pixel.
+  await loseAndRestore(page);
+  check(compare(good, await frameAt(page, T)).differing === 0, 'after a context restore the lab\'s frame is not the last good one');
 
   // Kept: a reload (the address's code), then the page without it (localStorage).
   const hash = new URL(page.url()).hash;
