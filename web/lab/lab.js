@@ -329,8 +329,8 @@
   }
 
   // Compiles the editor's text into the renderer's programs and keeps it; the check (up to seven
-  // frames drawn and read back: 0.7 s on SwiftShader, the compile 40 ms) follows once the typing has paused
-  // a little longer, so a student who goes on typing is not held up by it.
+  // frames drawn and read back: 0.7 s on SwiftShader, the compile 40 ms) follows once the typing
+  // has paused a little longer, so a student who goes on typing is not held up by it.
   function compileNow() {
     clearTimeout(timer);
     timer = null;
