@@ -63,6 +63,14 @@ def main() -> None:
     for name, wr, wg, jr, jg, tr, tg in rows:
         print(f"  {name:<14} {wr:>10} {wg:>10} {jr:>10} {jg:>10} {wr + jr:>12} {wg + jg:>11} {tr:>10} {tg:>10}")
     print("  (bytes; 'all' adds the page's HTML and CSS)")
+    # The shader lab's files (lab/: its script and style, the editor's), which a page loads only
+    # when the lab's panel opens: not in any page's figures above.
+    lab = sorted(f for f in (site / "lab").glob("*") if f.suffix in (".js", ".css")) if (site / "lab").is_dir() else []
+    if lab:
+        raw = sum(sizes(f)[0] for f in lab)
+        gz = sum(sizes(f)[1] for f in lab)
+        names = ", ".join(f.name for f in lab)
+        print(f"  the shader lab's panel, loaded when opened: {raw} B raw, {gz} B gzipped ({names})")
 
 
 if __name__ == "__main__":

@@ -19,6 +19,8 @@
 #include "gl/check.h"
 #include "plan/json.h"
 #include "platform/platform.h"
+#include "render/lab.h"
+#include "render/snippets.h"
 #include "shadow/encoding.h"
 
 using namespace penumbra;
@@ -39,6 +41,7 @@ struct WebApp {
     bool lost = false;
     std::vector<std::uint8_t> pixels;
     std::string text;  // the last string handed to JavaScript
+    render::LabVerdict lab_verdict;  // the shader lab's last check (its images: penumbra_lab_image)
 };
 WebApp* g = nullptr;
 constexpr double kRestoredSeconds = 3.0;  // how long the status says the context was restored
@@ -113,6 +116,15 @@ void on_context(platform::ContextEvent e) {
 const char* hand(std::string s) {
     g->text = std::move(s);
     return g->text.c_str();
+}
+
+// A snippets file's problems as JSON: [{"line":N,"message":"..."}, ...].
+std::string problems_json(const std::vector<render::SnippetProblem>& problems) {
+    std::string j = "[";
+    for (std::size_t i = 0; i < problems.size(); ++i)
+        j += std::string(i ? "," : "") + "{\"line\":" + std::to_string(problems[i].line) +
+             ",\"message\":" + render::json_quote(problems[i].message) + "}";
+    return j + "]";
 }
 
 }  // namespace
@@ -281,6 +293,99 @@ const char* penumbra_plan_json() { return hand(g && g->app ? g->app->last_plan_j
 // The wasm heap's bytes in use (malloc's allocated blocks; Module.HEAP8.length is the whole heap):
 // the soak (tests/web/soak.mjs) watches it for leaks.
 unsigned long penumbra_heap_used() { return static_cast<unsigned long>(mallinfo().uordblks); }
+
+// ---- the shader lab (docs/pages.md, docs/snippets.md: web/lab/lab.js) ------------------------------
+// Whether the frame's settings fit the lab, and if not why (render::lab_refusal); whether it is on;
+// the encoding whose answer it checks against and the constant bias it draws with.
+const char* penumbra_lab_state() {
+    if (!g || !g->app) return hand("{}");
+    using render::json_bool;
+    using render::json_quote;
+    const render::Settings s = g->app->frame_settings();
+    const render::Settings lab = render::lab_settings(s);
+    std::string j = "{\"available\":" + json_bool(g->app->lab_available());
+    j += ",\"refusal\":" + json_quote(render::lab_refusal(lab));
+    j += ",\"on\":" + json_bool(g->app->lab());
+    j += ",\"encoding\":" + json_quote(shadow::to_string(s.encoding));
+    j += ",\"bias\":" + render::json_number(static_cast<double>(lab.effective_bias()));
+    j += "}";
+    return hand(j);
+}
+// Frames drawn with the lab's snippets (1) or the renderer's own code (0).
+void penumbra_lab_enable(int on) {
+    if (g && g->app) g->app->set_lab(on != 0);
+}
+// The student's text into the renderer's programs: {"ok":true,"problems":[]}, or ok false and the
+// problems at the student's lines (the last good snippets stay, so does the frame).
+const char* penumbra_lab_set(const char* text) {
+    if (!g || !g->app) return hand("{\"ok\":false,\"problems\":[{\"line\":0,\"message\":\"the module is not running\"}]}");
+    std::vector<render::SnippetProblem> problems;
+    try {
+        problems = g->app->set_snippets(text ? text : "");
+    } catch (const std::exception& e) {
+        problems.push_back({0, e.what()});
+    }
+    return hand("{\"ok\":" + render::json_bool(problems.empty()) + ",\"problems\":" + problems_json(problems) + "}");
+}
+// The text the panel offers: 0 the starter skeleton, 1 the sheet's answer for the encoding in use.
+const char* penumbra_lab_text(int which) {
+    if (which == 1 && g && g->app) return hand(render::sheet_answer(g->app->frame_settings().encoding));
+    return hand(render::snippet_skeleton());
+}
+// The classic mistakes for the encoding in use: [{"name","hint","text"}, ...].
+const char* penumbra_lab_mistakes() {
+    if (!g || !g->app) return hand("[]");
+    std::string j = "[";
+    bool first = true;
+    for (const auto& m : render::snippet_mistakes(g->app->frame_settings().encoding)) {
+        j += std::string(first ? "" : ",") + "{\"name\":" + render::json_quote(m.name) +
+             ",\"hint\":" + render::json_quote(m.hint) + ",\"text\":" + render::json_quote(m.text) + "}";
+        first = false;
+    }
+    return hand(j + "]");
+}
+// The verdict on `text` at time t (both clocks; they are put back after) at width x height: JSON
+// with compiles, problems, width, height, differingPct, mistake and hint; the three visibility
+// images (RGBA8, top row first) from penumbra_lab_image.
+const char* penumbra_lab_check(const char* text, int width, int height, double t) {
+    if (!g || !g->app || !g->app->has_gl() || g->lost) return hand("{\"compiles\":false,\"problems\":[{\"line\":0,\"message\":\"no WebGL context\"}]}");
+    auto& a = *g->app;
+    const double light = a.light_time();
+    const bool paused = a.paused();
+    a.set_time(t);
+    try {
+        g->lab_verdict = a.lab_check(text ? text : "", width, height);
+    } catch (const std::exception& e) {
+        g->lab_verdict = render::LabVerdict{};
+        g->lab_verdict.problems.push_back({0, e.what()});
+    }
+    // The clocks back: one time for both (CourseApp sets no other), the light's; when the jump's
+    // had stopped apart from it (jump off), the teapot comes down again on the next frames.
+    a.set_time(light);
+    a.set_paused(paused);
+    const auto& v = g->lab_verdict;
+    using render::json_bool;
+    using render::json_number;
+    using render::json_quote;
+    std::string j = "{\"compiles\":" + json_bool(v.compiles) + ",\"problems\":" + problems_json(v.problems);
+    j += ",\"width\":" + std::to_string(v.width) + ",\"height\":" + std::to_string(v.height);
+    j += ",\"differingPct\":" + json_number(v.differing_pct) + ",\"mistake\":" + json_quote(v.mistake);
+    // The share of differing pixels up to which a frame still matches the sheet's answer's (render/lab.h).
+    j += ",\"matchPct\":" + json_number(render::kLabMatchPct);
+    j += ",\"matches\":" + json_bool(v.compiles && v.differing_pct <= render::kLabMatchPct);
+    j += ",\"hint\":" + json_quote(v.hint) + "}";
+    return hand(j);
+}
+// The last check's images: 0 the student's visibility, 1 the sheet's answer's, 2 the difference;
+// null when it has none (it did not compile).
+const std::uint8_t* penumbra_lab_image(int which) {
+    if (!g) return nullptr;
+    const auto& v = g->lab_verdict;
+    const std::vector<std::uint8_t>& img = which == 0 ? v.student : which == 1 ? v.reference : v.difference;
+    return img.size() == static_cast<std::size_t>(v.width) * static_cast<std::size_t>(v.height) * 4 && !img.empty()
+               ? img.data()
+               : nullptr;
+}
 
 }  // extern "C"
 

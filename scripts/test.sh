@@ -10,10 +10,12 @@ cd "$(dirname "$0")/.."
 start=$(date +%s)
 cmake --preset ci >/dev/null
 cmake --build --preset ci
+# The npm packages first: the web build copies the shader lab's editor from node_modules/codemirror.
+{ [ -d node_modules/playwright-core ] && [ -d node_modules/three ] && [ -d node_modules/codemirror ]; } ||
+  npm ci --no-audit --no-fund --loglevel=error
 # The web pages once (Emscripten; prints each page's payload); the web.* tests load build-web/site.
 cmake --preset web >/dev/null
 cmake --build --preset web
-{ [ -d node_modules/playwright-core ] && [ -d node_modules/three ]; } || npm ci --no-audit --no-fund --loglevel=error
 ctest --preset ci
 if [ "${PENUMBRA_SKIP_FUZZ:-0}" != 1 ]; then
   echo "== the fuzz targets, 60 s each (build-fuzz; scripts/fuzz.sh for long runs) =="

@@ -127,6 +127,23 @@ def fly_html(exercise: dict) -> str:
             "    </fieldset>\n")
 
 
+# The pages with the shader lab (docs/pages.md, docs/snippets.md): the sheet's shadow-map code
+# (packDepth, unpackDepth, shadowTest, offset_lookup) fits W09P2c, whose controls hold the encoding
+# and the 4x4 PCF the lab's snippets replace.
+LAB_EXERCISES = {"w09p2c"}
+
+
+def lab_html(exercise: dict) -> str:
+    """The shader lab's button and its (empty) panel: web/lab/lab.js and the editor are loaded and
+    the panel filled only when the button is pressed (or the address holds #lab=...)."""
+    if exercise["name"] not in LAB_EXERCISES:
+        return ""
+    return ('    <fieldset id="lab-open-row">\n      <legend>Shader lab</legend>\n'
+            '      <div class="row"><button type="button" id="lab-open" aria-expanded="false" aria-controls="lab">'
+            'Shader lab</button>\n        <span class="hint">write the sheet\'s shader code; it is checked</span></div>\n'
+            '    </fieldset>\n')
+
+
 def write_if_changed(path: pathlib.Path, text: str) -> None:
     if not path.exists() or path.read_text() != text:
         path.write_text(text)
@@ -143,7 +160,9 @@ def main() -> None:
         write_if_changed(out / f'{ex["name"]}.html', page.substitute(
             name=ex["name"], title=esc(ex["title"]), text=esc(ex["text"]), look_for=esc(ex["lookFor"]),
             canvas=esc(ex["canvas"]),
-            controls=controls_html(ex, catalog["options"]), fly=fly_html(ex)))
+            controls=controls_html(ex, catalog["options"]), fly=fly_html(ex), lab=lab_html(ex),
+            lab_panel=('<section class="lab" id="lab" aria-label="Shader lab" hidden></section>\n'
+                       if ex["name"] in LAB_EXERCISES else "")))
         thumb = ""
         if (web / "thumbs" / f'{ex["name"]}.png').exists():
             thumb = (f'<a href="{ex["name"]}.html" tabindex="-1" aria-hidden="true"><img src="thumbs/{ex["name"]}.png" '

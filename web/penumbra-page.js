@@ -23,6 +23,8 @@
 //                                                 camera goes into the URL (camera=x,y,z,yaw,pitch)
 //   #cascade-plan                                 the last frame plan's cascade or cube face lines, where it has them
 //                                                 (read from the plans' JSON: penumbra_plan_json)
+//   #lab-open, #lab                               the shader lab (W09P2c): lab/lab.js, loaded when the
+//                                                 button is pressed or the address holds #lab=...
 'use strict';
 
 (function () {
@@ -393,6 +395,7 @@
     const problems = notes ? notes.split('\n') : [];
     bindControls();
     bindFly();
+    bindLab();
     syncControls();
     updateUrl();
     if (problems.length) {
@@ -416,6 +419,29 @@
       return;
     }
     requestAnimationFrame(watchFirstFrame);
+  }
+
+  // The shader lab (docs/pages.md): its script, editor and style are loaded only when the button is
+  // pressed or the address holds #lab=... (lab/lab.js fills #lab), so a page that never opens it
+  // downloads and runs none of it.
+  const labButton = document.getElementById('lab-open');
+  let labLoaded = null;
+  function lab() {
+    if (!labLoaded) {
+      labLoaded = new Promise((resolve, reject) => {
+        const s = document.createElement('script');
+        s.src = 'lab/lab.js';
+        s.onload = () => resolve(window.penumbraLab);
+        s.onerror = () => reject(new Error('lab/lab.js did not load'));
+        document.head.appendChild(s);
+      });
+    }
+    return labLoaded;
+  }
+  function bindLab() {
+    if (!labButton) return;
+    labButton.addEventListener('click', () => lab().then((l) => l.toggle()));
+    if (/^#lab=/.test(location.hash)) lab().then((l) => l.open());
   }
 
   function toBase64(bytes) {
@@ -465,6 +491,8 @@
       Module._penumbra_reset_camera();
       cameraMoved(true);
     },
+    // The shader lab's object (lab/lab.js: window.penumbraLab), loaded if it was not: a promise.
+    lab: () => lab(),
     // The first frame's time after navigation start (ms), null until it is drawn.
     firstFrameMs: () => firstFrameMs,
     // Fixes the backing store at w x h pixels (the tests compare with 512x512 renders); no
