@@ -521,8 +521,10 @@ std::vector<SnippetProblem> snippet_log_problems(std::string_view log) {
             if (sep != ':' && sep != '(') continue;
             size_t k = j + 1;
             int n = 0;
-            while (k < line.size() && std::isdigit(static_cast<unsigned char>(line[k]))) n = n * 10 + (line[k++] - '0');
-            if (k == j + 1 || n <= 0) continue;
+            // A line number of at most 7 digits (a snippets file has fewer lines than bytes).
+            while (k < line.size() && std::isdigit(static_cast<unsigned char>(line[k])) && n < 10000000)
+                n = n * 10 + (line[k++] - '0');
+            if (k == j + 1 || n <= 0 || (k < line.size() && std::isdigit(static_cast<unsigned char>(line[k])))) continue;
             if (sep == '(' && (k >= line.size() || line[k] != ')')) continue;
             at = n;
             msg = k;

@@ -195,3 +195,11 @@ TEST(Snippets, TheSheetsPackingReadsSomeDepthsNearerThanItsBias) {
         EXPECT_GT(shadow::sheet_unpack_rgba(shadow::sheet_pack_rgba(z, shadow::UnormRounding::Round)) - z, -0.0015) << z;
     }
 }
+
+TEST(Snippets, ALogsLineNumberPastSevenDigitsIsNoLine) {
+    // fuzz.snippets found an int overflow here: "7:" and a run of digits.
+    const auto p = render::snippet_log_problems("7:33333333333333333333: error: x\n7:9999999: error: y\n");
+    ASSERT_EQ(p.size(), 2u);
+    EXPECT_EQ(p[0].line, 0);
+    EXPECT_EQ(p[1].line, 9999999);
+}
