@@ -344,25 +344,18 @@ const char* penumbra_lab_mistakes() {
     }
     return hand(j + "]");
 }
-// The verdict on `text` at time t (both clocks; they are put back after) at width x height: JSON
+// The verdict on `text` with the scene at time t (the clocks do not move) at width x height: JSON
 // with compiles, problems, width, height, differingPct, mistake and hint; the three visibility
 // images (RGBA8, top row first) from penumbra_lab_image.
 const char* penumbra_lab_check(const char* text, int width, int height, double t) {
     if (!g || !g->app || !g->app->has_gl() || g->lost) return hand("{\"compiles\":false,\"problems\":[{\"line\":0,\"message\":\"no WebGL context\"}]}");
     auto& a = *g->app;
-    const double light = a.light_time();
-    const bool paused = a.paused();
-    a.set_time(t);
     try {
-        g->lab_verdict = a.lab_check(text ? text : "", width, height);
+        g->lab_verdict = a.lab_check(text ? text : "", width, height, t);
     } catch (const std::exception& e) {
         g->lab_verdict = render::LabVerdict{};
         g->lab_verdict.problems.push_back({0, e.what()});
     }
-    // The clocks back: one time for both (CourseApp sets no other), the light's; when the jump's
-    // had stopped apart from it (jump off), the teapot comes down again on the next frames.
-    a.set_time(light);
-    a.set_paused(paused);
     const auto& v = g->lab_verdict;
     using render::json_bool;
     using render::json_number;

@@ -362,7 +362,7 @@ std::vector<render::SnippetProblem> CourseApp::set_snippets(std::string_view tex
     return problems;
 }
 
-render::LabVerdict CourseApp::lab_check(std::string_view text, int width, int height) {
+render::LabVerdict CourseApp::lab_check(std::string_view text, int width, int height, double t) {
     render::LabVerdict v;
     if (!renderer_) {
         v.problems = {{0, "no GL context"}};
@@ -372,7 +372,7 @@ render::LabVerdict CourseApp::lab_check(std::string_view text, int width, int he
         v.problems = {{0, render::lab_refusal(render::lab_settings(frame_settings()))}};
         return v;
     }
-    scene::animate_course(course_, clock_.light, clock_.jump);
+    scene::animate_course(course_, t, t);  // the next draw() puts the scene back at the clocks'
     course_.scene.camera = scene_camera_;
     v = render::lab_check(*renderer_, course_.scene, frame_settings(), text, render::offscreen(width, height));
     if (v.compiles) snippets_ = std::string(text);

@@ -156,9 +156,10 @@ public:
     // problems, else the frames use it from now on. On a problem the last good text stays.
     std::vector<render::SnippetProblem> set_snippets(std::string_view text);
     const std::string& snippets() const { return snippets_; }  // the last good text ("" = the sheet's answer)
-    // The verdict on `text` (render::lab_check) at the current frame's time and settings, drawn
-    // offscreen at width x height; `text` becomes the snippets when it compiles.
-    render::LabVerdict lab_check(std::string_view text, int width, int height);
+    // The verdict on `text` (render::lab_check) with the current frame's settings at time `t`
+    // (both clocks' place; the clocks themselves do not move), drawn offscreen at width x height;
+    // `text` becomes the snippets when it compiles.
+    render::LabVerdict lab_check(std::string_view text, int width, int height, double t);
 
     // Desktop keys: the help text, and one key's action. Returns a line saying what changed,
     // or "" when the key means nothing here.
