@@ -20,7 +20,7 @@
 #include "plan/json.h"
 #include "platform/platform.h"
 #include "render/lab.h"
-#include "render/snippets.h"
+#include "plan/snippets.h"
 #include "shadow/encoding.h"
 
 using namespace penumbra;
