@@ -89,7 +89,7 @@ std::vector<SnippetMistake> snippet_mistakes(shadow::Encoding e) {
     if (!r8) {
         out.push_back({"8-bit-threshold",
                        "The 8-bit threshold 0.005 with bit-shift packing: the packed depth is good to 2^-10, so the "
-                       "sheet's bias is 0.0015; 0.005 lifts the shadow off the teapot's foot.",
+                       "sheet's bias is 0.0015. 0.005 pulls each shadow back from where its caster meets the receiver.",
                        "float shadowTest(float zLight, float depth, float bias) {\n"
                        "    return zLight > depth + 0.005 ? 0.0 : 1.0;\n}\n"});
         out.push_back({"red-only",

@@ -1,5 +1,5 @@
-// web.lab, on W09P2c with 4x4 PCF (offset_lookup is called only by the PCF lookup: with the hard
-// filter no-texmapscale's frame is the answer's): the shader lab's panel (web/lab/lab.js,
+// web.lab, on W09P2c with 4x4 PCF (the hard filter calls offset_lookup with the offset (0, 0) only:
+// there no-texmapscale's frame is the answer's): the shader lab's panel (web/lab/lab.js,
 // docs/pages.md). Its files are not requested until the "Shader lab" button is pressed; the editor
 // (CodeMirror) shows line numbers and GLSL highlighting and starts on the skeleton; the sheet's
 // answer, put in by its button, is checked as matching the sheet's answer, each classic mistake of

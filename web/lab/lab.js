@@ -318,7 +318,7 @@
     } else if (v.verdict === 'mistake') {
       out.textContent = 'Looks like a classic mistake (' + v.mistake + '): ' + v.hint;
     } else {
-      out.textContent = 'Differs from the sheet\'s answer. ' + (v.hint || '');
+      out.textContent = v.hint || 'Differs from the sheet\'s answer.';
     }
     for (const [i, id] of [[0, 'lab-student'], [1, 'lab-reference'], [2, 'lab-difference']])
       draw(el[id], v.images[i], v.width, v.height);
