@@ -179,6 +179,14 @@ public:
         if (!problems_.empty()) return;
         functions(scan);
         if (!problems_.empty()) return;
+        // Every loop must lie in a function the scan read, or its count and cost go unchecked.
+        for (size_t i = 0; i < t_.size(); ++i)
+            if (t_[i].text == "for" && std::none_of(fns_.begin(), fns_.end(), [&](const Function& f) {
+                    return i >= f.body_begin && i < f.body_end;
+                })) {
+                problem(i, "a loop outside a function of a built-in return type");
+                return;
+            }
         std::map<std::string, std::vector<Call>> calls;
         for (const Function& f : fns_) calls[f.name] = loops(f);
         if (!problems_.empty()) return;
@@ -214,6 +222,10 @@ private:
                 problem(i, "a " + k.text + " loop: GLSL ES 1.00 (appendix A) allows only for loops with constant bounds");
             else if (k.text == "out" || k.text == "inout")
                 problem(i, "an " + k.text + " parameter: the lab's functions return their result");
+            else if (k.text == "struct")
+                // (a function returning one would also escape the loop and cost checks, which look
+                // at the functions whose return type is a built-in one)
+                problem(i, "a struct: the lab's functions take and return the sheet's types");
             else if (k.text == "discard")
                 problem(i, "discard: the lab's functions return a value, they do not drop the pixel");
             else if (k.text == "texmapscale" && i > 0 && type_name(at(i - 1).text))

@@ -46,7 +46,7 @@ inline constexpr int kMaxSnippetCost = 256;
 // renderer keeps: u_*, a_*, v_*, g_*, gl_* other than the built-in functions, penumbra*; a `while`
 // or `do` loop; a `for` loop whose bounds are not literal numbers or that runs more than
 // kMaxLoopIterations times or assigns its index; loops nested deeper than kMaxLoopDepth; an out
-// or inout parameter; discard; recursion; a contract function costing more than kMaxSnippetCost;
+// or inout parameter; discard; a struct; recursion; a contract function costing more than kMaxSnippetCost;
 // a contract function with another signature). Never throws.
 struct SnippetScan {
     std::vector<SnippetFn> defines;        // in kAllSnippetFns order

@@ -82,6 +82,8 @@ TEST(Snippets, RefusesWhatWouldReachIntoTheRenderersShader) {
     expect_refused("float shadowTest(float z, float d, float b) { discard; }\n", 1, "discard");
     expect_refused("void set(out float x) { x = 1.0; }\n", 1, "out parameter");
     expect_refused("vec2 texmapscale;\n", 1, "texmapscale");
+    // A function returning a struct would be no function the loop checks see.
+    expect_refused("struct S { float x; };\nS f() { S s; for (int i = 0; i < 4; i += 0) s.x = 1.0; return s; }\n", 1, "struct");
 }
 
 TEST(Snippets, RefusesTextThatIsNotPrintableAsciiOrTooLong) {
