@@ -153,6 +153,14 @@ int run_grade(const GradeOptions& o) {
         truth_valid.insert(truth_valid.end(), valid.begin(), valid.end());
     }
 
+    // The visibility's red channel, and its mean absolute error against the truth (%).
+    const auto vs_truth = [&](const std::vector<std::uint8_t>& rgba) {
+        std::vector<std::uint8_t> red(rgba.size() / 4);
+        for (size_t i = 0; i < red.size(); ++i) red[i] = rgba[4 * i];
+        return measure::score(red, truth_lit, truth_valid).mae_pct;
+    };
+    const double answer_truth = vs_truth(ref.answer);
+
     std::vector<Row> rows;
     for (size_t k = 0; k < files.size(); ++k) {
         Row row;
@@ -186,9 +194,7 @@ int run_grade(const GradeOptions& o) {
         row.differing = v.differing_pct;
         row.mistake = v.mistake;
         row.hint = v.hint;
-        std::vector<std::uint8_t> red(student.size() / 4);
-        for (size_t i = 0; i < red.size(); ++i) red[i] = student[4 * i];
-        row.truth = measure::score(red, truth_lit, truth_valid).mae_pct;
+        row.truth = vs_truth(student);
         // The middle frame and its difference from the answer's, for the report.
         const size_t frame = static_cast<size_t>(w) * static_cast<size_t>(h) * 4;
         const std::vector<std::uint8_t> diff(v.difference.begin() + static_cast<std::ptrdiff_t>(frame),
@@ -204,12 +210,13 @@ int run_grade(const GradeOptions& o) {
     // The report, then the CSV: each written whole or not at all.
     std::string page = "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>penumbra grade: " + html(o.dir) +
                        "</title>\n<style>body{font-family:sans-serif;margin:1.5em}td,th{border-bottom:1px solid #ccc;"
-                       "padding:.4em;vertical-align:top;text-align:left}.no{color:#b00}img{image-rendering:pixelated}"
+                       "padding:.4em;vertical-align:top;text-align:left}.no{color:#b00}img{image-rendering:pixelated;border:1px solid #999}"
                        "</style></head><body>\n<h1>Snippets of " + html(o.dir) + "</h1>\n<p>Each file compiled into "
                        "the renderer's shaders (docs/snippets.md) and drawn on the course scene at t = 0.3, 0.6 and 1.2 s, " +
                        std::to_string(w) + "x" + std::to_string(h) + ", encoding " + html(o.encoding) + ", filter " +
                        html(o.filter) + ". <b>Differing</b>: pixels whose visibility differs from the sheet's answer's; "
-                       "<b>vs truth</b>: mean absolute error of the visibility against the ray-traced hard shadow. "
+                       "<b>vs truth</b>: mean absolute error of the visibility against the ray-traced hard shadow (the sheet's answer: " +
+                       pct(answer_truth) + " %; docs/snippets.md says why it is not 0). "
                        "The images are the frame at t = 0.6 s and its difference from the answer's (red: darker, green: "
                        "lighter).</p>\n<table><tr><th>file</th><th>compiles</th><th>differing %</th><th>vs truth %</th>"
                        "<th>frame</th><th>difference</th><th>hint or error</th></tr>\n";
