@@ -13,7 +13,7 @@ void main() {
     if (materialAlpha(v_uv) < u_alpha_cutoff) discard;
 #endif
 #if defined(LAB)
-    // The shader lab: the sheet's packing, as written (render/snippets.h).
+    // The shader lab: the sheet's packing, as written (plan/snippets.h).
     gl_FragColor = packDepth(gl_FragCoord.z);
 #elif defined(ENC_R8)
     // 8 bits in red: the sheet's first shadow map.

@@ -149,7 +149,7 @@ float shadowDepth(vec2 uv) {
 #endif
 
 #ifdef LAB
-// The shader lab: the sheet's test on the sheet's lookup (render/snippets.h), one 2D map.
+// The shader lab: the sheet's test on the sheet's lookup (plan/snippets.h), one 2D map.
 float litAt(vec2 uv, float z, float bias) {
     return shadowTest(z, unpackDepth(offset_lookup(u_shadow_map, vec3(uv, z), vec2(0.0))), bias);
 }
