@@ -24,32 +24,15 @@ else echo "FAIL broken: no message at its line: $(cat "$out/broken.err")"; fail=
 run no_bias --snippets "$data/no_bias.glsl" || { echo "FAIL no_bias: $(cat "$out/no_bias.err")"; fail=1; }
 # The broken file's window draws the sheet's answer: as answer.glsl's frame (a few rounding pixels
 # allowed: two programs, GLSL ES 1.00 4.6.1), and not as no_bias.glsl's (the control).
-python3 - "$out/answer.png" "$out/broken.png" "$out/no_bias.png" <<'PY' || fail=1
-import sys, struct, zlib
-sys.path.insert(0, "$here")
-def read(path):
-    d = open(path, "rb").read(); pos = 8; idat = b""; w = h = 0
-    while pos < len(d):
-        n, kind = struct.unpack(">I4s", d[pos:pos + 8]); body = d[pos + 8:pos + 8 + n]; pos += 12 + n
-        if kind == b"IHDR": w, h, depth, colour = struct.unpack(">IIBB", body[:10])
-        elif kind == b"IDAT": idat += body
-    ch = {0: 1, 2: 3, 6: 4}[colour]; raw = zlib.decompress(idat); s = w * ch; out = bytearray(); prev = bytearray(s); p = 0
-    for y in range(h):
-        f = raw[p]; p += 1; line = bytearray(raw[p:p + s]); p += s
-        for x in range(s):
-            a = line[x - ch] if x >= ch else 0; b = prev[x]; c = prev[x - ch] if x >= ch else 0
-            if f == 1: line[x] = (line[x] + a) & 255
-            elif f == 2: line[x] = (line[x] + b) & 255
-            elif f == 3: line[x] = (line[x] + (a + b) // 2) & 255
-            elif f == 4:
-                q = a + b - c; pa, pb, pc = abs(q - a), abs(q - b), abs(q - c)
-                line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        out += line; prev = line
-    return w * h, ch, out
+python3 - "$here" "$out/answer.png" "$out/broken.png" "$out/no_bias.png" <<'PY' || fail=1
+import sys
+sys.path.insert(0, sys.argv[1])
+from check_png import read_rgb
 def differ(a, b):
-    n, ca, x = read(a); _, cb, y = read(b)
-    return 100.0 * sum(1 for i in range(n) if abs(x[i * ca] - y[i * cb]) > 1) / n
-same, control = differ(sys.argv[1], sys.argv[2]), differ(sys.argv[1], sys.argv[3])
+    w, h, x = read_rgb(a)
+    _, _, y = read_rgb(b)
+    return 100.0 * sum(1 for i in range(w * h) if abs(x[3 * i] - y[3 * i]) > 1) / (w * h)
+same, control = differ(sys.argv[2], sys.argv[3]), differ(sys.argv[2], sys.argv[4])
 ok = same <= 0.1 and control > 1.0
 print(("ok" if ok else "FAIL") + f" frames: broken vs answer {same:.3f} % of pixels differ, no_bias vs answer {control:.3f} %")
 sys.exit(0 if ok else 1)
