@@ -3,9 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
-#include <functional>
-#include <map>
-#include <set>
 
 namespace penumbra::render {
 
@@ -124,10 +121,12 @@ bool reserved_name(const std::string& n) {
 }
 
 bool type_name(const std::string& n) {
-    static const std::set<std::string> kTypes = {"void",  "float", "int",   "bool",  "vec2",  "vec3",      "vec4",
-                                                 "ivec2", "ivec3", "ivec4", "bvec2", "bvec3", "bvec4",     "mat2",
-                                                 "mat3",  "mat4",  "sampler2D", "samplerCube"};
-    return kTypes.count(n) > 0;
+    static const char* const kTypes[] = {"void",  "float", "int",   "bool",  "vec2",  "vec3", "vec4",      "ivec2",
+                                         "ivec3", "ivec4", "bvec2", "bvec3", "bvec4", "mat2", "mat3",      "mat4",
+                                         "sampler2D", "samplerCube"};
+    for (const char* t : kTypes)
+        if (n == t) return true;
+    return false;
 }
 
 // The contract's function of that name, if it is one.
@@ -158,16 +157,17 @@ bool number_value(const std::string& t, double& v) {
     return end && *end == '\0';
 }
 
+struct Call {
+    std::string callee;
+    double times;
+};
+
 struct Function {
     std::string name;
     int line = 0;
     size_t body_begin = 0, body_end = 0;  // tokens inside the braces
+    std::vector<Call> calls;              // Scanner::loops
     double cost = -1;                     // -1: not yet, -2: being computed (a cycle)
-};
-
-struct Call {
-    std::string callee;
-    double times;
 };
 
 class Scanner {
@@ -187,13 +187,12 @@ public:
                 problem(i, "a loop outside a function of a built-in return type");
                 return;
             }
-        std::map<std::string, std::vector<Call>> calls;
-        for (const Function& f : fns_) calls[f.name] = loops(f);
+        for (Function& f : fns_) f.calls = loops(f);
         if (!problems_.empty()) return;
         for (Function& f : fns_) {
             SnippetFn c;
             if (!contract_fn(f.name, c)) continue;
-            const double cost = cost_of(f.name, calls);
+            const double cost = cost_of(f.name);
             if (cost < 0) return;  // a cycle, said
             if (cost > kMaxSnippetCost)
                 problems_.push_back({f.line, f.name + " does about " + std::to_string(static_cast<long long>(cost)) +
@@ -258,7 +257,7 @@ private:
                 ++j;
             }
             if (at(j + 1).text != "{") continue;  // a prototype
-            Function f{k.text, k.line, j + 2, j + 2};
+            Function f{k.text, k.line, j + 2, j + 2, {}, -1};
             int d = 1;
             size_t e = j + 2;
             for (; e < t_.size() && d > 0; ++e) {
@@ -292,7 +291,10 @@ private:
             fns_.push_back(f);
         }
         if (depth != 0) problems_.push_back({at(t_.size() - 1).line, "a { is never closed"});
-        std::sort(scan.defines.begin(), scan.defines.end());
+        std::vector<SnippetFn> ordered;  // in kAllSnippetFns' order
+        for (SnippetFn f : kAllSnippetFns)
+            if (std::find(scan.defines.begin(), scan.defines.end(), f) != scan.defines.end()) ordered.push_back(f);
+        scan.defines = ordered;
     }
 
     // The for loops of a function's body: each header `for (T i = A; i OP B; STEP)` with literal
@@ -437,7 +439,7 @@ private:
     }
 
     // Steps per call of `name`: 1, plus each call's times its callee's cost. -1 on a cycle.
-    double cost_of(const std::string& name, const std::map<std::string, std::vector<Call>>& calls) {
+    double cost_of(const std::string& name) {
         auto f = std::find_if(fns_.begin(), fns_.end(), [&](const Function& g) { return g.name == name; });
         if (f == fns_.end()) return 1;  // a built-in (texture2D, dot, ...), or "": one step
         if (f->cost == -2) {
@@ -447,8 +449,9 @@ private:
         if (f->cost >= 0) return f->cost;
         f->cost = -2;
         double cost = 1;
-        for (const Call& c : calls.at(name)) {
-            const double sub = cost_of(c.callee, calls);
+        const std::vector<Call>& calls = f->calls;  // fns_ is not resized below
+        for (const Call& c : calls) {
+            const double sub = cost_of(c.callee);
             if (sub < 0) return -1;
             cost += c.times * sub;
         }

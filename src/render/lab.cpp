@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
-#include <set>
 
 namespace penumbra::render {
 
@@ -23,10 +22,12 @@ namespace {
 // The compiler's messages about the snippets (or, when none names their lines, its first error).
 std::vector<SnippetProblem> compile_problems(const std::vector<std::string>& failures) {
     std::vector<SnippetProblem> out;
-    std::set<std::pair<int, std::string>> seen;
     for (const std::string& f : failures)
         for (SnippetProblem& p : snippet_log_problems(f))
-            if (p.line > 0 && seen.insert({p.line, p.message}).second) out.push_back(std::move(p));
+            if (p.line > 0 && std::none_of(out.begin(), out.end(), [&](const SnippetProblem& q) {
+                    return q.line == p.line && q.message == p.message;
+                }))
+                out.push_back(std::move(p));
     if (!out.empty()) return out;
     for (const std::string& f : failures) {
         // "LABEL: fragment shader failed to compile: LOG": the log's first line that says error.
@@ -78,15 +79,17 @@ std::vector<SnippetProblem> set_snippets(Renderer& r, const scene::Scene& scene,
     if (std::string why = r.check(scene, ls, in); !why.empty()) return {{0, why}};
     // The lab's programs of this frame and of its visibility view (lab_frame's).
     std::vector<Variant> variants;
-    std::set<std::string> keys;
+    std::vector<std::string> keys;
     Settings visibility = ls;
     visibility.aov = Aov::Visibility;
     for (const Settings* t : {&ls, static_cast<const Settings*>(&visibility)})
         for (const Pass& p : r.plan(scene, *t, in).passes)
             for (const Draw& d : p.draws)
                 if (std::find(d.variant.defines.begin(), d.variant.defines.end(), "LAB") != d.variant.defines.end() &&
-                    keys.insert(d.variant.key()).second)
+                    std::find(keys.begin(), keys.end(), d.variant.key()) == keys.end()) {
+                    keys.push_back(d.variant.key());
                     variants.push_back(d.variant);
+                }
     std::vector<std::string> failed = check_variants(variants, std::string(text));
     if (!failed.empty()) return compile_problems(failed);
     r.set_snippets(std::string(text));
