@@ -233,7 +233,7 @@ int main(int argc, char** argv) {
         if (!read_snippets(args.snippets, text)) usage_error("--snippets " + args.snippets + ": cannot read it");
         app.set_lab(true);
         if (!app.lab_available())
-            usage_error("--snippets: " + render::lab_refusal(render::lab_settings(app.frame_settings())) + " (exercise " +
+            usage_error("--snippets: " + app.lab_refusal() + " (exercise " +
                         args.exercise + "; the lab runs on w09p2c)");
     }
 

@@ -304,7 +304,7 @@ const char* penumbra_lab_state() {
     const render::Settings s = g->app->frame_settings();
     const render::Settings lab = render::lab_settings(s);
     std::string j = "{\"available\":" + json_bool(g->app->lab_available());
-    j += ",\"refusal\":" + json_quote(render::lab_refusal(lab));
+    j += ",\"refusal\":" + json_quote(g->app->lab_refusal());
     j += ",\"on\":" + json_bool(g->app->lab());
     j += ",\"encoding\":" + json_quote(shadow::to_string(s.encoding));
     j += ",\"bias\":" + render::json_number(static_cast<double>(lab.effective_bias()));

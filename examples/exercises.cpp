@@ -316,6 +316,15 @@ void CourseApp::render_plan(const scene::Scene& sc, const render::Settings& s, c
 }
 
 render::Settings CourseApp::frame_settings() const {
+    const render::Settings s = exercise_settings();
+    if (lab_ && !own_scene()) {
+        const render::Settings lab = render::lab_settings(s);
+        if (render::lab_refusal(lab).empty()) return lab;
+    }
+    return s;
+}
+
+render::Settings CourseApp::exercise_settings() const {
     // Each technique setting the exercise has no control for: its own value, or the default where
     // another exercise holds it only where offered (the multipass exercise's post passes, the
     // cascades', the cube's layout); any other keeps what was set (a URL's, a key's).
@@ -330,22 +339,14 @@ render::Settings CourseApp::frame_settings() const {
         else if (held_here_only(name)) option.store(o, option.print(defaults));
     }
     if (x.settings) x.settings(toggles_, o.settings);
-    if (lab_) {
-        const render::Settings lab = render::lab_settings(o.settings);
-        if (render::lab_refusal(lab).empty()) return lab;
-    }
     return o.settings;
 }
 
 // ---- the shader lab -------------------------------------------------------------------------
 
-bool CourseApp::lab_available() const {
-    CourseApp& self = const_cast<CourseApp&>(*this);
-    const bool on = lab_;
-    self.lab_ = false;
-    const render::Settings s = frame_settings();
-    self.lab_ = on;
-    return !own_scene() && render::lab_refusal(render::lab_settings(s)).empty();
+std::string CourseApp::lab_refusal() const {
+    if (own_scene()) return "the shader lab runs on the course scene (w09p2c)";
+    return render::lab_refusal(render::lab_settings(exercise_settings()));
 }
 
 std::vector<render::SnippetProblem> CourseApp::set_snippets(std::string_view text) {
@@ -355,7 +356,7 @@ std::vector<render::SnippetProblem> CourseApp::set_snippets(std::string_view tex
         if (problems.empty()) snippets_ = std::string(text);
         return problems;
     }
-    if (!lab_available()) return {{0, render::lab_refusal(render::lab_settings(frame_settings()))}};
+    if (const std::string why = lab_refusal(); !why.empty()) return {{0, why}};
     scene::animate_course(course_, clock_.light, clock_.jump);
     auto problems = render::set_snippets(*renderer_, course_.scene, frame_settings(), text);
     if (problems.empty()) snippets_ = std::string(text);
@@ -368,15 +369,14 @@ render::LabVerdict CourseApp::lab_check(std::string_view text, int width, int he
         v.problems = {{0, "no GL context"}};
         return v;
     }
-    if (!lab_available()) {
-        v.problems = {{0, render::lab_refusal(render::lab_settings(frame_settings()))}};
+    if (const std::string why = lab_refusal(); !why.empty()) {
+        v.problems = {{0, why}};
         return v;
     }
     scene::animate_course(course_, t, t);  // the next draw() puts the scene back at the clocks'
     course_.scene.camera = scene_camera_;
     v = render::lab_check(*renderer_, course_.scene, frame_settings(), text, render::offscreen(width, height));
-    if (v.compiles) snippets_ = std::string(text);
-    else renderer_->set_snippets(snippets_);
+    if (v.compiles) snippets_ = std::string(text);  // else the renderer kept snippets_ (render::lab_check)
     return v;
 }
 
@@ -417,7 +417,6 @@ void CourseApp::draw(int width, int height) {
     // The frame's plans are timed as one GPU frame (a plan that throws leaves it unfinished: the
     // next frame drops it).
     gl::PassTimer& timer = renderer_->gpu_timer();
-    renderer_->set_snippets(snippets_);  // the lab's last good text (lab_check may have drawn others)
     timer.begin_group();
     exercise_->draw(*this, frame_settings(), std::move(in));
     timer.end_group();

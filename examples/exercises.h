@@ -148,8 +148,9 @@ public:
 
     // The shader lab (docs/snippets.md): on, the frames are drawn with Settings::lab
     // (render::lab_settings of the exercise's) and the snippets set here, where the exercise's
-    // settings fit the lab (lab_available); elsewhere it has no effect.
-    bool lab_available() const;
+    // settings fit the lab (lab_refusal() == ""); elsewhere it has no effect.
+    std::string lab_refusal() const;  // "" or why the lab cannot run here
+    bool lab_available() const { return lab_refusal().empty(); }
     void set_lab(bool on) { lab_ = on; }
     bool lab() const { return lab_; }
     // Checks and compiles `text` (render::set_snippets) for the current frame's settings: the
@@ -177,6 +178,8 @@ private:
     render::FrameInputs light_view(render::Output output, bool ortho, const render::Output& camera) const override;
     void note_frame(std::string note) override { frame_note_ = std::move(note); }
 
+    // frame_settings() without the lab.
+    render::Settings exercise_settings() const;
     void render_plan(const scene::Scene& sc, const render::Settings& s, const render::FrameInputs& in, const char* label);
     // set_option's rule for the values a control lists (see there): "" or the refusal.
     std::string keep_to_the_list(render::Settings& t, std::string_view name);
