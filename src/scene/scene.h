@@ -23,6 +23,10 @@ struct Mesh {
     // A closed surface (is_closed below): its back faces alone hold its silhouette from any light,
     // so a shadow map may take them instead of both sides. Set where the mesh is made.
     bool closed = false;
+    // A surface that cannot shadow itself beyond what its own facing already darkens (is_convex
+    // below): flat, or closed and convex. A shadow map need not hold it for its own sake. Set
+    // with `closed` by seal().
+    bool convex = false;
     // Its triangles over welded positions (weld below): what shadow volumes find silhouette edges
     // in. Set with `closed` by seal(); absent in a mesh made by hand (weld() it when needed).
     std::shared_ptr<const struct Topology> topology;
@@ -42,7 +46,14 @@ Topology weld(const Mesh& mesh);
 bool is_closed(const Mesh& mesh);
 bool is_closed(const Topology& topology);
 
-// Sets mesh.topology and mesh.closed from the mesh's triangles: call where a mesh is made.
+// Whether no point of the surface can hide another point of it from a light that the second
+// point faces: every welded vertex lies in one plane (a flat quad, lit from either side), or the
+// surface is closed and every vertex lies on or behind every triangle's plane (a box, a sphere;
+// consistent outward winding). Conservative: false for a mesh too large to check (over 2^22
+// vertex-triangle pairs) and within 1e-5 of the mesh's size of a plane counts as on it.
+bool is_convex(const Topology& topology, bool closed);
+
+// Sets mesh.topology, mesh.closed and mesh.convex from the mesh's triangles: call where a mesh is made.
 void seal(Mesh& mesh);
 
 // 8-bit RGBA image, rows stored top row first.
