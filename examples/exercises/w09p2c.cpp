@@ -47,6 +47,9 @@ Exercise w09p2c() {
           {"aov", "View", K::Select, {"color", "visibility"}},
           {"map-view", "View", K::Checkbox, {"on", "off"}}}};
     x.draw = draw;
+    // The course's map: fitted around what the camera sees, the table in it (where the sheet's
+    // bias lessons show their acne), not only where the teapot's shadow falls (--light-fit shadows).
+    x.defaults = {{"light-fit", "tight"}};
     return x;
 }
 

@@ -162,9 +162,12 @@ std::vector<Option<Options>> make_table() {
         [](const Options& o) { return std::string(to_string(o.settings.map_faces)); });
 
     OptionInfo light_fit = make_option_info("light-fit", P::Technique, T::Choice,
-                         "the light's frustum: tight = around the receivers the camera sees and the casters that can "
-                         "shadow them; scene = around the whole scene", "Light frustum",
-                         {{"tight", "tight: what the camera sees"}, {"scene", "the whole scene"}});
+                         "the light's frustum: shadows = where the casters' shadows can fall on the receivers the "
+                         "camera sees, drawing only the casters that shadow one; tight = around the receivers the "
+                         "camera sees and every caster in front of them (the course's map, the table in it); scene = "
+                         "around the whole scene", "Light frustum",
+                         {{"shadows", "shadows: where they fall"}, {"tight", "tight: what the camera sees"},
+                          {"scene", "the whole scene"}});
     add(light_fit, [](Options& o, std::string_view v) { o.settings.light_fit = enum_of(v, kAllLightFits); },
         [](const Options& o) { return std::string(to_string(o.settings.light_fit)); });
 

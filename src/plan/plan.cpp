@@ -13,6 +13,7 @@
 #include "plan/options.h"
 #include "plan/post.h"
 #include "plan/techniques/technique.h"
+#include "shadow/casting.h"
 
 namespace penumbra::render {
 
@@ -196,10 +197,48 @@ ShadowBounds shadow_bounds(const scene::Scene& scene, bool blend_shadows) {
     ShadowBounds b;
     for (const auto& o : scene.objects) {
         if (!valid_mesh(scene, o.mesh)) continue;
-        if (o.receives_shadow) b.receivers.push_back(scene::object_bounds(scene, o));
-        if (casts(scene, o, blend_shadows)) b.casters.push_back(scene::object_bounds(scene, o));
+        const int object = static_cast<int>(&o - scene.objects.data());
+        if (o.receives_shadow) {
+            b.receivers.push_back(scene::object_bounds(scene, o));
+            b.casting.receiver_objects.push_back(object);
+        }
+        if (casts(scene, o, blend_shadows)) {
+            b.casters.push_back(scene::object_bounds(scene, o));
+            b.casting.caster_objects.push_back(object);
+            b.casting.caster_convex.push_back(scene.meshes[static_cast<size_t>(o.mesh)].convex ? 1 : 0);
+        }
     }
     return b;
+}
+
+std::vector<char> shadowing_casters(const PlanContext& c) {
+    std::vector<char> keep(c.casters.size(), 1);
+    if (c.settings.light_fit != LightFit::Shadows) return keep;
+    const ShadowBounds b = shadow_bounds(c.scene, c.settings.blend_shadows);
+    const std::vector<std::vector<glm::vec3>> each =
+        shadow::visible_points_each(c.light, b.receivers, c.plan.camera.view_proj);
+    std::vector<shadow::SeenReceiver> seen;
+    for (size_t k = 0; k < each.size(); ++k) seen.push_back({b.casting.receiver_objects[k], each[k]});
+    const glm::vec4 light = shadow::light_vector(c.light);
+    for (size_t k = 0; k < keep.size() && k < b.casters.size(); ++k)
+        keep[k] = shadow::shadows_any({b.casting.caster_objects[k], b.casters[k], b.casting.caster_convex[k] != 0}, seen,
+                                      light)
+                      ? 1
+                      : 0;
+    return keep;
+}
+
+shadow::TightFit fit_to_view(const PlanContext& c, bool soft) {
+    ShadowBounds b = shadow_bounds(c.scene, c.settings.blend_shadows);
+    const glm::mat4& vp = c.plan.camera.view_proj;
+    switch (c.settings.light_fit) {
+        case LightFit::Shadows:
+            b.casting.fit_window = !soft;
+            return shadow::fit_light_frustum_shadows(c.light, b.receivers, b.casters, vp, b.casting);
+        case LightFit::Tight: return shadow::fit_light_frustum_tight(c.light, b.receivers, b.casters, vp);
+        case LightFit::Scene: break;
+    }
+    return shadow::fit_light_frustum_scene(c.light, b.receivers, b.casters, vp);
 }
 
 shadow::LightFrustum fit_light_view(const scene::Scene& scene, const scene::Light& light, const glm::mat4& camera_view_proj) {

@@ -369,6 +369,7 @@ scene::Bounds shadowed_bounds(const scene::Scene& scene);
 struct ShadowBounds {
     std::vector<scene::Bounds> receivers;
     std::vector<scene::Bounds> casters;
+    shadow::CastingInfo casting;  // their objects and the casters' convexity (the shadows fit's)
 };
 ShadowBounds shadow_bounds(const scene::Scene& scene, bool blend_shadows = false);
 // The light's frustum fitted tightly around the receivers a camera with this view-projection

@@ -34,7 +34,9 @@ std::string_view to_string(MapFaces f) {
     return "?";
 }
 
-std::string_view to_string(LightFit f) { return f == LightFit::Tight ? "tight" : "scene"; }
+std::string_view to_string(LightFit f) {
+    return f == LightFit::Shadows ? "shadows" : f == LightFit::Tight ? "tight" : "scene";
+}
 
 std::string_view to_string(VolumeMethod m) {
     switch (m) {

@@ -58,10 +58,11 @@ enum class MapFaces {
 };
 // How the light's frustum is fitted.
 enum class LightFit {
-    Tight,  // around the receivers the camera sees and the casters that can shadow them
-    Scene   // around every caster's and receiver's bounds (the frustum before the tight fit)
+    Shadows,  // where the casters' shadows fall on the receivers the camera sees; only casters that shadow one
+    Tight,    // around the receivers the camera sees and the casters in front of them (the course's map)
+    Scene     // around every caster's and receiver's bounds (the frustum before the tight fit)
 };
-inline constexpr LightFit kAllLightFits[] = {LightFit::Tight, LightFit::Scene};
+inline constexpr LightFit kAllLightFits[] = {LightFit::Shadows, LightFit::Tight, LightFit::Scene};
 inline constexpr MapFaces kAllMapFaces[] = {MapFaces::Auto, MapFaces::Front, MapFaces::Back, MapFaces::Both};
 inline constexpr Technique kAllTechniques[] = {Technique::ShadowMap, Technique::Planar, Technique::Volumes,
                                               Technique::Gooch, Technique::None};
@@ -132,7 +133,7 @@ struct Settings {
     std::optional<float> bias;  // a constant offset; absent (and not auto): the sheet's (shadow::sheet_bias)
     bool bias_auto = true;      // --bias auto (the default): the encoding's quantum plus a receiver slope term
     MapFaces map_faces = MapFaces::Auto;
-    LightFit light_fit = LightFit::Tight;
+    LightFit light_fit = LightFit::Shadows;
     shadow::Precision precision = shadow::Precision::Highp;  // mediump: emulated fp16 depth path
     VolumeMethod volume_method = VolumeMethod::Auto;
     bool show_volumes = false;  // the volumes drawn translucent over the image

@@ -18,7 +18,7 @@ namespace penumbra::render {
 // `s` as the lab runs it (what it cannot run, lab_refusal in plan/settings.h names): Settings::lab
 // on, the bias constant (the sheet's for the encoding unless one was given: --bias auto is
 // dropped), every tap of the PCF kernel (the sheet's 4x4, no early exit), one map where the
-// cascades were auto.
+// cascades were auto, the course's tight fit (the table in the map) where the shadows fit was on.
 Settings lab_settings(Settings s);
 
 // Where the lab's frames compare: pixels whose visibility differs by more than one step of 8 bits

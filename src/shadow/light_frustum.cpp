@@ -9,6 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "shadow/casting.h"
 #include "shadow/convex.h"
 
 namespace penumbra::shadow {
@@ -199,17 +200,38 @@ bool inside_box(const scene::Bounds& b, const glm::vec3& p) {
     return glm::all(glm::greaterThanEqual(p, b.min - m)) && glm::all(glm::lessThanEqual(p, b.max + m));
 }
 
+// What the shadows fit adds to the tight one (null: the tight fit): the receivers as the camera
+// sees them, one by one, and the casters' objects and convexity.
+struct Shadowing {
+    const CastingInfo& info;
+    std::vector<SeenReceiver> seen;
+    glm::vec4 light{0.0f};
+};
+
 // The casters that reach into the window (half-spaces in the light's eye space, the far one
-// included), and their nearest depth from the light (eye-space -z) over the part inside.
+// included) and, with `shadowing`, can shadow a receiver in view (the others counted in
+// `culled`); their nearest depth from the light (eye-space -z) over the part inside, and those
+// parts' points (`reach`).
 void select_casters(const std::vector<scene::Bounds>& casters, const glm::mat4& view,
-                    const std::vector<glm::vec4>& eye_half_spaces, std::vector<int>& inside, float& nearest) {
+                    const std::vector<glm::vec4>& eye_half_spaces, const Shadowing* shadowing, TightFit& out,
+                    float& nearest, std::vector<glm::vec3>& reach) {
     std::vector<HalfSpace> hs;
     for (const glm::vec4& h : eye_half_spaces) hs.push_back(to_world(view, h));
     for (size_t k = 0; k < casters.size(); ++k) {
         const std::vector<glm::vec3> pts = clip_box(casters[k], hs);
         if (pts.empty()) continue;
-        inside.push_back(static_cast<int>(k));
+        if (shadowing) {
+            const CastingInfo& in = shadowing->info;
+            const CasterBox box{k < in.caster_objects.size() ? in.caster_objects[k] : -1, casters[k],
+                                k < in.caster_convex.size() && in.caster_convex[k] != 0};
+            if (!shadows_any(box, shadowing->seen, shadowing->light)) {
+                ++out.culled;
+                continue;
+            }
+        }
+        out.casters.push_back(static_cast<int>(k));
         for (const glm::vec3& p : pts) nearest = std::min(nearest, -(view * glm::vec4(p, 1.0f)).z);
+        reach.insert(reach.end(), pts.begin(), pts.end());
     }
 }
 
@@ -223,6 +245,8 @@ struct PerspectiveWindow {
     bool capped = false;          // the cap cut the window: some points fall outside
     float use = 0.0f;             // the points' hull over the window's area: the texel use
 };
+
+void finish_window(PerspectiveWindow& w, std::vector<glm::vec2> tangents);
 
 // false when a point is not in front of the light's eye plane (at least front_eps).
 bool perspective_window(const glm::vec3& pos, const glm::vec3& dir, const std::vector<glm::vec3>& visible,
@@ -248,6 +272,14 @@ bool perspective_window(const glm::vec3& pos, const glm::vec3& dir, const std::v
         w.zmax = std::max(w.zmax, depth);
     }
     w.raw = {xl, xr, yb, yt};
+    finish_window(w, std::move(tangents));
+    return true;
+}
+
+// The window around the raw tangents: widened by the margin, each side within the cap; its texel
+// use by the hull of `tangents`.
+void finish_window(PerspectiveWindow& w, std::vector<glm::vec2> tangents) {
+    float xl = w.raw.x, xr = w.raw.y, yb = w.raw.z, yt = w.raw.w;
     widen_window(xl, xr, kMinTanHalfAngle);
     widen_window(yb, yt, kMinTanHalfAngle);
     w.capped = xl < -kMaxTanHalfAngle || xr > kMaxTanHalfAngle || yb < -kMaxTanHalfAngle || yt > kMaxTanHalfAngle;
@@ -258,6 +290,25 @@ bool perspective_window(const glm::vec3& pos, const glm::vec3& dir, const std::v
     w.yt = std::clamp(yt, w.yb + 2.0f * kMinTanHalfAngle, kMaxTanHalfAngle);
     const glm::vec2 lo(w.xl, w.yb), hi(w.xr, w.yt);
     w.use = polygon_area(clip_to_rect(convex_hull(std::move(tangents)), lo, hi)) / ((hi.x - lo.x) * (hi.y - lo.y));
+}
+
+// The shadows fit's window: the raw window cut to the tangents of `reach` (what the drawn casters
+// hold inside it), where their shadows can fall; false (the window kept) when one lies at the
+// light's eye plane.
+bool cut_to_casters(PerspectiveWindow& w, const std::vector<glm::vec3>& reach, float front_eps) {
+    if (reach.empty()) return false;
+    glm::vec4 c(std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest(),
+                std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest());
+    for (const glm::vec3& p : reach) {
+        const glm::vec3 e = glm::vec3(w.view * glm::vec4(p, 1.0f));
+        if (!(-e.z > front_eps)) return false;
+        const glm::vec2 t(e.x / -e.z, e.y / -e.z);
+        c = {std::min(c.x, t.x), std::max(c.y, t.x), std::min(c.z, t.y), std::max(c.w, t.y)};
+    }
+    const glm::vec4 cut(std::max(w.raw.x, c.x), std::min(w.raw.y, c.y), std::max(w.raw.z, c.z), std::min(w.raw.w, c.w));
+    if (!(cut.x <= cut.y && cut.z <= cut.w)) return false;
+    w.raw = cut;
+    finish_window(w, {});
     return true;
 }
 
@@ -265,7 +316,7 @@ bool perspective_window(const glm::vec3& pos, const glm::vec3& dir, const std::v
 // visible point beside or behind the light's eye plane).
 bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec3>& visible,
                            const std::vector<scene::Bounds>& receivers, const std::vector<scene::Bounds>& casters,
-                           TightFit& out) {
+                           const Shadowing* shadowing, TightFit& out) {
     const glm::vec3 pos = light.position;
     for (const auto* boxes : {&receivers, &casters})
         for (const scene::Bounds& b : *boxes)
@@ -298,7 +349,7 @@ bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec
         has_b = perspective_window(pos, safe_normalize(dir, glm::normalize(to_centroid)), visible, front_eps, b);
     }
     if (!has_a && !has_b) return false;
-    const PerspectiveWindow& w =
+    PerspectiveWindow w =
         !has_b ? a : !has_a ? b : a.capped != b.capped ? (a.capped ? b : a) : (b.use > a.use ? b : a);
 
     LightFrustum& f = out.frustum;
@@ -307,10 +358,12 @@ bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec
     // The casters inside the pyramid of the window, up to the farthest visible point: a caster
     // between the light and a visible point lies there.
     float nearest = w.zmin;
+    std::vector<glm::vec3> reach;
     select_casters(casters, f.view,
                    {{1.0f, 0.0f, w.xl, 0.0f}, {-1.0f, 0.0f, -w.xr, 0.0f}, {0.0f, 1.0f, w.yb, 0.0f},
                     {0.0f, -1.0f, -w.yt, 0.0f}, {0.0f, 0.0f, 1.0f, w.zmax}},
-                   out.casters, nearest);
+                   shadowing, out, nearest, reach);
+    if (shadowing && shadowing->info.fit_window) out.cut = cut_to_casters(w, reach, front_eps);
 
     f.zfar = 1.02f * w.zmax;
     f.znear = std::max(0.98f * nearest, f.zfar * 1e-4f);
@@ -323,7 +376,7 @@ bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec
 // visible point, so everything is in front of it.
 void fit_tight_orthographic(const scene::Light& light, const std::vector<glm::vec3>& visible,
                             const std::vector<scene::Bounds>& receivers, const std::vector<scene::Bounds>& casters,
-                            TightFit& out) {
+                            const Shadowing* shadowing, TightFit& out) {
     const glm::vec3 dir = safe_normalize(light.direction, glm::vec3(0.0f, -1.0f, 0.0f));
     glm::vec3 centroid(0.0f);
     for (const glm::vec3& p : visible) centroid += p;
@@ -344,14 +397,28 @@ void fit_tight_orthographic(const scene::Light& light, const std::vector<glm::ve
     const Extent ext = eye_extent(f.view, visible);
     float xl = ext.lo.x, xr = ext.hi.x, yb = ext.lo.y, yt = ext.hi.y;
     float zmin = ext.lo.z, zmax = ext.hi.z;
+    const glm::vec4 raw(xl, xr, yb, yt);
     widen_window(xl, xr, tiny);
     widen_window(yb, yt, tiny);
 
     float nearest = zmin;
+    std::vector<glm::vec3> reach;
     select_casters(casters, f.view,
                    {{1.0f, 0.0f, 0.0f, -xl}, {-1.0f, 0.0f, 0.0f, xr}, {0.0f, 1.0f, 0.0f, -yb}, {0.0f, -1.0f, 0.0f, yt},
                     {0.0f, 0.0f, 1.0f, zmax}},
-                   out.casters, nearest);
+                   shadowing, out, nearest, reach);
+    if (shadowing && shadowing->info.fit_window && !reach.empty()) {
+        // The window cut to where the drawn casters' shadows can fall (their parts inside it).
+        const Extent c = eye_extent(f.view, reach);
+        xl = std::max(raw.x, c.lo.x);
+        xr = std::min(raw.y, c.hi.x);
+        yb = std::max(raw.z, c.lo.y);
+        yt = std::min(raw.w, c.hi.y);
+        out.cut = xl <= xr && yb <= yt;
+        if (!out.cut) xl = raw.x, xr = raw.y, yb = raw.z, yt = raw.w;
+        widen_window(xl, xr, tiny);
+        widen_window(yb, yt, tiny);
+    }
 
     const float zpad = std::max(0.01f * (zmax - nearest), tiny);
     f.znear = nearest - zpad;
@@ -361,8 +428,9 @@ void fit_tight_orthographic(const scene::Light& light, const std::vector<glm::ve
 
 }  // namespace
 
-std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
-                                               const glm::mat4& camera_view_proj) {
+std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& light,
+                                                      const std::vector<scene::Bounds>& receivers,
+                                                      const glm::mat4& camera_view_proj) {
     const std::array<HalfSpace, 6> camera = clip_volume_half_spaces(camera_view_proj);
     std::vector<HalfSpace> hs(camera.begin(), camera.end());
     // A spot light lights nothing outside its outer cone: the four planes through the light that
@@ -380,12 +448,23 @@ std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const 
             hs.emplace_back(n, -glm::dot(n, light.position));
         }
     }
-    std::vector<glm::vec3> out;
-    for (const scene::Bounds& b : receivers) {
-        const std::vector<glm::vec3> pts = clip_box(b, hs);
-        out.insert(out.end(), pts.begin(), pts.end());
-    }
+    std::vector<std::vector<glm::vec3>> out;
+    for (const scene::Bounds& b : receivers) out.push_back(clip_box(b, hs));
     return out;
+}
+
+std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                               const glm::mat4& camera_view_proj) {
+    std::vector<glm::vec3> out;
+    for (const std::vector<glm::vec3>& pts : visible_points_each(light, receivers, camera_view_proj))
+        out.insert(out.end(), pts.begin(), pts.end());
+    return out;
+}
+
+glm::vec4 light_vector(const scene::Light& light) {
+    if (light.type == scene::LightType::Directional)
+        return glm::vec4(-safe_normalize(light.direction, glm::vec3(0.0f, -1.0f, 0.0f)), 0.0f);
+    return glm::vec4(light.position, 1.0f);
 }
 
 float texel_use(const LightFrustum& f, const std::vector<glm::vec3>& points) {
@@ -401,21 +480,44 @@ float texel_use(const LightFrustum& f, const std::vector<glm::vec3>& points) {
     return std::clamp(area / 4.0f, 0.0f, 1.0f);
 }
 
-TightFit fit_light_frustum_tight(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
-                                 const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj) {
+namespace {
+
+TightFit fit_tight(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                   const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
+                   const Shadowing* shadowing) {
     TightFit r;
-    r.visible = visible_receiver_points(light, receivers, camera_view_proj);
+    if (shadowing)
+        for (const SeenReceiver& s : shadowing->seen) r.visible.insert(r.visible.end(), s.points.begin(), s.points.end());
+    else
+        r.visible = visible_receiver_points(light, receivers, camera_view_proj);
     if (!r.visible.empty()) {
         if (light.type == scene::LightType::Directional) {
-            fit_tight_orthographic(light, r.visible, receivers, casters, r);
+            fit_tight_orthographic(light, r.visible, receivers, casters, shadowing, r);
             r.tight = true;
         } else {
-            r.tight = fit_tight_perspective(light, r.visible, receivers, casters, r);
+            r.tight = fit_tight_perspective(light, r.visible, receivers, casters, shadowing, r);
         }
     }
     if (!r.tight) return fit_light_frustum_scene(light, receivers, casters, camera_view_proj);
     r.texel_use = texel_use(r.frustum, r.visible);
     return r;
+}
+
+}  // namespace
+
+TightFit fit_light_frustum_tight(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                 const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj) {
+    return fit_tight(light, receivers, casters, camera_view_proj, nullptr);
+}
+
+TightFit fit_light_frustum_shadows(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                   const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
+                                   const CastingInfo& info) {
+    Shadowing s{info, {}, light_vector(light)};
+    const std::vector<std::vector<glm::vec3>> seen = visible_points_each(light, receivers, camera_view_proj);
+    for (size_t k = 0; k < seen.size(); ++k)
+        s.seen.push_back({k < info.receiver_objects.size() ? info.receiver_objects[k] : -1, seen[k]});
+    return fit_tight(light, receivers, casters, camera_view_proj, &s);
 }
 
 TightFit fit_light_frustum_scene(const scene::Light& light, const std::vector<scene::Bounds>& receivers,

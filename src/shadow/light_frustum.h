@@ -42,6 +42,10 @@ struct TightFit {
     // false: the fallback, fit_light_frustum over every caster's and receiver's bounds (no
     // receiver in view, or a point or spot light inside a caster's or receiver's bounds).
     bool tight = false;
+    // The shadows fit (fit_light_frustum_shadows): the casters inside the window left out because
+    // they shadow no receiver in view, and whether the window was cut to the drawn casters.
+    int culled = 0;
+    bool cut = false;
 };
 
 // The vertices of each receiver box clipped to the camera's clip volume (camera_view_proj) and,
@@ -49,6 +53,13 @@ struct TightFit {
 // degrees): every point of a receiver the camera can see lit lies in their convex hulls.
 std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                                const glm::mat4& camera_view_proj);
+// The same, one list per receiver (in the order of `receivers`).
+std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& light,
+                                                      const std::vector<scene::Bounds>& receivers,
+                                                      const glm::mat4& camera_view_proj);
+
+// The light as shadow::may_shadow takes it: (position, 1), or (unit direction towards it, 0).
+glm::vec4 light_vector(const scene::Light& light);
 
 // The share of the map of frustum `f` covered by the convex hull of `points` (see TightFit);
 // points at or behind a perspective light's eye plane are left out.
@@ -64,6 +75,25 @@ float texel_use(const LightFrustum& f, const std::vector<glm::vec3>& points);
 // fit_light_frustum). Degenerate input falls back to fit_light_frustum (see TightFit::tight).
 TightFit fit_light_frustum_tight(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                  const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj);
+
+// What the shadows fit knows beyond the boxes: the scene object of each receiver and caster box,
+// which casters cannot shadow themselves (scene::Mesh::convex), and whether to cut the window to
+// the casters (false for soft shadows: their penumbrae reach beyond the casters' outlines).
+struct CastingInfo {
+    std::vector<int> receiver_objects;
+    std::vector<int> caster_objects;
+    std::vector<char> caster_convex;
+    bool fit_window = true;
+};
+
+// The shadows fit (--light-fit shadows): the tight fit, drawing only the casters that can shadow
+// a receiver in view (shadow::shadows_any; the rest counted in TightFit::culled), with the window
+// cut to those casters' parts inside it, where their shadows can fall: a visible receiver point
+// outside it can be shadowed by no caster (the lookup reads it as lit). The window keeps the
+// tight fit's margin around them.
+TightFit fit_light_frustum_shadows(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                   const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
+                                   const CastingInfo& info);
 
 // The fit before the tight one (--light-fit scene), also the tight fit's fallback:
 // fit_light_frustum around the bounds of every receiver and caster, every caster drawn; `visible`

@@ -49,8 +49,12 @@ protected:
         std::map<std::string, gl::Cull> cull;  // per object, as the shadow-map pass draws it
     };
 
-    Result run(const scene::Scene& sc, const char* faces, const char* bias = "auto") {
+    // The course's fit (--light-fit tight, the ground in the map) unless `fit` says otherwise: the
+    // acne below needs the texel density it was measured at.
+    Result run(const scene::Scene& sc, const char* faces, const char* bias = "auto",
+               render::LightFit fit = render::LightFit::Tight) {
         render::Settings s;
+        s.light_fit = fit;
         EXPECT_EQ(render::parse_option(s, "map-faces", faces), "");
         EXPECT_EQ(render::parse_option(s, "bias", bias), "");
         s.aov = render::Aov::Visibility;
@@ -106,6 +110,11 @@ TEST_F(MapFaces, AutoTakesTheBackFacesOfAClosedMeshAndBothOfAnOpenOne) {
     EXPECT_EQ(a.cull.at("box"), gl::Cull::Front);  // back faces in
     EXPECT_EQ(a.cull.at("sheet"), gl::Cull::None);
     EXPECT_EQ(a.cull.at("ground"), gl::Cull::None);
+    // The ground, a flat quad under both, shadows nothing in view: --light-fit shadows leaves it out.
+    const Result shadows = run(sc, "auto", "auto", render::LightFit::Shadows);
+    EXPECT_EQ(shadows.cull.count("ground"), 0u);
+    EXPECT_EQ(shadows.cull.at("box"), gl::Cull::Front);
+    EXPECT_LE(shadows.score.error_pct, a.score.error_pct + 0.02);
     EXPECT_EQ(a.vis, back.vis);
     // Front faces alone lose the sheet's shadow (its front face looks away from the light).
     EXPECT_GT(front.score.false_lit_pct, a.score.false_lit_pct + 1.0);

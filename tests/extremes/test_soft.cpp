@@ -390,8 +390,11 @@ TEST_F(Soft, ThePenumbraNarrowsToNothingAtTheContact) {
         EXPECT_NEAR(wn, truth_near, 0.05) << args;
         EXPECT_LT(score.mae_soft_pct, 1.0) << args;
     }
-    // The control: the mean estimate misses the 15 % far from the foot (measured -39 %).
-    const double mean_far = width_across(red(frame(sc, settings("technique=shadowmap filter=pcss pcss-blockers=mean"), in)), far_x);
+    // The control: the mean estimate misses the 15 % far from the foot (measured -39 %), where the
+    // ground is in the map as a blocker (--light-fit tight). The shadows fit leaves the ground out
+    // (it shadows nothing), which takes the mean's estimate to -9 % (llvmpipe).
+    const double mean_far =
+        width_across(red(frame(sc, settings("technique=shadowmap filter=pcss pcss-blockers=mean light-fit=tight"), in)), far_x);
     std::printf("pole: --pcss-blockers mean: penumbra %.3f wide far from the foot\n", mean_far);
     EXPECT_LT(mean_far, 0.85 * truth_far);
 }

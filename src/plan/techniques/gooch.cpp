@@ -90,14 +90,6 @@ Pass overlay(const PlanContext& c, const char* name) {
     return p;
 }
 
-// The light's frustum for this frame, fitted as the shadow map's (--light-fit).
-shadow::TightFit fit_to_view(const PlanContext& c) {
-    const ShadowBounds b = shadow_bounds(c.scene, c.settings.blend_shadows);
-    return c.settings.light_fit == LightFit::Tight
-               ? shadow::fit_light_frustum_tight(c.light, b.receivers, b.casters, c.plan.camera.view_proj)
-               : shadow::fit_light_frustum_scene(c.light, b.receivers, b.casters, c.plan.camera.view_proj);
-}
-
 // World -> distance from the light along its view axis: minus the view matrix's third row.
 glm::vec4 depth_row(const shadow::LightFrustum& f) {
     return -glm::vec4(f.view[0][2], f.view[1][2], f.view[2][2], f.view[3][2]);
@@ -159,7 +151,7 @@ public:
             c.plan.notes.push_back("no shadow casters above the ground: no Gooch texture");
             return;
         }
-        const shadow::TightFit fit = fit_to_view(c);
+        const shadow::TightFit fit = fit_to_view(c, true);
         const shadow::LightFrustum& f = fit.frustum;
         c.plan.put(LightViewReport{f, fit.texel_use});
         std::vector<int> casters;

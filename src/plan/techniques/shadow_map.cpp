@@ -67,15 +67,6 @@ std::string caster_count(size_t drawn, size_t all) {
                         : std::to_string(drawn) + " of " + std::to_string(all) + " caster(s)";
 }
 
-// The light's frustum for this frame's camera (--light-fit): receivers and casters by their world
-// bounds; TightFit::casters indexes PlanContext::casters (both in scene order).
-shadow::TightFit fit_to_view(const PlanContext& c) {
-    const ShadowBounds b = shadow_bounds(c.scene, c.settings.blend_shadows);
-    return c.settings.light_fit == LightFit::Tight
-               ? shadow::fit_light_frustum_tight(c.light, b.receivers, b.casters, c.plan.camera.view_proj)
-               : shadow::fit_light_frustum_scene(c.light, b.receivers, b.casters, c.plan.camera.view_proj);
-}
-
 // A pass drawing `casters` (scene objects) into a map from the light: depth in the encoding, each
 // caster's faces as --map-faces says, cut-outs alpha-tested; its target, matrix and detail are the
 // caller's. `cut_outs` counts the alpha-tested casters.
@@ -111,7 +102,9 @@ Pass map_pass(const PlanContext& c, const std::vector<int>& casters, int& cut_ou
 Pass tile_pass(const PlanContext& c, const std::vector<int>& fit_casters, std::string name, TargetRef target,
                const glm::mat4& view_proj, int& cut_outs) {
     std::vector<int> casters;
-    for (int j : fit_casters) casters.push_back(c.casters[static_cast<size_t>(j)]);
+    const std::vector<char> keep = shadowing_casters(c);
+    for (int j : fit_casters)
+        if (keep[static_cast<size_t>(j)]) casters.push_back(c.casters[static_cast<size_t>(j)]);
     Pass p = map_pass(c, casters, cut_outs);
     p.name = std::move(name);
     p.target = target;
@@ -292,7 +285,7 @@ public:
         if (cascaded(c, size)) return;
         // The light's frustum around the receivers the camera sees and the casters that can
         // shadow them; only those casters go into the map.
-        const shadow::TightFit fit = fit_to_view(c);
+        const shadow::TightFit fit = fit_to_view(c, s.filter == shadow::Filter::PCSS && c.light.radius > 0.0f);
         const shadow::LightFrustum& f = fit.frustum;
         c.plan.put(LightViewReport{f, fit.texel_use});
         std::vector<int> casters;
@@ -312,8 +305,11 @@ public:
         p.view_proj = f.view_proj();
         p.detail = std::to_string(size) + "x" + std::to_string(size) + " " + std::string(shadow::to_string(s.encoding)) +
                    ", " + (f.perspective ? "perspective" : "orthographic") + " light, " +
-                   caster_count(casters.size(), c.casters.size()) + ", faces " + faces_summary(p) + ", texel use " +
-                   percent(fit.texel_use) + (fit.tight ? "" : ", fitted around the whole scene") +
+                   caster_count(casters.size(), c.casters.size()) +
+                   (fit.culled ? " (" + std::to_string(fit.culled) + " shadowing nothing in view left out)" : "") +
+                   ", faces " + faces_summary(p) + ", texel use " + percent(fit.texel_use) +
+                   (fit.cut ? ", window cut to where the casters' shadows fall" : "") +
+                   (fit.tight ? "" : ", fitted around the whole scene") +
                    (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
         c.add_pass(std::move(p));
     }

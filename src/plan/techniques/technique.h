@@ -64,6 +64,17 @@ struct CameraItem {
     std::uint32_t bindings = 0;  // bits of the camera pass's bindings
 };
 
+struct PlanContext;
+// The light's frustum for this frame's camera, as --light-fit says: receivers and casters by their
+// world bounds; TightFit::casters indexes PlanContext::casters (both in scene order). `soft`: the
+// shadows' penumbrae reach beyond the casters' outlines, so the shadows fit leaves out the casters
+// that shadow nothing but does not cut the window to the others.
+shadow::TightFit fit_to_view(const PlanContext& c, bool soft);
+// One flag per PlanContext::casters entry: 0 where --light-fit shadows leaves that caster out of
+// every map, cascade, cube face and volume, as it can shadow no receiver the camera sees
+// (shadow::shadows_any); all 1 under the other fits.
+std::vector<char> shadowing_casters(const PlanContext& c);
+
 // What a module sees of the frame being planned, and the helpers it adds with.
 struct PlanContext {
     const scene::Scene& scene;
