@@ -28,59 +28,61 @@ namespace penumbra::render {
 
 using Triangles = std::shared_ptr<const std::vector<glm::vec4>>;
 
-// Everything a caster's volume depends on, compared exactly (a hash finds it: VolumeCache::find).
-struct VolumeKey {
-    std::string prefix;  // the context's (a portal's other scene: its own objects)
-    bool beyond = false;
-    int object = -1, mesh = -1;
-    glm::mat4 world{1.0f};
-    glm::vec4 light{0.0f};
-    bool closed = false, fail = false;  // the caps follow: fail || !closed
-    bool operator==(const VolumeKey& o) const {
-        return prefix == o.prefix && beyond == o.beyond && object == o.object && mesh == o.mesh && world == o.world &&
-               light == o.light && closed == o.closed && fail == o.fail;
-    }
-    std::string hash() const {
-        ContentKey k;
-        k.add(prefix.data(), prefix.size());
-        k.add(beyond);
-        k.add(object);
-        k.add(mesh);
-        k.add(world);
-        k.add(light);
-        k.add(closed);
-        k.add(fail);
-        return k.str();
-    }
-};
-
-// One caster's volume: its draws' triangles (null when empty), its share of the statistics, and
-// its fill with the camera it was counted for.
-struct KeptVolume {
-    VolumeKey key;
-    // Sides (and far caps at infinity: depth-fail), null when the volume is empty; near caps, null
-    // when there are none.
-    Triangles body, cap;
-    int silhouette_edges = 0, triangles = 0;
-    double fill = 0.0;
-    bool has_fill = false;
-    glm::mat4 fill_view_proj{1.0f};
-    int fill_width = 0, fill_height = 0;
-};
-
+// The volumes of a plan, for the next plan to keep (VolumeStats::cache).
 struct VolumeCache {
-    std::unordered_multimap<std::string, KeptVolume> volumes;  // by VolumeKey::hash()
+    // Everything a caster's volume depends on, compared exactly (its hash finds it). Its mesh is
+    // named by index, as ContentKey::add_placement names it: the renderer gives a plan the
+    // previous one only for the scene it drew (Renderer::fingerprint); the counts are a check.
+    struct Key {
+        std::string prefix;  // the context's (a portal's other scene: its own objects)
+        bool beyond = false;
+        int object = -1, mesh = -1;
+        std::size_t vertices = 0, indices = 0;
+        glm::mat4 world{1.0f};
+        glm::vec4 light{0.0f};
+        bool closed = false, fail = false;  // the caps follow: fail || !closed
+        bool operator==(const Key& o) const {
+            return prefix == o.prefix && beyond == o.beyond && object == o.object && mesh == o.mesh &&
+                   vertices == o.vertices && indices == o.indices && world == o.world && light == o.light &&
+                   closed == o.closed && fail == o.fail;
+        }
+        std::string hash() const {
+            ContentKey k;
+            k.add(prefix.data(), prefix.size());
+            for (const int v : {int(beyond), object, mesh, int(closed), int(fail)}) k.add(v);
+            k.add(vertices);
+            k.add(indices);
+            k.add(world);
+            k.add(light);
+            return k.str();
+        }
+    };
+    // One caster's volume: its draws' triangles, its share of the statistics, and its fill with
+    // the camera it was counted for.
+    struct Kept {
+        Key key;
+        // Sides (and far caps at infinity: depth-fail), null when the volume is empty; near caps,
+        // null when there are none.
+        Triangles body, cap;
+        int silhouette_edges = 0, triangles = 0;
+        double fill = 0.0;
+        bool has_fill = false;
+        glm::mat4 fill_view_proj{1.0f};
+        int fill_width = 0, fill_height = 0;
+    };
+
+    std::unordered_multimap<std::string, Kept> volumes;  // by Key::hash()
     // --show-volumes: every face, and the triangle lists it was made of, in order.
     Triangles shown;
     std::vector<Triangles> shown_from;
 
-    const KeptVolume* find(const std::string& hash, const VolumeKey& key) const {
+    const Kept* find(const std::string& hash, const Key& key) const {
         const auto [from, to] = volumes.equal_range(hash);
         for (auto it = from; it != to; ++it)
             if (it->second.key == key) return &it->second;
         return nullptr;
     }
-    const KeptVolume& put(const std::string& hash, KeptVolume v) {
+    const Kept& put(const std::string& hash, Kept v) {
         const auto [from, to] = volumes.equal_range(hash);
         for (auto it = from; it != to; ++it)
             if (it->second.key == v.key) return it->second = std::move(v);
@@ -129,14 +131,14 @@ Triangles shared(std::vector<glm::vec4> tris) {
 
 // The caster's volume as the key says: extruded from its mesh's topology (once per key; the caller
 // keeps it).
-KeptVolume extrude(const PlanContext& c, const VolumeKey& key) {
+VolumeCache::Kept extrude(const PlanContext& c, const VolumeCache::Key& key) {
     const scene::Object& o = c.scene.objects[static_cast<size_t>(key.object)];
     const scene::Mesh& mesh = c.scene.meshes[static_cast<size_t>(o.mesh)];
     scene::Topology own;
     const scene::Topology& topo = mesh.topology ? *mesh.topology : (own = scene::weld(mesh));
     shadow::ShadowVolume v = shadow::extrude_volume(topo, key.world, key.light, key.closed, key.fail || !key.closed);
     if (!key.fail) v.far_cap.clear();  // at infinity: never in front of what the eye sees
-    KeptVolume k;
+    VolumeCache::Kept k;
     k.key = key;
     k.silhouette_edges = v.silhouette_edges;
     k.triangles = v.triangles();
@@ -241,21 +243,24 @@ public:
         for (size_t k = 0; k < c.casters.size(); ++k) {
             const int i = c.casters[k];
             const scene::Object& o = c.scene.objects[static_cast<size_t>(i)];
-            VolumeKey key;
+            VolumeCache::Key key;
             key.prefix = c.prefix;
             key.beyond = c.beyond;
             key.object = i;
             key.mesh = o.mesh;
             key.world = o.world;
             key.light = light;
-            key.closed = c.scene.meshes[static_cast<size_t>(o.mesh)].closed;
+            const scene::Mesh& mesh = c.scene.meshes[static_cast<size_t>(o.mesh)];
+            key.vertices = mesh.positions.size();
+            key.indices = mesh.indices.size();
+            key.closed = mesh.closed;
             key.fail = s.volume_method == VolumeMethod::ZFail ||
                        (s.volume_method == VolumeMethod::Auto &&
                         shadow::may_shadow_near_plane(near, light, bounds.casters[k]));
             const std::string hash = key.hash();
-            const KeptVolume* kept = old ? old->find(hash, key) : nullptr;
+            const VolumeCache::Kept* kept = old ? old->find(hash, key) : nullptr;
             if (!kept) kept = next->find(hash, key);
-            KeptVolume v = kept ? *kept : extrude(c, key);
+            VolumeCache::Kept v = kept ? *kept : extrude(c, key);
             ++(kept ? stats.kept : stats.extruded);
             if (v.has_fill && v.fill_view_proj == view_proj && v.fill_width == w && v.fill_height == h) {
                 ++stats.fill_kept;
@@ -266,7 +271,7 @@ public:
                 v.fill_width = w;
                 v.fill_height = h;
             }
-            const KeptVolume& now = next->put(hash, std::move(v));
+            const VolumeCache::Kept& now = next->put(hash, std::move(v));
             if (!now.body) continue;  // nothing to count
             ++(key.fail ? stats.zfail_casters : stats.zpass_casters);
             stats.silhouette_edges += now.silhouette_edges;
