@@ -233,20 +233,18 @@ void Device::draw(const MeshBuffers& mesh) {
                                nullptr));
 }
 
-void Device::draw_points(const std::vector<glm::vec4>& triangles) {
-    if (triangles.empty()) return;
-    const std::size_t bytes = triangles.size() * sizeof(glm::vec4);
-    if (stream_.id() == 0 || bytes > stream_bytes_) {
-        stream_bytes_ = std::max(bytes, stream_bytes_ * 2);
-        stream_ = Buffer(BufferKind::Vertex, nullptr, stream_bytes_, "streamed triangles", true);
-    }
-    stream_.update(triangles.data(), bytes);
-    glBindBuffer(GL_ARRAY_BUFFER, stream_.id());
+Buffer Device::upload_points(const std::vector<glm::vec4>& triangles, const char* label) {
+    return Buffer(BufferKind::Vertex, triangles.data(), triangles.size() * sizeof(glm::vec4), label);
+}
+
+void Device::draw_points(const Buffer& points, std::size_t count) {
+    if (count == 0) return;
+    glBindBuffer(GL_ARRAY_BUFFER, points.id());
     glEnableVertexAttribArray(kPosition);
     glVertexAttribPointer(kPosition, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
     glDisableVertexAttribArray(kNormal);
     glDisableVertexAttribArray(kUV);
-    PENUMBRA_GL(glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.size())));
+    PENUMBRA_GL(glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(count)));
 }
 
 void Device::draw_fullscreen() {

@@ -57,9 +57,11 @@ public:
     // Draws all triangles; the vertex shader reads a_position, a_normal and (when the mesh has
     // them) a_uv. uv is set to 0 for meshes without uvs.
     void draw(const MeshBuffers& mesh);
-    // Triangles of homogeneous points (x, y, z, w) in a_position, from a buffer refilled each call
-    // (shadow volumes, made per frame on the CPU).
-    void draw_points(const std::vector<glm::vec4>& triangles);
+    // Triangles of homogeneous points (x, y, z, w) made on the CPU (shadow volumes), uploaded once
+    // into a buffer of their own, then drawn from it in a_position as often as they are still
+    // wanted (a still volume: render/renderer.h keeps the buffer per list).
+    Buffer upload_points(const std::vector<glm::vec4>& triangles, const char* label);
+    void draw_points(const Buffer& points, std::size_t count);
     // A single triangle that covers the viewport (positions in clip space in a_position.xy).
     void draw_fullscreen();
 
@@ -77,8 +79,6 @@ private:
     std::uint32_t program_ = 0;
     std::vector<std::uint32_t> bound_;  // the texture each unit holds, by unit (0: unknown)
     Buffer fullscreen_;
-    Buffer stream_;
-    std::size_t stream_bytes_ = 0;
 };
 
 }  // namespace penumbra::gl

@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <iterator>
 #include <stdexcept>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -147,6 +148,7 @@ void Renderer::execute(const scene::Scene& scene, const FramePlan& plan) {
 }
 
 void Renderer::run(const scene::Scene& scene, const FramePlan& plan) {
+    ++runs_;
     pool_.prepare(plan);
     device_.forget_textures();
     timer_.begin_frame();
@@ -157,6 +159,19 @@ void Renderer::run(const scene::Scene& scene, const FramePlan& plan) {
     }
     timer_.end_frame();
     device_.apply(gl::PipelineState{});
+    for (auto it = triangles_.begin(); it != triangles_.end();)
+        it = it->second.run + 1 < runs_ ? triangles_.erase(it) : std::next(it);
+}
+
+const gl::Buffer& Renderer::triangle_buffer(const std::shared_ptr<const std::vector<glm::vec4>>& list) {
+    TriangleBuffer& b = triangles_[list.get()];
+    if (b.list != list) {  // new here
+        b.list = list;
+        b.buffer = device_.upload_points(*list, "triangles (a shadow volume)");
+        ++triangle_uploads_;
+    }
+    b.run = runs_;
+    return b.buffer;
 }
 
 // The only code that draws a frame: each pass binds its target, clears, sets its state, binds its
@@ -227,7 +242,9 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
         }
         for (const Uniform& u : d.uniforms) set_uniform(p, u);
         if (d.fullscreen) device_.draw_fullscreen();
-        else if (d.triangles) device_.draw_points(*d.triangles);
+        else if (d.triangles) {
+            if (!d.triangles->empty()) device_.draw_points(triangle_buffer(d.triangles), d.triangles->size());
+        }
         else device_.draw(up.meshes[static_cast<size_t>(d.mesh)]);
     }
     if (pass.copy_to >= 0) {

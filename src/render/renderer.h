@@ -5,8 +5,10 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "gl/caps.h"
@@ -70,6 +72,11 @@ public:
     // one line for `penumbra caps` and `render -v` (the packing stores the same bytes either way):
     // "float -> unorm8 conversion: round (probed: ... stored as 1, 129, 255; ...)".
     std::string unorm_report() const;
+    // Triangle lists (Draw::triangles: shadow volumes) uploaded since the renderer was made, and
+    // those held on the context now: a list a later plan keeps (the same pointer) is drawn from
+    // its buffer, not uploaded again.
+    std::uint64_t triangle_uploads() const { return triangle_uploads_; }
+    std::size_t triangle_buffers() const { return triangles_.size(); }
 
 private:
     void run(const scene::Scene& scene, const FramePlan& plan);
@@ -91,6 +98,17 @@ private:
     ResourcePool pool_;
     std::optional<FramePlan> previous_;
     gl::PassTimer timer_;
+    // Each Draw::triangles list drawn, uploaded once: the entry holds the list, so no other list can
+    // take its address while it is here; a list no plan drew in this run or the one before (two
+    // plans of a frame may alternate) is dropped after the run.
+    struct TriangleBuffer {
+        std::shared_ptr<const std::vector<glm::vec4>> list;
+        gl::Buffer buffer;
+        std::uint64_t run = 0;
+    };
+    const gl::Buffer& triangle_buffer(const std::shared_ptr<const std::vector<glm::vec4>>& list);
+    std::unordered_map<const std::vector<glm::vec4>*, TriangleBuffer> triangles_;
+    std::uint64_t runs_ = 0, triangle_uploads_ = 0;
     std::vector<float> loaded_;  // fingerprint of the scene whose meshes and images are uploaded
 };
 

@@ -92,7 +92,7 @@ void load_snippets(render::Renderer& r, const scene::Scene& scene, const render:
         throw Failure{tools::snippet_problems_text(path, problems), 2};
 }
 
-int run_render(const render::Options& given, bool verbose, const std::vector<std::string>& allow_outside,
+int run_render(const render::Options& given, bool verbose, bool still, const std::vector<std::string>& allow_outside,
                const std::string& snippets) {
     std::string text;
     const render::Options o = with_snippets(given, snippets, text);
@@ -112,7 +112,7 @@ int run_render(const render::Options& given, bool verbose, const std::vector<std
     std::vector<double> ms;
     r.gpu_timer().enable(verbose);  // -v: each pass's GPU time too, read after the last frame
     for (int i = 0; i < job.frames; ++i) {
-        const double t = job.time + static_cast<double>(i) / 60.0;
+        const double t = job.time + (still ? 0.0 : static_cast<double>(i) / 60.0);
         const auto start = std::chrono::steady_clock::now();
         const render::FramePlan& plan = r.render(src.at(t), o.settings, in);
         r.finish();
@@ -289,8 +289,9 @@ int run(int argc, char** argv) {
     const tools::TableOptions render_options(render_cmd);
     std::vector<std::string> render_allow, plan_allow, gallery_allow;
     tools::add_allow_outside(render_cmd, render_allow);
-    bool verbose = false;
+    bool verbose = false, still = false;
     render_cmd->add_flag("-v,--verbose", verbose, "list the context, the settings and each frame's passes");
+    render_cmd->add_flag("--still", still, "with --frames: every frame at --time (nothing moves; what a still frame costs)");
     std::string render_snippets, plan_snippets;
     const std::string snippets_help =
         "FILE: the shader lab's functions (packDepth, unpackDepth, shadowTest, offset_lookup; docs/snippets.md) "
@@ -380,7 +381,7 @@ int run(int argc, char** argv) {
     }
 
     try {
-        if (*render_cmd) return run_render(render_options.parse(), verbose, render_allow, render_snippets);
+        if (*render_cmd) return run_render(render_options.parse(), verbose, still, render_allow, render_snippets);
         if (*plan_cmd) return run_plan(plan_options.parse(), plan_json, plan_allow, plan_snippets);
         if (*gallery_cmd) return run_gallery(gallery_dir, gallery_options.parse(), gallery_allow);
         if (*shaders_cmd) return run_shaders(shader_dir);

@@ -95,7 +95,13 @@ std::string VolumeStats::text(const VolumeStats& v) {
                   "shadow volumes: %d caster(s) depth-pass, %d depth-fail; %d silhouette edge(s), %d triangle(s), "
                   "fill %.0f px (%.2f per pixel)\n",
                   v.zpass_casters, v.zfail_casters, v.silhouette_edges, v.triangles, v.fill, v.fill_per_pixel);
-    return buf;
+    std::string out = buf;
+    if (v.kept > 0)
+        out += "shadow volumes kept from the previous frame: " + std::to_string(v.kept) + " of " +
+               std::to_string(v.kept + v.extruded) + " caster(s) (caster, light and method unchanged), " +
+               std::to_string(v.extruded) + " extruded again; the fill of " + std::to_string(v.fill_kept) +
+               " kept (camera unchanged), of " + std::to_string(v.kept + v.extruded - v.fill_kept) + " counted again\n";
+    return out;
 }
 
 std::string VolumeStats::json(const VolumeStats& v) {

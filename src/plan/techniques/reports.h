@@ -4,6 +4,7 @@
 // cost. Read them with plan.find<T>() or the accessors below.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +46,10 @@ struct CubeReport {
     static std::string json(const CubeReport& r);
 };
 
+// The shadow volumes a plan drew, by caster and by what made them (plan/techniques/volumes.cpp):
+// the next plan keeps those whose caster, light and method did not change.
+struct VolumeCache;
+
 // What the shadow volumes of a frame cost (technique volumes).
 struct VolumeStats {
     static constexpr const char* kKey = "volumes";
@@ -53,6 +58,12 @@ struct VolumeStats {
     int triangles = 0;            // sides and caps
     double fill = 0.0;            // stencil fragments rasterised (covered pixels, every layer, no depth test)
     double fill_per_pixel = 0.0;  // fill / the image's pixels
+    // Casters whose volume (the same triangles, Draw::triangles the same pointer) came from the
+    // previous plan, and those extruded in this one; printed only when some were kept.
+    int kept = 0, extruded = 0;
+    // Casters whose fill came from the previous plan too (their volume kept and the camera still).
+    int fill_kept = 0;
+    std::shared_ptr<VolumeCache> cache;  // not printed; only the plan being made adds to it
     static std::string text(const VolumeStats& r);
     static std::string json(const VolumeStats& r);
 };

@@ -9,14 +9,86 @@
 // --volume-method auto picks per caster: depth-pass when the caster cannot put the eye's near
 // plane in its shadow (shadow::may_shadow_near_plane), depth-fail otherwise. Counts add up, so
 // the two methods mix in one stencil buffer.
+//
+// A still volume is not made again: the plan's VolumeStats carries each caster's triangles with
+// what made them (VolumeCache: the object, its world matrix and mesh, the light, depth-fail or
+// not), and the next plan keeps the same triangles (the same shared pointer, which the renderer
+// keeps uploaded) for a caster whose key is unchanged; only moved casters, or all under a moved
+// light, are extruded again. The fill statistic is kept with them while the camera is still too.
 #include <algorithm>
 #include <memory>
+#include <string>
+#include <unordered_map>
 
 #include "plan/techniques/reports.h"
 #include "plan/techniques/technique.h"
 #include "shadow/volumes.h"
 
 namespace penumbra::render {
+
+using Triangles = std::shared_ptr<const std::vector<glm::vec4>>;
+
+// The volumes of a plan, for the next plan to keep (VolumeStats::cache).
+struct VolumeCache {
+    // Everything a caster's volume depends on, compared exactly (its hash finds it). Its mesh is
+    // named by index, as ContentKey::add_placement names it: the renderer gives a plan the
+    // previous one only for the scene it drew (Renderer::fingerprint); the counts are a check.
+    struct Key {
+        std::string prefix;  // the context's (a portal's other scene: its own objects)
+        bool beyond = false;
+        int object = -1, mesh = -1;
+        std::size_t vertices = 0, indices = 0;
+        glm::mat4 world{1.0f};
+        glm::vec4 light{0.0f};
+        bool closed = false, fail = false;  // the caps follow: fail || !closed
+        bool operator==(const Key& o) const {
+            return prefix == o.prefix && beyond == o.beyond && object == o.object && mesh == o.mesh &&
+                   vertices == o.vertices && indices == o.indices && world == o.world && light == o.light &&
+                   closed == o.closed && fail == o.fail;
+        }
+        std::string hash() const {
+            ContentKey k;
+            k.add(prefix.data(), prefix.size());
+            for (const int v : {int(beyond), object, mesh, int(closed), int(fail)}) k.add(v);
+            k.add(vertices);
+            k.add(indices);
+            k.add(world);
+            k.add(light);
+            return k.str();
+        }
+    };
+    // One caster's volume: its draws' triangles, its share of the statistics, and its fill with
+    // the camera it was counted for.
+    struct Kept {
+        Key key;
+        // Sides (and far caps at infinity: depth-fail), null when the volume is empty; near caps,
+        // null when there are none.
+        Triangles body, cap;
+        int silhouette_edges = 0, triangles = 0;
+        double fill = 0.0;
+        bool has_fill = false;
+        glm::mat4 fill_view_proj{1.0f};
+        int fill_width = 0, fill_height = 0;
+    };
+
+    std::unordered_multimap<std::string, Kept> volumes;  // by Key::hash()
+    // --show-volumes: every face, and the triangle lists it was made of, in order.
+    Triangles shown;
+    std::vector<Triangles> shown_from;
+
+    const Kept* find(const std::string& hash, const Key& key) const {
+        const auto [from, to] = volumes.equal_range(hash);
+        for (auto it = from; it != to; ++it)
+            if (it->second.key == key) return &it->second;
+        return nullptr;
+    }
+    const Kept& put(const std::string& hash, Kept v) {
+        const auto [from, to] = volumes.equal_range(hash);
+        for (auto it = from; it != to; ++it)
+            if (it->second.key == v.key) return it->second = std::move(v);
+        return volumes.emplace(hash, std::move(v))->second;
+    }
+};
 
 namespace {
 
@@ -32,8 +104,6 @@ constexpr float kCapOffsetFactor = 1.0f, kCapOffsetUnits = 4.0f;
 // The false colours of the stencil-count view: counts 1..6, then "negative" (wrapped below 0).
 constexpr int kCountColours = 6;
 
-using Triangles = std::shared_ptr<const std::vector<glm::vec4>>;
-
 Pass volume_pass(const PlanContext& c, const char* name) {
     Pass p;
     p.name = name;
@@ -47,12 +117,43 @@ Pass volume_pass(const PlanContext& c, const char* name) {
     return p;
 }
 
-Draw volume_draw(const std::string& label, std::vector<glm::vec4> tris) {
+Draw volume_draw(const std::string& label, Triangles tris) {
     Draw d;
     d.label = label;
     d.variant = volume_variant();
-    d.triangles = std::make_shared<const std::vector<glm::vec4>>(std::move(tris));
+    d.triangles = std::move(tris);
     return d;
+}
+
+Triangles shared(std::vector<glm::vec4> tris) {
+    return tris.empty() ? nullptr : std::make_shared<const std::vector<glm::vec4>>(std::move(tris));
+}
+
+// The caster's volume as the key says: extruded from its mesh's topology (once per key; the caller
+// keeps it).
+VolumeCache::Kept extrude(const PlanContext& c, const VolumeCache::Key& key) {
+    const scene::Object& o = c.scene.objects[static_cast<size_t>(key.object)];
+    const scene::Mesh& mesh = c.scene.meshes[static_cast<size_t>(o.mesh)];
+    scene::Topology own;
+    const scene::Topology& topo = mesh.topology ? *mesh.topology : (own = scene::weld(mesh));
+    shadow::ShadowVolume v = shadow::extrude_volume(topo, key.world, key.light, key.closed, key.fail || !key.closed);
+    if (!key.fail) v.far_cap.clear();  // at infinity: never in front of what the eye sees
+    VolumeCache::Kept k;
+    k.key = key;
+    k.silhouette_edges = v.silhouette_edges;
+    k.triangles = v.triangles();
+    std::vector<glm::vec4> body = std::move(v.sides);
+    body.insert(body.end(), v.far_cap.begin(), v.far_cap.end());
+    // The sides' draw is there whenever the volume is (an empty list too); the caps' only when
+    // there are caps.
+    if (!body.empty() || !v.near_cap.empty()) k.body = std::make_shared<const std::vector<glm::vec4>>(std::move(body));
+    k.cap = shared(std::move(v.near_cap));
+    return k;
+}
+
+double covered(const Triangles& t, const glm::mat4& view_proj, int w, int h) {
+    static const std::vector<glm::vec4> none;
+    return shadow::covered_pixels(t ? *t : none, view_proj, w, h);
 }
 
 class VolumesModule : public Module {
@@ -128,37 +229,73 @@ public:
             p->state.offset_factor = kCapOffsetFactor;
             p->state.offset_units = kCapOffsetUnits;
         }
-        std::vector<glm::vec4> shown;  // every face, for --show-volumes
         const int w = c.camera_target.width, h = c.camera_target.height;
+        const glm::mat4& view_proj = c.plan.camera.view_proj;
+        // What the previous plan kept, and this plan's volumes of an earlier light sample.
+        const VolumeStats* before = c.previous ? volumes_of(*c.previous) : nullptr;
+        const VolumeCache* old = before ? before->cache.get() : nullptr;
+        // One cache for all of a plan's volumes: a light sample's adds to the earlier samples'.
+        std::shared_ptr<VolumeCache> next;
+        if (VolumeStats* earlier = c.plan.find<VolumeStats>(); earlier && earlier->cache) next = std::move(earlier->cache);
+        else next = std::make_shared<VolumeCache>();
+        std::vector<Triangles> shown_from;  // every face, for --show-volumes
         double fill = 0.0;
         for (size_t k = 0; k < c.casters.size(); ++k) {
             const int i = c.casters[k];
             const scene::Object& o = c.scene.objects[static_cast<size_t>(i)];
+            VolumeCache::Key key;
+            key.prefix = c.prefix;
+            key.beyond = c.beyond;
+            key.object = i;
+            key.mesh = o.mesh;
+            key.world = o.world;
+            key.light = light;
             const scene::Mesh& mesh = c.scene.meshes[static_cast<size_t>(o.mesh)];
-            scene::Topology own;
-            const scene::Topology& topo = mesh.topology ? *mesh.topology : (own = scene::weld(mesh));
-            const bool fail = s.volume_method == VolumeMethod::ZFail ||
-                              (s.volume_method == VolumeMethod::Auto &&
-                               shadow::may_shadow_near_plane(near, light, bounds.casters[k]));
-            shadow::ShadowVolume v = shadow::extrude_volume(topo, o.world, light, mesh.closed, fail || !mesh.closed);
-            if (!fail) v.far_cap.clear();  // at infinity: never in front of what the eye sees
-            if (v.sides.empty() && v.near_cap.empty()) continue;
-            ++(fail ? stats.zfail_casters : stats.zpass_casters);
-            stats.silhouette_edges += v.silhouette_edges;
-            stats.triangles += v.triangles();
-            std::vector<glm::vec4> body = std::move(v.sides);
-            body.insert(body.end(), v.far_cap.begin(), v.far_cap.end());
-            fill += shadow::covered_pixels(body, c.plan.camera.view_proj, w, h) +
-                    shadow::covered_pixels(v.near_cap, c.plan.camera.view_proj, w, h);
-            if (s.show_volumes) {
-                shown.insert(shown.end(), body.begin(), body.end());
-                shown.insert(shown.end(), v.near_cap.begin(), v.near_cap.end());
+            key.vertices = mesh.positions.size();
+            key.indices = mesh.indices.size();
+            key.closed = mesh.closed;
+            key.fail = s.volume_method == VolumeMethod::ZFail ||
+                       (s.volume_method == VolumeMethod::Auto &&
+                        shadow::may_shadow_near_plane(near, light, bounds.casters[k]));
+            const std::string hash = key.hash();
+            const VolumeCache::Kept* kept = old ? old->find(hash, key) : nullptr;
+            if (!kept) kept = next->find(hash, key);
+            VolumeCache::Kept v = kept ? *kept : extrude(c, key);
+            ++(kept ? stats.kept : stats.extruded);
+            if (v.has_fill && v.fill_view_proj == view_proj && v.fill_width == w && v.fill_height == h) {
+                ++stats.fill_kept;
+            } else {
+                v.fill = covered(v.body, view_proj, w, h) + covered(v.cap, view_proj, w, h);
+                v.has_fill = true;
+                v.fill_view_proj = view_proj;
+                v.fill_width = w;
+                v.fill_height = h;
             }
-            (fail ? zfail : zpass).draws.push_back(volume_draw(o.name, std::move(body)));
-            if (!v.near_cap.empty()) (fail ? caps : zpass_caps).draws.push_back(volume_draw(o.name, std::move(v.near_cap)));
+            const VolumeCache::Kept& now = next->put(hash, std::move(v));
+            if (!now.body) continue;  // nothing to count
+            ++(key.fail ? stats.zfail_casters : stats.zpass_casters);
+            stats.silhouette_edges += now.silhouette_edges;
+            stats.triangles += now.triangles;
+            fill += now.fill;
+            if (s.show_volumes) shown_from.insert(shown_from.end(), {now.body, now.cap});
+            (key.fail ? zfail : zpass).draws.push_back(volume_draw(o.name, now.body));
+            if (now.cap) (key.fail ? caps : zpass_caps).draws.push_back(volume_draw(o.name, now.cap));
+        }
+        if (s.show_volumes) {
+            if (old && old->shown && old->shown_from == shown_from) {
+                next->shown = old->shown;
+            } else {
+                std::vector<glm::vec4> all;
+                for (const Triangles& part : shown_from)
+                    if (part) all.insert(all.end(), part->begin(), part->end());
+                next->shown = shared(std::move(all));
+            }
+            next->shown_from = std::move(shown_from);
         }
         stats.fill = fill;
         stats.fill_per_pixel = w > 0 && h > 0 ? fill / (static_cast<double>(w) * h) : 0.0;
+        const Triangles shown = next->shown;
+        stats.cache = std::move(next);
         c.plan.put(stats);
         const auto describe = [&](Pass& p, const char* what) {
             int tris = 0;
@@ -187,7 +324,7 @@ public:
         } else {
             lit_pass(c);
         }
-        if (s.show_volumes && !shown.empty()) show(c, std::move(shown));
+        if (s.show_volumes && shown) show(c, shown);
     }
 
 private:
@@ -251,13 +388,12 @@ private:
     }
 
     // The volumes over the image, translucent: faces towards the eye orange, faces away blue.
-    static void show(PlanContext& c, std::vector<glm::vec4> tris) {
+    static void show(PlanContext& c, const Triangles& shared) {
         Pass p = volume_pass(c, "volumes-show");
         p.state.color_write = true;
         p.state.blend = gl::Blend::Alpha;
         p.bindings.push_back({"towards the eye", {{"u_value", glm::vec4(1.0f, 0.55f, 0.1f, 0.22f)}}, {}});
         p.bindings.push_back({"away from the eye", {{"u_value", glm::vec4(0.2f, 0.5f, 1.0f, 0.22f)}}, {}});
-        const Triangles shared = std::make_shared<const std::vector<glm::vec4>>(std::move(tris));
         Draw back = volume_draw("the volumes' back faces", {});
         back.triangles = shared;
         back.bindings = 2u;
