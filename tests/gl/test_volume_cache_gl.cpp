@@ -21,6 +21,9 @@ render::Settings volumes(bool show) {
     render::Settings s;
     s.technique = render::Technique::Volumes;
     s.show_volumes = show;
+    // The table's volume too (the shadows fit leaves it out: it shadows nothing in view): two
+    // casters, one still while the other moves.
+    s.light_fit = render::LightFit::Tight;
     return s;
 }
 

@@ -10,7 +10,9 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "full_caps.h"
 #include "plan/plan.h"
+#include "plan/techniques/reports.h"
 #include "scene/primitives.h"
 #include "scene/teapot.h"
 #include "scenes/course_scene.h"
@@ -144,4 +146,31 @@ TEST(Casting, TheShadowsFitLeavesTheTableOutAndCutsTheWindowToTheTeapot) {
     EXPECT_FALSE(kept.cut);
     EXPECT_EQ(kept.casters.size(), 1u);
     EXPECT_EQ(kept.frustum.view_proj(), tight.frustum.view_proj());
+}
+
+TEST(Casting, ShadowVolumesLeaveOutTheCastersThatShadowNothing) {
+    scene::CourseScene course = scene::make_course_scene(4);
+    scene::animate_course(course, 0.6, 0.6);
+    render::Settings s;
+    s.technique = render::Technique::Volumes;
+    const gl::Caps caps = penumbra::testing::full_caps();
+    const auto drawn = [&](const render::FramePlan& p, int object) {
+        int n = 0;
+        for (const render::Pass& pass : p.passes)
+            if (pass.name.rfind("volumes-z", 0) == 0)
+                for (const render::Draw& d : pass.draws) n += d.label == course.scene.objects[static_cast<size_t>(object)].name;
+        return n;
+    };
+    const render::FramePlan shadows = render::plan(course.scene, s, caps);
+    ASSERT_TRUE(render::volumes_of(shadows));
+    EXPECT_EQ(render::volumes_of(shadows)->culled, 1);
+    EXPECT_EQ(drawn(shadows, course.table), 0);
+    EXPECT_GT(drawn(shadows, course.teapot), 0);
+    EXPECT_NE(shadows.to_text().find("shadow volumes left out: 1 caster(s)"), std::string::npos);
+    // The control: the tight fit extrudes the table's volume too, and its fill is larger.
+    s.light_fit = render::LightFit::Tight;
+    const render::FramePlan tight = render::plan(course.scene, s, caps);
+    EXPECT_EQ(render::volumes_of(tight)->culled, 0);
+    EXPECT_GT(drawn(tight, course.table), 0);
+    EXPECT_GT(render::volumes_of(tight)->fill, render::volumes_of(shadows)->fill);
 }

@@ -96,6 +96,9 @@ std::string VolumeStats::text(const VolumeStats& v) {
                   "fill %.0f px (%.2f per pixel)\n",
                   v.zpass_casters, v.zfail_casters, v.silhouette_edges, v.triangles, v.fill, v.fill_per_pixel);
     std::string out = buf;
+    if (v.culled > 0)
+        out += "shadow volumes left out: " + std::to_string(v.culled) +
+               " caster(s) that shadow no receiver in view (--light-fit shadows)\n";
     if (v.kept > 0)
         out += "shadow volumes kept from the previous frame: " + std::to_string(v.kept) + " of " +
                std::to_string(v.kept + v.extruded) + " caster(s) (caster, light and method unchanged), " +
@@ -107,7 +110,8 @@ std::string VolumeStats::text(const VolumeStats& v) {
 std::string VolumeStats::json(const VolumeStats& v) {
     return "{\"zpass_casters\":" + std::to_string(v.zpass_casters) + ",\"zfail_casters\":" + std::to_string(v.zfail_casters) +
            ",\"silhouette_edges\":" + std::to_string(v.silhouette_edges) + ",\"triangles\":" + std::to_string(v.triangles) +
-           ",\"fill\":" + json_number(v.fill) + ",\"fill_per_pixel\":" + json_number(v.fill_per_pixel) + "}";
+           ",\"fill\":" + json_number(v.fill) + ",\"fill_per_pixel\":" + json_number(v.fill_per_pixel) +
+           ",\"culled_casters\":" + std::to_string(v.culled) + "}";
 }
 
 const shadow::LightFrustum* light_frustum_of(const FramePlan& p) {

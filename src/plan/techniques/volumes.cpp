@@ -240,7 +240,12 @@ public:
         else next = std::make_shared<VolumeCache>();
         std::vector<Triangles> shown_from;  // every face, for --show-volumes
         double fill = 0.0;
+        const std::vector<char> shadowing = shadowing_casters(c);
         for (size_t k = 0; k < c.casters.size(); ++k) {
+            if (!shadowing[k]) {
+                ++stats.culled;
+                continue;
+            }
             const int i = c.casters[k];
             const scene::Object& o = c.scene.objects[static_cast<size_t>(i)];
             VolumeCache::Key key;
