@@ -76,11 +76,14 @@ TEST_F(Lab, ACompileErrorKeepsTheLastGoodSnippets) {
     EXPECT_EQ(renderer->shaders().snippets(), good);
     const auto problems = render::set_snippets(*renderer, course.scene, settings, read("broken.glsl"), in);
     ASSERT_FALSE(problems.empty());
-    // The info log's form is the implementation's; where it names the file's lines, it names the
-    // missing semicolon's (line 4) or the token after it (line 5).
+    // The info log's form is the implementation's, and so is where its parser recovers: where it
+    // names the file's lines, they are the broken function's (lines 2-6). Mesa names the missing
+    // semicolon's line (4) or the token after it (5); NVIDIA 580 also the function's first line
+    // (2: "function "shadowTest" has no return statement", its recovery having eaten the return).
+    // A line not mapped back through `#line 1 7` would be the preamble's, hundreds further on.
     for (const auto& p : problems)
         if (p.line > 0) {
-            EXPECT_TRUE(p.line == 4 || p.line == 5) << p.line << ": " << p.message;
+            EXPECT_TRUE(p.line >= 2 && p.line <= 6) << p.line << ": " << p.message;
         }
     EXPECT_EQ(renderer->shaders().snippets(), good);
     // A refused file never reaches the compiler, nor does a setting the lab cannot run.
