@@ -235,8 +235,11 @@ std::vector<std::pair<std::string, std::string>> CourseApp::options() const {
         if (std::find(shown.begin(), shown.end(), c.option) == shown.end()) shown.emplace_back(c.option);
     std::vector<std::pair<std::string, std::string>> out;
     for (const auto& n : shown) out.emplace_back(n, value_of(n));
-    // Any other setting that differs from its default keeps its value across a reload.
-    static const auto defaults = render::to_pairs(render::Settings{});
+    // Any other setting that differs from its default (the exercise's own where it has one, as
+    // W09P2c's light-fit) keeps its value across a reload.
+    render::Settings start;
+    for (const auto& [name, value] : exercise_->defaults) (void)render::parse_option(start, name, value);
+    const auto defaults = render::to_pairs(start);
     const auto pairs = render::to_pairs(settings_);
     for (size_t i = 0; i < pairs.size(); ++i) {
         const auto& [k, v] = pairs[i];

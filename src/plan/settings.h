@@ -123,7 +123,7 @@ struct Settings {
     // kCube: a point light's six faces (shadow/cube.h); 0 = auto (one map, cascades or a cube from
     // the scene, the camera and the light: shadow::auto_cascade_count, shadow::cube_wanted).
     static constexpr int kCube = 6;
-    int cascades = 1;
+    int cascades = 0;
     float cascade_split = 0.9f;  // --cascade-split: 0 uniform splits, 1 logarithmic
     bool cascade_snap = true;    // --cascade-snap: each cascade's window on whole texels (no shimmer)
     float cascade_blend = 0.1f;  // --cascade-blend: the share of a slice blended into the next, 0..0.5
