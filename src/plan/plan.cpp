@@ -13,7 +13,6 @@
 #include "plan/options.h"
 #include "plan/post.h"
 #include "plan/techniques/technique.h"
-#include "shadow/casting.h"
 
 namespace penumbra::render {
 
@@ -156,10 +155,7 @@ LitFeatures PlanContext::base_features(const Draw& d) const {
     return f;
 }
 
-glm::vec4 PlanContext::light_vector() const {
-    return light.type == scene::LightType::Directional ? glm::vec4(-light.direction, 0.0f)
-                                                        : glm::vec4(light.position, 1.0f);
-}
+glm::vec4 PlanContext::light_vector() const { return shadow::light_vector(light); }
 
 std::vector<Binding> PlanContext::lit_bindings() const {
     std::vector<Binding> out;
@@ -212,20 +208,9 @@ ShadowBounds shadow_bounds(const scene::Scene& scene, bool blend_shadows) {
 }
 
 std::vector<char> shadowing_casters(const PlanContext& c) {
-    std::vector<char> keep(c.casters.size(), 1);
-    if (c.settings.light_fit != LightFit::Shadows) return keep;
+    if (c.settings.light_fit != LightFit::Shadows) return std::vector<char>(c.casters.size(), 1);
     const ShadowBounds b = shadow_bounds(c.scene, c.settings.blend_shadows);
-    const std::vector<std::vector<glm::vec3>> each =
-        shadow::visible_points_each(c.light, b.receivers, c.plan.camera.view_proj);
-    std::vector<shadow::SeenReceiver> seen;
-    for (size_t k = 0; k < each.size(); ++k) seen.push_back({b.casting.receiver_objects[k], each[k]});
-    const glm::vec4 light = shadow::light_vector(c.light);
-    for (size_t k = 0; k < keep.size() && k < b.casters.size(); ++k)
-        keep[k] = shadow::shadows_any({b.casting.caster_objects[k], b.casters[k], b.casting.caster_convex[k] != 0}, seen,
-                                      light)
-                      ? 1
-                      : 0;
-    return keep;
+    return shadow::shadowing_flags(c.light, b.receivers, b.casters, c.plan.camera.view_proj, b.casting);
 }
 
 shadow::TightFit fit_to_view(const PlanContext& c, bool soft) {

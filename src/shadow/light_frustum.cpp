@@ -200,12 +200,11 @@ bool inside_box(const scene::Bounds& b, const glm::vec3& p) {
     return glm::all(glm::greaterThanEqual(p, b.min - m)) && glm::all(glm::lessThanEqual(p, b.max + m));
 }
 
-// What the shadows fit adds to the tight one (null: the tight fit): the receivers as the camera
-// sees them, one by one, and the casters' objects and convexity.
+// What the shadows fit adds to the tight one (null: the tight fit): which casters can shadow a
+// receiver in view (shadowing_flags), and whether to cut the window to them.
 struct Shadowing {
-    const CastingInfo& info;
-    std::vector<SeenReceiver> seen;
-    glm::vec4 light{0.0f};
+    std::vector<char> keep;
+    bool fit_window = true;
 };
 
 // The casters that reach into the window (half-spaces in the light's eye space, the far one
@@ -220,14 +219,9 @@ void select_casters(const std::vector<scene::Bounds>& casters, const glm::mat4& 
     for (size_t k = 0; k < casters.size(); ++k) {
         const std::vector<glm::vec3> pts = clip_box(casters[k], hs);
         if (pts.empty()) continue;
-        if (shadowing) {
-            const CastingInfo& in = shadowing->info;
-            const CasterBox box{k < in.caster_objects.size() ? in.caster_objects[k] : -1, casters[k],
-                                k < in.caster_convex.size() && in.caster_convex[k] != 0};
-            if (!shadows_any(box, shadowing->seen, shadowing->light)) {
-                ++out.culled;
-                continue;
-            }
+        if (shadowing && !shadowing->keep[k]) {
+            ++out.culled;
+            continue;
         }
         out.casters.push_back(static_cast<int>(k));
         for (const glm::vec3& p : pts) nearest = std::min(nearest, -(view * glm::vec4(p, 1.0f)).z);
@@ -363,7 +357,7 @@ bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec
                    {{1.0f, 0.0f, w.xl, 0.0f}, {-1.0f, 0.0f, -w.xr, 0.0f}, {0.0f, 1.0f, w.yb, 0.0f},
                     {0.0f, -1.0f, -w.yt, 0.0f}, {0.0f, 0.0f, 1.0f, w.zmax}},
                    shadowing, out, nearest, reach);
-    if (shadowing && shadowing->info.fit_window) out.cut = cut_to_casters(w, reach, front_eps);
+    if (shadowing && shadowing->fit_window) out.cut = cut_to_casters(w, reach, front_eps);
 
     f.zfar = 1.02f * w.zmax;
     f.znear = std::max(0.98f * nearest, f.zfar * 1e-4f);
@@ -407,7 +401,7 @@ void fit_tight_orthographic(const scene::Light& light, const std::vector<glm::ve
                    {{1.0f, 0.0f, 0.0f, -xl}, {-1.0f, 0.0f, 0.0f, xr}, {0.0f, 1.0f, 0.0f, -yb}, {0.0f, -1.0f, 0.0f, yt},
                     {0.0f, 0.0f, 1.0f, zmax}},
                    shadowing, out, nearest, reach);
-    if (shadowing && shadowing->info.fit_window && !reach.empty()) {
+    if (shadowing && shadowing->fit_window && !reach.empty()) {
         // The window cut to where the drawn casters' shadows can fall (their parts inside it).
         const Extent c = eye_extent(f.view, reach);
         xl = std::max(raw.x, c.lo.x);
@@ -462,9 +456,8 @@ std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const 
 }
 
 glm::vec4 light_vector(const scene::Light& light) {
-    if (light.type == scene::LightType::Directional)
-        return glm::vec4(-safe_normalize(light.direction, glm::vec3(0.0f, -1.0f, 0.0f)), 0.0f);
-    return glm::vec4(light.position, 1.0f);
+    return light.type == scene::LightType::Directional ? glm::vec4(-light.direction, 0.0f)
+                                                        : glm::vec4(light.position, 1.0f);
 }
 
 float texel_use(const LightFrustum& f, const std::vector<glm::vec3>& points) {
@@ -486,10 +479,7 @@ TightFit fit_tight(const scene::Light& light, const std::vector<scene::Bounds>& 
                    const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
                    const Shadowing* shadowing) {
     TightFit r;
-    if (shadowing)
-        for (const SeenReceiver& s : shadowing->seen) r.visible.insert(r.visible.end(), s.points.begin(), s.points.end());
-    else
-        r.visible = visible_receiver_points(light, receivers, camera_view_proj);
+    r.visible = visible_receiver_points(light, receivers, camera_view_proj);
     if (!r.visible.empty()) {
         if (light.type == scene::LightType::Directional) {
             fit_tight_orthographic(light, r.visible, receivers, casters, shadowing, r);
@@ -513,11 +503,25 @@ TightFit fit_light_frustum_tight(const scene::Light& light, const std::vector<sc
 TightFit fit_light_frustum_shadows(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                    const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
                                    const CastingInfo& info) {
-    Shadowing s{info, {}, light_vector(light)};
-    const std::vector<std::vector<glm::vec3>> seen = visible_points_each(light, receivers, camera_view_proj);
-    for (size_t k = 0; k < seen.size(); ++k)
-        s.seen.push_back({k < info.receiver_objects.size() ? info.receiver_objects[k] : -1, seen[k]});
+    const Shadowing s{shadowing_flags(light, receivers, casters, camera_view_proj, info), info.fit_window};
     return fit_tight(light, receivers, casters, camera_view_proj, &s);
+}
+
+std::vector<char> shadowing_flags(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                  const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
+                                  const CastingInfo& info) {
+    const std::vector<std::vector<glm::vec3>> each = visible_points_each(light, receivers, camera_view_proj);
+    std::vector<SeenReceiver> seen;
+    for (size_t k = 0; k < each.size(); ++k)
+        seen.push_back({k < info.receiver_objects.size() ? info.receiver_objects[k] : -1, each[k]});
+    const glm::vec4 l = light_vector(light);
+    std::vector<char> keep(casters.size(), 0);
+    for (size_t k = 0; k < casters.size(); ++k) {
+        const CasterBox box{k < info.caster_objects.size() ? info.caster_objects[k] : -1, casters[k],
+                            k < info.caster_convex.size() && info.caster_convex[k] != 0};
+        keep[k] = shadows_any(box, seen, l) ? 1 : 0;
+    }
+    return keep;
 }
 
 TightFit fit_light_frustum_scene(const scene::Light& light, const std::vector<scene::Bounds>& receivers,

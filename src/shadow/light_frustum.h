@@ -58,7 +58,8 @@ std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& ligh
                                                       const std::vector<scene::Bounds>& receivers,
                                                       const glm::mat4& camera_view_proj);
 
-// The light as shadow::may_shadow takes it: (position, 1), or (unit direction towards it, 0).
+// The light as a homogeneous point: (position, 1), or (direction towards it, 0); what shadow volumes
+// extrude away from and shadow::may_shadow takes.
 glm::vec4 light_vector(const scene::Light& light);
 
 // The share of the map of frustum `f` covered by the convex hull of `points` (see TightFit);
@@ -94,6 +95,12 @@ struct CastingInfo {
 TightFit fit_light_frustum_shadows(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                    const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
                                    const CastingInfo& info);
+
+// One flag per caster box: 1 where it can shadow a receiver the camera sees (shadow::shadows_any
+// over visible_points_each), 0 where a plane proves it cannot: what the shadows fit leaves out.
+std::vector<char> shadowing_flags(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                  const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
+                                  const CastingInfo& info);
 
 // The fit before the tight one (--light-fit scene), also the tight fit's fallback:
 // fit_light_frustum around the bounds of every receiver and caster, every caster drawn; `visible`

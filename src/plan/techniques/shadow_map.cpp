@@ -98,11 +98,11 @@ Pass map_pass(const PlanContext& c, const std::vector<int>& casters, int& cut_ou
 }
 
 // A pass into one tile of an atlas (a cascade, a cube face): `fit_casters` index
-// PlanContext::casters (the fits' caster lists), drawn as map_pass draws them.
-Pass tile_pass(const PlanContext& c, const std::vector<int>& fit_casters, std::string name, TargetRef target,
-               const glm::mat4& view_proj, int& cut_outs) {
+// PlanContext::casters (the fits' caster lists), those `keep` flags (shadowing_casters, the
+// frame's) drawn as map_pass draws them.
+Pass tile_pass(const PlanContext& c, const std::vector<int>& fit_casters, const std::vector<char>& keep,
+               std::string name, TargetRef target, const glm::mat4& view_proj, int& cut_outs) {
     std::vector<int> casters;
-    const std::vector<char> keep = shadowing_casters(c);
     for (int j : fit_casters)
         if (keep[static_cast<size_t>(j)]) casters.push_back(c.casters[static_cast<size_t>(j)]);
     Pass p = map_pass(c, casters, cut_outs);
@@ -359,10 +359,11 @@ public:
         const int r = c.add_resource(map_desc(c, fit.atlas_width, fit.atlas_height), "",
                                      "the depth seen from the light, " + std::to_string(n) + " cascades side by side");
         const size_t first = c.plan.passes.size();
+        const std::vector<char> keep = shadowing_casters(c);
         for (size_t i = 0; i < fit.cascades.size(); ++i) {
             const shadow::Cascade& k = fit.cascades[i];
             int cut_outs = 0;
-            Pass p = tile_pass(c, k.casters, c.named(kMap) + " cascade " + std::to_string(i), {r, size, size, k.tile_x, k.tile_y, true},
+            Pass p = tile_pass(c, k.casters, keep, c.named(kMap) + " cascade " + std::to_string(i), {r, size, size, k.tile_x, k.tile_y, true},
                                k.frustum.view_proj(), cut_outs);
             ContentKey key;
             key.add(p.view_proj);
@@ -430,12 +431,13 @@ public:
                                      cube_map ? "the depth seen from the light, the six faces of a cube map"
                                               : "the depth seen from the light, the six faces of a cube side by side (3 x 2)");
         const size_t first = c.plan.passes.size();
+        const std::vector<char> keep = shadowing_casters(c);
         for (int f = 0; f < shadow::kCubeFaces; ++f) {
             const shadow::CubeFace& face = fit.faces[static_cast<size_t>(f)];
             if (!face.drawn) continue;
             if (!light_frustum_of(c.plan)) c.plan.put(LightViewReport{face.frustum, std::nullopt});
             int cut_outs = 0;
-            Pass p = tile_pass(c, face.casters, c.named(kMap) + " face " + shadow::cube_face_name(f),
+            Pass p = tile_pass(c, face.casters, keep, c.named(kMap) + " face " + shadow::cube_face_name(f),
                                {r, size, size, face.tile_x, face.tile_y, true, f}, face.frustum.view_proj(), cut_outs);
             ContentKey key;
             key.add(p.view_proj);
