@@ -4,8 +4,8 @@
 # examples/exercises/list.h: PENUMBRA_EXERCISE_NAMES is read from there).
 file(GLOB PENUMBRA_EXERCISE_MODULES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/examples/exercises/*.cpp)
 # The registry and the modules (what penumbra_catalog needs: no renderer, no GL).
-set(PENUMBRA_EXERCISE_LIST_SOURCES ${CMAKE_SOURCE_DIR}/examples/exercise_list.cpp ${CMAKE_SOURCE_DIR}/examples/fly_camera.cpp
-    ${PENUMBRA_EXERCISE_MODULES})
+set(PENUMBRA_EXERCISE_LIST_SOURCES ${CMAKE_SOURCE_DIR}/examples/exercise_list.cpp ${CMAKE_SOURCE_DIR}/examples/exercise_registry.cpp
+    ${CMAKE_SOURCE_DIR}/examples/fly_camera.cpp ${PENUMBRA_EXERCISE_MODULES})
 set(PENUMBRA_EXERCISE_SOURCES
     ${CMAKE_SOURCE_DIR}/examples/exercises.cpp
     ${CMAKE_SOURCE_DIR}/examples/exercise_keys.cpp

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 
-#include "exercises/list.h"
 
 namespace penumbra::examples {
 
@@ -57,13 +56,6 @@ std::vector<render::Option<Toggles>> make_toggles() {
 
 }  // namespace
 
-// The registry: each exercise's function (examples/exercises/NAME.cpp), in list.h's order.
-namespace exercises {
-#define PENUMBRA_DECLARE(name) Exercise name();
-PENUMBRA_EXERCISES(PENUMBRA_DECLARE)
-#undef PENUMBRA_DECLARE
-}  // namespace exercises
-
 namespace {
 
 // The keys every exercise has (its own come first: Exercise::keys).
@@ -99,14 +91,6 @@ const std::vector<KeyBinding>& shared_keys() {
     return keys;
 }
 
-std::vector<Exercise> make_list() {
-    return {
-#define PENUMBRA_ITEM(name) exercises::name(),
-        PENUMBRA_EXERCISES(PENUMBRA_ITEM)
-#undef PENUMBRA_ITEM
-    };
-}
-
 }  // namespace
 
 const std::vector<render::Option<Toggles>>& toggle_table() {
@@ -115,7 +99,7 @@ const std::vector<render::Option<Toggles>>& toggle_table() {
 }
 
 const std::vector<Exercise>& exercise_list() {
-    static const auto list = make_list();
+    static const auto list = exercise_registry();
     return list;
 }
 
@@ -148,11 +132,15 @@ const std::vector<KeyBinding>& key_bindings() {
     return keys;
 }
 
+const std::vector<std::string_view>& here_only_options() {
+    static const std::vector<std::string_view> names = {"technique", "post", "shading", "lights", "cascades",
+                                                        "cascade-split", "cascade-blend", "cascade-snap", "cube-layout"};
+    return names;
+}
+
 bool held_here_only(std::string_view option) {
-    for (const Exercise& x : exercise_list())
-        for (const Control& c : x.controls)
-            if (c.here_only && c.option == option) return true;
-    return false;
+    const auto& names = here_only_options();
+    return std::find(names.begin(), names.end(), option) != names.end();
 }
 
 }  // namespace penumbra::examples

@@ -26,6 +26,9 @@ struct Caps;
 namespace penumbra::scene {
 struct CourseScene;
 }
+namespace penumbra::render {
+class Module;
+}
 
 namespace penumbra::examples {
 
@@ -146,6 +149,10 @@ struct Exercise {
     // Its frame: `s` the frame's settings, `in` the inputs that draw the course scene's camera into
     // the whole window. Each host.render() is one plan of the frame.
     void (*draw)(Host& host, render::Settings s, render::FrameInputs in) = nullptr;
+    // The technique and effect modules its frames can use (render::planar_module, ...): a browser
+    // page's module links only these (plan/techniques/technique.h). unit.ExerciseList checks that
+    // they cover every technique and effect its controls and frame can reach.
+    std::vector<const render::Module& (*)()> modules = {};
 };
 // Whether the exercise's camera flies (a scene of its own).
 inline bool flies(const Exercise& x) { return x.make_scene != nullptr; }
@@ -154,6 +161,9 @@ bool offers(const Exercise& x, std::string_view option);
 
 // ---- the registry (examples/exercises/list.h) ---------------------------------------------------
 const std::vector<Exercise>& exercise_list();
+// The exercises the list is made of (exercise_registry.cpp): every one of list.h, or in a browser
+// page's module (built with PENUMBRA_PAGE=name) that page's alone.
+std::vector<Exercise> exercise_registry();
 // The exercise of that name, or null.
 const Exercise* find_exercise(std::string_view name);
 std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c, volumes, soft, stencil, multipass, cascades, bulb"
@@ -162,7 +172,10 @@ std::string exercise_names();  // "w09p1, w09p2a, w09p2b, w09p2c, volumes, soft,
 inline constexpr int kExerciseDigitKeys = 8;
 // The shared keys, then each exercise's own (with `only` its name).
 const std::vector<KeyBinding>& key_bindings();
-// Whether some exercise holds the setting only where it is offered (Control::here_only).
+// Whether some exercise holds the setting only where it is offered (Control::here_only). A fixed
+// list (here_only_options()), the same in a page that has one exercise: unit.ExerciseList checks it
+// against every exercise's controls.
 bool held_here_only(std::string_view option);
+const std::vector<std::string_view>& here_only_options();
 
 }  // namespace penumbra::examples

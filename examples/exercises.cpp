@@ -9,6 +9,7 @@
 #include "platform/platform.h"
 #include "query.h"
 #include "plan/json.h"
+#include "plan/techniques/technique.h"
 #include "scene/eye.h"
 #include "shadow/encoding.h"
 
@@ -222,6 +223,8 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
     render::Settings t = settings_;
     if (std::string err = render::parse_option(t, name, value); !err.empty()) return without_dashes(err);
     if (std::string err = keep_to_the_list(t, name); !err.empty()) return err;
+    // A browser page has only its exercise's technique and effect modules (Exercise::modules).
+    if (std::string err = render::unlinked_problem(t, name); !err.empty()) return without_dashes(err);
     if (exercise_->on_set) exercise_->on_set(t, name);
     if (t.encoding == shadow::Encoding::DepthTex && renderer_ && !renderer_->caps().depth_texture)
         return "encoding: depthtex needs WEBGL_depth_texture / OES_depth_texture, which this context lacks";

@@ -1,4 +1,4 @@
-// The exercise pages' script: starts the WebGL module (penumbra.js) for the page's exercise,
+// The exercise pages' script: starts the page's WebGL module (NAME.js, NAME.wasm: its exercise's code alone),
 // sizes the canvas's backing store to its CSS size x devicePixelRatio (at most 2048 a side),
 // applies the URL's options, binds the controls, keeps the URL in step with them
 // (history.replaceState), shows the status (context lost / restored, errors), the note of the last

@@ -42,6 +42,7 @@ Exercise bulb() {
               {'K', "filter", "bulb: filter hard / PCF 4x4 / PCSS"},
               {'C', "cube-layout", "bulb: the cube's faces in an atlas / a cube map"}};
     x.draw = draw_own_scene;
+    x.modules = {render::shadow_map_module};
     return x;
 }
 

@@ -49,6 +49,7 @@ Exercise multipass() {
           here_only({"lights", "Shading", K::Slider, {"0", "8", "32", "64", "128", "256"}, {}, "unshadowed", 0.0, 256.0})},
          {{"post", "shadow-blur:6"}}};
     x.draw = draw;
+    x.modules = {render::shadow_map_module, render::planar_module, render::volumes_module};
     return x;
 }
 

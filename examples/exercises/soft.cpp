@@ -67,6 +67,7 @@ Exercise soft() {
     x.on_set = on_set;
     x.settings = settings;
     x.draw = draw;
+    x.modules = {render::shadow_map_module, render::planar_module, render::volumes_module, render::gooch_module};
     return x;
 }
 

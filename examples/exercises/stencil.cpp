@@ -40,6 +40,8 @@ Exercise stencil() {
            "planar and volumes keep their shadows in the stencil too"})},
          {{"effects", "outline"}}};
     x.draw = draw_colour;
+    x.modules = {render::shadow_map_module, render::planar_module, render::volumes_module, render::outline_module,
+                 render::mirror_module, render::portal_module};
     return x;
 }
 

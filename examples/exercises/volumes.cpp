@@ -39,6 +39,7 @@ Exercise volumes() {
            "stencil count: 1 blue, 2 green, 3 yellow, 4 orange, 5 magenta, 6 white; below zero red"}}};
     x.frame = {{"technique", "volumes"}};
     x.draw = draw;
+    x.modules = {render::volumes_module};
     return x;
 }
 

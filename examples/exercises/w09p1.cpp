@@ -17,6 +17,7 @@ Exercise w09p1() {
          "the table as the light circles.", {light, jump}};
     x.frame = {{"technique", "planar"}};
     x.draw = draw_colour;
+    x.modules = {render::planar_module};
     return x;
 }
 

@@ -28,6 +28,7 @@ Exercise w09p2a() {
          {light, jump, {"projection", "Light projection", K::Radio}}};
     x.frame = {{"technique", "none"}};
     x.draw = draw;
+    x.modules = {};  // no shadows: the module every page has
     return x;
 }
 

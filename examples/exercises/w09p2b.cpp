@@ -97,6 +97,7 @@ Exercise w09p2b() {
     x.frame = {{"technique", "none"}};
     x.extend_course = extend_course;
     x.draw = draw;
+    x.modules = {};  // no shadows: the module every page has
     return x;
 }
 

@@ -50,6 +50,7 @@ Exercise w09p2c() {
     // The course's map: fitted around what the camera sees, the table in it (where the sheet's
     // bias lessons show their acne), not only where the teapot's shadow falls (--light-fit shadows).
     x.defaults = {{"light-fit", "tight"}};
+    x.modules = {render::shadow_map_module};
     return x;
 }
 

@@ -51,8 +51,9 @@ export async function serve(root) {
 
 export function siteDir() {
   const dir = process.env.PENUMBRA_SITE || path.resolve(path.dirname(new URL(import.meta.url).pathname), '../../build-web/site');
-  if (!existsSync(path.join(dir, 'penumbra.wasm')))
-    throw new Error(`${dir} has no penumbra.wasm: build the web preset first (cmake --preset web && cmake --build --preset web)`);
+  // Each page has its own module (NAME.wasm); the first page's stands for them all.
+  if (!existsSync(path.join(dir, `${PAGES[0]}.wasm`)))
+    throw new Error(`${dir} has no ${PAGES[0]}.wasm: build the web preset first (cmake --preset web && cmake --build --preset web)`);
   return dir;
 }
 

@@ -8,7 +8,7 @@
 // lawn there; the controls reach the URL and survive a reload; the browser's frame matches
 // `penumbra render --effects ...` (headless EGL) within web.egl_match's tolerance, for the shadow
 // map and shadow volumes with the outline, for the mirror and for all three effects; no console
-// or GL error.
+// or GL error. W09P1's page, whose module has no mirror's code, refuses effects=mirror and says why.
 // usage: stencil.mjs PENUMBRA_CLI OUT_DIR
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
@@ -212,7 +212,18 @@ await runTest('web.stencil', async ({ server, browser }) => {
           `${(100 * d.fraction).toFixed(3)}% > ${LEVELS} levels; images in ${outDir})`);
   }
 
+  // Each page's module holds only the technique and effect modules its exercise names: W09P1's has
+  // no mirror, so it refuses the effect with the reason, where this page (the control) takes it.
+  const { page: w09p1, problems: w09p1Problems } = await openPage(browser, `${server.url}/w09p1.html`);
+  const refused = await w09p1.evaluate(() => window.penumbra.setOption('effects', 'mirror'));
+  check(/not in this page's code/.test(refused), `w09p1 took effects=mirror: '${refused}'`);
+  check((await w09p1.evaluate(() => window.penumbra.state())).status === 'running', 'w09p1 stopped after the refusal');
+  const taken = await page.evaluate(() => window.penumbra.setOption('effects', 'mirror'));
+  check(taken === '', `the stencil page refused effects=mirror: '${taken}'`);
+  await w09p1.close();
+
   const errs = (await glErrors(page)).concat(await glErrors(bad));
   check(errs.length === 0, `glGetError: ${errs.map((e) => '0x' + e.toString(16)).join(', ')}`);
-  check(problems.length === 0 && badProblems.length === 0, problems.concat(badProblems).join('; '));
+  check(problems.length === 0 && badProblems.length === 0 && w09p1Problems.length === 0,
+        problems.concat(badProblems, w09p1Problems).join('; '));
 });

@@ -31,8 +31,6 @@
 
 namespace penumbra::render {
 
-const Module& planar_module();  // planar.cpp
-
 namespace {
 
 constexpr int kGroundVisible = 1;  // the stencil of a visible ground pixel before plane 0

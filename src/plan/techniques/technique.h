@@ -183,9 +183,28 @@ public:
     virtual bool representative(const Settings&) const { return true; }
 };
 
-// The module of each technique (techniques.cpp) and of each effect.
+// The module of each technique (techniques.cpp) and of each effect. A technique or effect whose
+// module is not in the program (technique_linked) throws std::invalid_argument.
 const Module& technique_module(Technique t);
 const Module& effect_module(Effect e);
+// Each module by itself (its own file). A program has the modules something in it names: every
+// native program all of them (techniques.cpp names each), a browser page's module only those its
+// exercise names (examples/exercise_list.h, Exercise::modules), techniques.cpp's references being
+// weak there, so that a page loads only the code of what it offers.
+const Module& shadow_map_module();  // shadow_map.cpp
+const Module& planar_module();      // planar.cpp
+const Module& volumes_module();     // volumes.cpp
+const Module& gooch_module();       // gooch.cpp
+const Module& outline_module();     // outline.cpp
+const Module& mirror_module();      // mirror.cpp
+const Module& portal_module();      // portal.cpp
+// Whether the module of technique `t` (effect `e`) is in this program (always, but in a page's).
+bool technique_linked(Technique t);
+bool effect_linked(Effect e);
+// "" unless `option` is "technique" or "effects" and the module of `s`'s value for it is not in
+// this program: then one line naming it. (Only the option being set: a page's stored technique
+// may be one its exercise's frame replaces, Exercise::frame.)
+std::string unlinked_problem(const Settings& s, std::string_view option);
 // The module of no shadows: the camera pass of a frame whose shadow comes from elsewhere (the
 // light samples' average, the blurred visibility).
 const Module& unshadowed_module();

@@ -1,5 +1,6 @@
 // The technique modules by Technique value, the module of no shadows, and the content key.
 #include <cstdio>
+#include <stdexcept>
 
 #include "plan/techniques/technique.h"
 
@@ -8,15 +9,50 @@
 
 namespace penumbra::render {
 
-const Module& shadow_map_module();  // shadow_map.cpp
-const Module& planar_module();      // planar.cpp
-const Module& volumes_module();     // volumes.cpp
-const Module& gooch_module();       // gooch.cpp
-const Module& outline_module();     // outline.cpp
-const Module& mirror_module();      // mirror.cpp
-const Module& portal_module();      // portal.cpp
+#ifdef __EMSCRIPTEN__
+// In the browser these references are weak: a page's module links a technique's code only where its
+// exercise names the module (Exercise::modules); the others are null here (wasm-ld resolves an
+// undefined weak function to a null address).
+#define PENUMBRA_WEAK_MODULE __attribute__((weak))
+#else
+#define PENUMBRA_WEAK_MODULE
+#endif
+PENUMBRA_WEAK_MODULE const Module& shadow_map_module();
+PENUMBRA_WEAK_MODULE const Module& planar_module();
+PENUMBRA_WEAK_MODULE const Module& volumes_module();
+PENUMBRA_WEAK_MODULE const Module& gooch_module();
+PENUMBRA_WEAK_MODULE const Module& outline_module();
+PENUMBRA_WEAK_MODULE const Module& mirror_module();
+PENUMBRA_WEAK_MODULE const Module& portal_module();
 
 namespace {
+
+using Getter = const Module& (*)();
+
+Getter technique_getter(Technique t) {
+    switch (t) {
+        case Technique::ShadowMap: return &shadow_map_module;
+        case Technique::Planar: return &planar_module;
+        case Technique::Volumes: return &volumes_module;
+        case Technique::Gooch: return &gooch_module;
+        case Technique::None: return &unshadowed_module;
+    }
+    return &unshadowed_module;
+}
+
+Getter effect_getter(Effect e) {
+    switch (e) {
+        case Effect::Outline: return &outline_module;
+        case Effect::Mirror: return &mirror_module;
+        case Effect::Portal: return &portal_module;
+    }
+    return &outline_module;
+}
+
+std::string not_linked(std::string_view option, std::string_view value) {
+    return "--" + std::string(option) + " " + std::string(value) +
+           ": not in this page's code (each page loads only what it offers; an exercise page that offers it has it)";
+}
 
 class NoShadows : public Module {
 public:
@@ -30,16 +66,21 @@ const NoShadows kNone;
 
 }  // namespace
 
+bool technique_linked(Technique t) { return technique_getter(t) != nullptr; }
+bool effect_linked(Effect e) { return effect_getter(e) != nullptr; }
+
+std::string unlinked_problem(const Settings& s, std::string_view option) {
+    if (option == "technique" && !technique_linked(s.technique)) return not_linked(option, to_string(s.technique));
+    if (option == "effects")
+        for (Effect e : s.effects)
+            if (!effect_linked(e)) return not_linked(option, to_string(e));
+    return {};
+}
+
 const Module& technique_module(Technique t) {
-    const Module& none = kNone;
-    switch (t) {
-        case Technique::ShadowMap: return shadow_map_module();
-        case Technique::Planar: return planar_module();
-        case Technique::Volumes: return volumes_module();
-        case Technique::Gooch: return gooch_module();
-        case Technique::None: return none;
-    }
-    return none;
+    const Getter g = technique_getter(t);
+    if (!g) throw std::invalid_argument(not_linked("technique", to_string(t)));
+    return g();
 }
 
 const Module& unshadowed_module() { return kNone; }
@@ -57,7 +98,7 @@ const std::vector<ReportSlot>& report_slots() {
 std::string aov_problem(Technique t, Aov aov) {
     if (technique_module(t).own_aov(aov)) return {};
     for (Technique other : kAllTechniques)
-        if (technique_module(other).own_aov(aov))
+        if (technique_linked(other) && technique_module(other).own_aov(aov))
             return "--aov " + std::string(to_string(aov)) + ": needs --technique " + std::string(to_string(other));
     return {};
 }
@@ -65,17 +106,14 @@ std::string aov_problem(Technique t, Aov aov) {
 std::string techniques_that(bool (Module::*question)() const) {
     std::string names;
     for (Technique t : kAllTechniques)
-        if ((technique_module(t).*question)()) names += (names.empty() ? "" : " or ") + std::string(to_string(t));
+        if (technique_linked(t) && (technique_module(t).*question)()) names += (names.empty() ? "" : " or ") + std::string(to_string(t));
     return "--technique " + names;
 }
 
 const Module& effect_module(Effect e) {
-    switch (e) {
-        case Effect::Outline: return outline_module();
-        case Effect::Mirror: return mirror_module();
-        case Effect::Portal: return portal_module();
-    }
-    return outline_module();
+    const Getter g = effect_getter(e);
+    if (!g) throw std::invalid_argument(not_linked("effects", to_string(e)));
+    return g();
 }
 
 void set_lit_draws(Pass& p, const std::vector<CameraItem>& items) {
