@@ -287,9 +287,8 @@ int penumbra_height() { return g ? g->height : 0; }
 // The oldest pending GL error (0: none), through Emscripten's glGetError.
 unsigned penumbra_gl_error() { return g && !g->lost ? gl::take_error() : 0u; }
 const char* penumbra_plan() { return hand(g && g->app ? g->app->last_plan() : ""); }
-// The last frame's plans as JSON ({"title": ..., "plans": [FramePlan::to_json(), ...]}): the page
-// reads its passes from it.
-const char* penumbra_plan_json() { return hand(g && g->app ? g->app->last_plan_json() : "{}"); }
+// The last frame's shadow-map tile lines (CourseApp::tile_lines): the page's #cascade-plan.
+const char* penumbra_tile_lines() { return hand(g && g->app ? g->app->tile_lines() : ""); }
 // The wasm heap's bytes in use (malloc's allocated blocks; Module.HEAP8.length is the whole heap):
 // the soak (tests/web/soak.mjs) watches it for leaks.
 unsigned long penumbra_heap_used() { return static_cast<unsigned long>(mallinfo().uordblks); }
@@ -392,7 +391,7 @@ int main(int argc, char** argv) {
     g = new WebApp;  // lives as long as the page
     g->app = std::make_unique<examples::CourseApp>(exercise);
     g->app->set_gpu_timing(true);
-    g->app->set_keep_plans(true);  // penumbra_plan_json  // the readout's GPU time per pass, where the context has a timer
+    g->app->set_keep_plans(true);  // penumbra_tile_lines  // the readout's GPU time per pass, where the context has a timer
     std::string error;
     g->platform = platform::create_web_canvas(platform::CanvasOptions{}, error);
     if (!g->platform) {

@@ -448,10 +448,34 @@ std::vector<std::uint8_t> CourseApp::read_pixels(int width, int height) {
 
 std::string CourseApp::last_plan() const { return std::string(exercise_->title) + "\n" + plan_text_; }
 
-std::string CourseApp::last_plan_json() const {
-    std::string j = "{\"title\":" + render::json_quote(exercise_->title) + ",\"plans\":[";
-    for (size_t i = 0; i < plans_.size(); ++i) j += (i ? "," : "") + plans_[i].to_json();
-    return j + "]}";
+std::string CourseApp::tile_lines() const {
+    const auto tile = [](const std::string& text) {
+        if (text.find("cascade") != std::string::npos || text.find("a cube of") != std::string::npos ||
+            text.find("a cube map of") != std::string::npos)
+            return true;
+        for (size_t at = text.find("face "); at != std::string::npos; at = text.find("face ", at + 1))
+            if (at + 6 < text.size() && (text[at + 5] == '+' || text[at + 5] == '-') &&
+                std::string_view("xyz").find(text[at + 6]) != std::string_view::npos)
+                return true;
+        return false;
+    };
+    std::string lines;
+    for (const render::FramePlan& plan : plans_)
+        for (const render::Pass& pass : plan.passes) {
+            if (!tile(pass.name + ": " + pass.detail)) continue;
+            // A pass kept from the frame before says so first; a "reused (...)" in a detail is cut short.
+            std::string detail = pass.detail;
+            if (pass.skipped) {
+                detail = "reused: " + detail;
+            } else if (const size_t at = detail.find("reused ("); at != std::string::npos) {
+                const size_t end = detail.find(')', at);
+                if (end != std::string::npos) detail.replace(at, end + 1 - at, "reused");
+            }
+            std::string line = pass.name + ": " + detail;
+            if (line.rfind("shadow-map", 0) == 0) line.erase(0, line.find_first_not_of(' ', 10));
+            lines += (lines.empty() ? "" : "\n") + line;
+        }
+    return lines;
 }
 
 }  // namespace penumbra::examples

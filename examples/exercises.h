@@ -122,10 +122,12 @@ public:
     long frames_drawn() const { return timing_.frames(); }
     // The passes of the last frame (each plan's), for --verbose and the pages.
     std::string last_plan() const;
-    // The last frame's plans as JSON (FramePlan::to_json), for the pages: {"title": ..., "plans":
-    // [...]}; the plans are kept only while keep_plans is on (off until switched on).
+    // The last frame's shadow-map tiles, a line a pass: each cascade's and each cube face's
+    // ("cascade 1: ...", "face +x: ..."; a pass kept from the frame before says "reused: ..."),
+    // "" where it has none: the pages' readout (#cascade-plan). The plans are kept only while
+    // keep_plans is on (off until switched on).
     void set_keep_plans(bool on) { keep_plans_ = on; }
-    std::string last_plan_json() const;
+    std::string tile_lines() const;
     // What the last frame had to change in the options for the window it was drawn in ("" when
     // nothing): W09P2b's rtt=copy texture larger than the window.
     const std::string& frame_note() const { return frame_note_; }

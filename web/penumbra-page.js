@@ -22,7 +22,7 @@
 //                                                 focused canvas, a drag on it to look around; the
 //                                                 camera goes into the URL (camera=x,y,z,yaw,pitch)
 //   #cascade-plan                                 the last frame plan's cascade or cube face lines, where it has them
-//                                                 (read from the plans' JSON: penumbra_plan_json)
+//                                                 (CourseApp::tile_lines: penumbra_tile_lines)
 //   #lab-open, #lab                               the shader lab (W09P2c): lab/lab.js, loaded when the
 //                                                 button is pressed or the address holds #lab=...
 'use strict';
@@ -327,22 +327,12 @@
     canvas.addEventListener('pointercancel', endDrag);
   }
 
-  // The plan's cascade and cube face lines, from the last frame's plans as JSON (penumbra_plan_json:
-  // FramePlan::to_json of each): a pass per cascade ("cascade N: ... view depth A..B, texel T, ...")
-  // or per cube face ("face +x: ... tile at (X, Y), ... depth A..B, N of M caster(s)"), a pass drawn
+  // The plan's cascade and cube face lines, from the last frame's plans (penumbra_tile_lines:
+  // CourseApp::tile_lines): a pass per cascade ("cascade N: ... view depth A..B, texel T, ...") or
+  // per cube face ("face +x: ... tile at (X, Y), ... depth A..B, N of M caster(s)"), a pass drawn
   // before and kept said "reused: ...", and the camera pass's cascades and blend, or the cube's faces drawn.
   function cascadePlan() {
-    const frame = JSON.parse(Module.UTF8ToString(Module._penumbra_plan_json()));
-    const lines = [];
-    for (const plan of frame.plans || []) {
-      for (const pass of plan.passes) {
-        if (!/cascade|face [+-][xyz]|a cube (map )?of/.test(pass.name + ': ' + pass.detail)) continue;
-        // A pass kept from the last frame says so before its detail; a "reused (...)" in a detail is cut short.
-        const detail = pass.skipped ? 'reused: ' + pass.detail : pass.detail.replace(/reused \([^)]*\)/, 'reused');
-        lines.push((pass.name + ': ' + detail).trim().replace(/^shadow-map\s*/, ''));
-      }
-    }
-    return lines.join('\n');
+    return Module.UTF8ToString(Module._penumbra_tile_lines());
   }
 
   // Each pass's median GPU ms, a line each (and in how many frames, where not in all: a shadow map
