@@ -28,6 +28,7 @@ struct CourseScene;
 }
 namespace penumbra::render {
 class Module;
+struct FrameShape;
 }
 
 namespace penumbra::examples {
@@ -153,6 +154,9 @@ struct Exercise {
     // page's module links only these (plan/techniques/technique.h). unit.ExerciseList checks that
     // they cover every technique and effect its controls and frame can reach.
     std::vector<const render::Module& (*)()> modules = {};
+    // The frame shapes beside the forward one its frames can take (render::area_light_shape,
+    // deferred_shape, shadow_blur_shape: plan/frames/frame.h), checked the same way.
+    std::vector<const render::FrameShape& (*)()> frames = {};
 };
 // Whether the exercise's camera flies (a scene of its own).
 inline bool flies(const Exercise& x) { return x.make_scene != nullptr; }

@@ -8,6 +8,7 @@
 
 #include "../exercise_list.h"
 #include "gl/caps.h"
+#include "plan/frames/frame.h"
 #include "plan/settings.h"
 #include "plan/techniques/technique.h"
 #include "scenes/course_scene.h"

@@ -68,6 +68,7 @@ Exercise soft() {
     x.settings = settings;
     x.draw = draw;
     x.modules = {render::shadow_map_module, render::planar_module, render::volumes_module, render::gooch_module};
+    x.frames = {render::area_light_shape};
     return x;
 }
 

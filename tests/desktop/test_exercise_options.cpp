@@ -6,7 +6,6 @@
 
 #include "exercises.h"
 #include "platform/platform.h"
-#include "plan/techniques/technique.h"
 #include "scenes/course_scene.h"
 #include "scenes/terrain_scene.h"
 
@@ -428,93 +427,6 @@ TEST(ExerciseList, EveryControlNamesAnOptionAndOffersValidValues) {
                            render::find_option(render::option_table(), k.option);
         EXPECT_TRUE(known) << k.option;
     }
-}
-
-namespace {
-
-// The values of a technique option an exercise's frames can be drawn with: its frame's, else every
-// value its control offers (all of the option's where the control lists none), else its default.
-std::vector<std::string> values_reached(const Exercise& x, std::string_view option) {
-    using namespace penumbra;
-    for (const auto& [name, value] : x.frame)
-        if (name == option) return {std::string(value)};
-    for (const auto& c : x.controls) {
-        if (c.option != option) continue;
-        std::vector<std::string> out(c.values.begin(), c.values.end());
-        if (out.empty())
-            for (const auto& ch : render::option_info(option).choices) out.emplace_back(ch.value);
-        return out;
-    }
-    for (const auto& [name, value] : x.defaults)
-        if (name == option) return {std::string(value)};
-    return {CourseApp(x.name).value_of(option)};
-}
-
-// What the exercise's modules (Exercise::modules) leave out of what its frames can use: "" or a list.
-std::string modules_missing(const Exercise& x) {
-    using namespace penumbra;
-    const auto has = [&](const render::Module& m) {
-        return std::any_of(x.modules.begin(), x.modules.end(), [&](auto get) { return &get() == &m; });
-    };
-    std::string missing;
-    for (const std::string& v : values_reached(x, "technique")) {
-        render::Settings s;
-        if (!render::parse_option(s, "technique", v).empty()) {
-            missing += " (not a technique: " + v + ")";
-            continue;
-        }
-        const render::Module& m = render::technique_module(s.technique);
-        if (&m != &render::unshadowed_module() && !has(m)) missing += " technique=" + v;
-    }
-    for (const std::string& v : values_reached(x, "effects")) {
-        render::Settings s;
-        if (!render::parse_option(s, "effects", v).empty()) continue;  // "none"
-        for (render::Effect e : s.effects)
-            if (!has(render::effect_module(e))) missing += " effects=" + std::string(render::to_string(e));
-    }
-    return missing;
-}
-
-}  // namespace
-
-// A browser page links only the technique and effect modules its exercise names: they cover every
-// technique and effect its frame, its controls and its defaults reach (the control: the stencil
-// exercise without its mirror).
-TEST(ExerciseList, EachExerciseNamesTheModulesItsFramesUse) {
-    using namespace penumbra;
-    for (const auto& x : exercise_list()) EXPECT_EQ(modules_missing(x), "") << x.name;
-    Exercise control = *examples::find_exercise("stencil");
-    control.modules.erase(std::remove_if(control.modules.begin(), control.modules.end(),
-                                         [](auto get) { return &get() == &render::mirror_module(); }),
-                          control.modules.end());
-    EXPECT_EQ(modules_missing(control), " effects=mirror effects=mirror effects=mirror");
-    Exercise soft = *examples::find_exercise("soft");
-    soft.modules.pop_back();
-    EXPECT_NE(modules_missing(soft), "");
-    // Every native program has every module.
-    for (render::Technique t : render::kAllTechniques) EXPECT_TRUE(render::technique_linked(t));
-    for (render::Effect e : render::kAllEffects) EXPECT_TRUE(render::effect_linked(e));
-    render::Settings s;
-    s.technique = render::Technique::Volumes;
-    s.effects = {render::Effect::Portal};
-    EXPECT_EQ(render::unlinked_problem(s, "technique"), "");
-    EXPECT_EQ(render::unlinked_problem(s, "effects"), "");
-}
-
-// Whether an option is held only where offered is a fixed list (a page has one exercise): it is
-// the options some exercise's control holds here_only().
-TEST(ExerciseList, TheHereOnlyListIsTheExercisesHereOnlyControls) {
-    using namespace penumbra;
-    std::vector<std::string_view> held;
-    for (const auto& x : exercise_list())
-        for (const auto& c : x.controls)
-            if (c.here_only && std::find(held.begin(), held.end(), c.option) == held.end()) held.push_back(c.option);
-    std::vector<std::string_view> listed = examples::here_only_options();
-    std::sort(held.begin(), held.end());
-    std::sort(listed.begin(), listed.end());
-    EXPECT_EQ(held, listed);
-    EXPECT_FALSE(examples::held_here_only("map-size"));
-    EXPECT_TRUE(examples::held_here_only("post"));
 }
 
 // A control's list is what the page can show: a map size off it becomes the nearest size listed

@@ -199,7 +199,10 @@ void plan_area(Planning& p) {
 
 }  // namespace
 
-const FrameShape kAreaLightShape{"area light", area_applies, plan_area};
+const FrameShape& area_light_shape() {
+    static const FrameShape shape{"area light", area_applies, plan_area};
+    return shape;
+}
 
 std::string AreaStats::text(const AreaStats& a) {
     char buf[320];
@@ -241,7 +244,5 @@ int area_class_samples(int j, int done, int samples, int interleave) {
         if (area_step(s, samples, interleave).pixel_class == j) ++n;
     return n;
 }
-
-const AreaStats* area_of(const FramePlan& p) { return p.find<AreaStats>(); }
 
 }  // namespace penumbra::render

@@ -25,8 +25,9 @@ struct AreaStats {
     static std::string json(const AreaStats& a);
 };
 
-// The plan's light-sample report, or null (not an area-light frame).
-const AreaStats* area_of(const FramePlan& p);
+// The plan's light-sample report, or null (not an area-light frame). Inline: a page without the
+// area-light frame (frame.h: area_light_shape) asks it too.
+inline const AreaStats* area_of(const FramePlan& p) { return p.find<AreaStats>(); }
 
 // Interleaved sampling's order: sample pass s (from 0) of N samples over K x K classes counts light
 // sample s mod N at pixel class (x mod K) + K (y mod K) = (block + round) mod K^2, where round =

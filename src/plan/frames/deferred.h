@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "plan/lights.h"
 #include "plan/techniques/technique.h"
 
 namespace penumbra::render {
@@ -36,5 +37,14 @@ void plan_deferred(PlanContext& c, const Module& module);
 // the whole screen where the camera is inside the sphere's box or it reaches behind the camera;
 // x0 >= x1 when it is off screen.
 glm::vec4 screen_square(const glm::mat4& view_proj, const glm::vec3& centre, float radius);
+
+// Shared by the forward lights (forward_lights.cpp) and the deferred frame (deferred.cpp).
+// The camera's near and far distances (along its view axis) from its projection; false when the
+// far plane is at infinity or the projection is degenerate.
+bool near_far(const glm::mat4& proj, float& n, float& f);
+// "N what" or "N whats".
+std::string count_text(int n, const char* what);
+// The u_point_lights uniforms of lights[first .. first + count).
+std::vector<Uniform> light_uniforms(const std::vector<PointLight>& lights, size_t first, size_t count);
 
 }  // namespace penumbra::render

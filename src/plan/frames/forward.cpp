@@ -33,10 +33,34 @@ void plan_forward(Planning& p) {
 
 const FrameShape kForwardShape{"forward", forward_applies, plan_forward};
 
+// In the browser a page's module links a shape only where its exercise names it (Exercise::frames).
+PENUMBRA_WEAK_IN_PAGES const FrameShape& deferred_shape();
+PENUMBRA_WEAK_IN_PAGES const FrameShape& area_light_shape();
+PENUMBRA_WEAK_IN_PAGES const FrameShape& shadow_blur_shape();
+
+namespace {
+
+using ShapeGetter = const FrameShape& (*)();
+
+ShapeGetter shape_getter(std::string_view name) {
+    if (name == "deferred") return &deferred_shape;
+    if (name == "area light") return &area_light_shape;
+    if (name == "shadow blur") return &shadow_blur_shape;
+    return nullptr;
+}
+
+}  // namespace
+
+bool frame_shape_linked(std::string_view name) { return shape_getter(name) != nullptr; }
+
 void plan_frame_shape(Planning& p) {
     // In the order tried: a deferred frame takes no other shape; the light samples' average is
     // soft already, so it comes before the blur; a hard frame is what is left.
-    static const FrameShape* const shapes[] = {&kDeferredShape, &kAreaLightShape, &kShadowBlurShape, &kForwardShape};
+    const ShapeGetter getters[] = {shape_getter("deferred"), shape_getter("area light"), shape_getter("shadow blur")};
+    std::vector<const FrameShape*> shapes;
+    for (ShapeGetter get : getters)
+        if (get) shapes.push_back(&get());
+    shapes.push_back(&kForwardShape);
     std::vector<std::string> whys;
     for (const FrameShape* shape : shapes) {
         std::string why;

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "plan/techniques/technique.h"
@@ -73,10 +74,14 @@ void screen_lookup(PlanContext& c, Pass& cam, std::vector<CameraItem>& items, co
 void plan_hard_visibility(Planning& p, const Settings& settings, const scene::Light& light, const FramePlan* previous,
                           TargetRef target, const char* name, bool light_sample = false);
 
-// The shapes (each file's).
-extern const FrameShape kDeferredShape;
-extern const FrameShape kAreaLightShape;
-extern const FrameShape kShadowBlurShape;
-extern const FrameShape kForwardShape;
+// The shapes (each file's). A native program has all of them; a browser page's module only the
+// forward shape and those its exercise names (Exercise::frames): plan_frame_shape's references to
+// the others are weak there, as techniques.cpp's to the technique modules.
+const FrameShape& deferred_shape();      // deferred.cpp
+const FrameShape& area_light_shape();    // area_light.cpp
+const FrameShape& shadow_blur_shape();   // shadow_blur.cpp
+extern const FrameShape kForwardShape;   // forward.cpp
+// Whether the shape of that name ("deferred", "area light", "shadow blur") is in this program.
+bool frame_shape_linked(std::string_view name);
 
 }  // namespace penumbra::render

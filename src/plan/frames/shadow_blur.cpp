@@ -63,6 +63,9 @@ void plan_shadow_blur(Planning& p) {
 
 }  // namespace
 
-const FrameShape kShadowBlurShape{"shadow blur", shadow_blur_applies, plan_shadow_blur};
+const FrameShape& shadow_blur_shape() {
+    static const FrameShape shape{"shadow blur", shadow_blur_applies, plan_shadow_blur};
+    return shape;
+}
 
 }  // namespace penumbra::render

@@ -198,11 +198,20 @@ const Module& gooch_module();       // gooch.cpp
 const Module& outline_module();     // outline.cpp
 const Module& mirror_module();      // mirror.cpp
 const Module& portal_module();      // portal.cpp
+// Marks a redeclaration of such a getter in the file that picks among them (techniques.cpp, the
+// frame shapes' forward.cpp): weak in the browser, where wasm-ld resolves a weak function that no
+// linked object defines to a null address; an ordinary reference elsewhere.
+#ifdef __EMSCRIPTEN__
+#define PENUMBRA_WEAK_IN_PAGES __attribute__((weak))
+#else
+#define PENUMBRA_WEAK_IN_PAGES
+#endif
 // Whether the module of technique `t` (effect `e`) is in this program (always, but in a page's).
 bool technique_linked(Technique t);
 bool effect_linked(Effect e);
 // "" unless `option` is "technique" or "effects" and the module of `s`'s value for it is not in
-// this program: then one line naming it. (Only the option being set: a page's stored technique
+// this program, or it asks for a frame shape that is not (area-samples above 1, shading deferred,
+// post shadow-blur: plan/frames/frame.h): then one line naming it. (Only the option being set: a page's stored technique
 // may be one its exercise's frame replaces, Exercise::frame.)
 std::string unlinked_problem(const Settings& s, std::string_view option);
 // The module of no shadows: the camera pass of a frame whose shadow comes from elsewhere (the

@@ -5,25 +5,20 @@
 #include "plan/techniques/technique.h"
 
 #include "plan/frames/area_light.h"
+#include "plan/frames/frame.h"
 #include "plan/post.h"
 
 namespace penumbra::render {
 
-#ifdef __EMSCRIPTEN__
-// In the browser these references are weak: a page's module links a technique's code only where its
-// exercise names the module (Exercise::modules); the others are null here (wasm-ld resolves an
-// undefined weak function to a null address).
-#define PENUMBRA_WEAK_MODULE __attribute__((weak))
-#else
-#define PENUMBRA_WEAK_MODULE
-#endif
-PENUMBRA_WEAK_MODULE const Module& shadow_map_module();
-PENUMBRA_WEAK_MODULE const Module& planar_module();
-PENUMBRA_WEAK_MODULE const Module& volumes_module();
-PENUMBRA_WEAK_MODULE const Module& gooch_module();
-PENUMBRA_WEAK_MODULE const Module& outline_module();
-PENUMBRA_WEAK_MODULE const Module& mirror_module();
-PENUMBRA_WEAK_MODULE const Module& portal_module();
+// In the browser a page's module links a technique's code only where its exercise names the module
+// (Exercise::modules); the others are null here.
+PENUMBRA_WEAK_IN_PAGES const Module& shadow_map_module();
+PENUMBRA_WEAK_IN_PAGES const Module& planar_module();
+PENUMBRA_WEAK_IN_PAGES const Module& volumes_module();
+PENUMBRA_WEAK_IN_PAGES const Module& gooch_module();
+PENUMBRA_WEAK_IN_PAGES const Module& outline_module();
+PENUMBRA_WEAK_IN_PAGES const Module& mirror_module();
+PENUMBRA_WEAK_IN_PAGES const Module& portal_module();
 
 namespace {
 
@@ -74,6 +69,14 @@ std::string unlinked_problem(const Settings& s, std::string_view option) {
     if (option == "effects")
         for (Effect e : s.effects)
             if (!effect_linked(e)) return not_linked(option, to_string(e));
+    // The frame shapes a page may lack (frame.h): the light samples' average, deferred shading, the
+    // blurred visibility.
+    if (option == "area-samples" && s.area_samples > 1 && !frame_shape_linked("area light"))
+        return not_linked(option, std::to_string(s.area_samples));
+    if (option == "shading" && s.shading == Shading::Deferred && !frame_shape_linked("deferred"))
+        return not_linked(option, to_string(s.shading));
+    if (option == "post" && s.post_step(PostKind::ShadowBlur) && !frame_shape_linked("shadow blur"))
+        return not_linked(option, "shadow-blur");
     return {};
 }
 
