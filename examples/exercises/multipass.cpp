@@ -50,7 +50,7 @@ Exercise multipass() {
          {{"post", "shadow-blur:6"}}};
     x.draw = draw;
     x.modules = {render::shadow_map_module, render::planar_module, render::volumes_module};
-    x.frames = {render::deferred_shape, render::shadow_blur_shape};
+    x.frames = {render::deferred_shape, render::shadow_blur_shape, render::image_post_shape};
     return x;
 }
 

@@ -16,6 +16,10 @@
 
 namespace penumbra::render {
 
+// In the browser the post passes (post_passes.cpp) are linked only where an exercise takes them
+// (frame.h: image_post_shape).
+PENUMBRA_WEAK_IN_PAGES void add_post_passes(PlanContext& c, int image, const TargetRef& out);
+
 namespace {
 
 constexpr float kAmbient = 0.25f;
@@ -319,14 +323,15 @@ FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& cap
                            out.height, 0, 0, false};
     // --post blur, bloom: the camera draws into an image of its own, which the post passes read.
     const TargetRef output = c.camera_target;
-    if (image_post(s))
+    const bool post = image_post(s) && frame_shape_linked("image post");
+    if (post)
         c.camera_target = {c.add_resource(texture_desc(Output::texture("post-scene", out.width, out.height,
                                                                        gl::Sampling::Linear, gl::Wrap::Clamp),
                                                        caps, stencil),
                                           "", "the camera's image before --post"),
                            out.width, out.height, 0, 0, false};
     plan_frame_shape(p);
-    if (image_post(s)) add_post_passes(c, c.camera_target.resource, output);
+    if (post) add_post_passes(c, c.camera_target.resource, output);
     add_copy_pass(c, out, output);
     return std::move(p.plan);
 }

@@ -48,8 +48,12 @@ std::string modules_missing(const Exercise& x) {
     std::string missing;
     for (const std::string& v : values_reached(x, "shading"))
         if (v == "deferred" && !has_shape(render::deferred_shape())) missing += " shading=" + v;
-    for (const std::string& v : values_reached(x, "post"))
+    for (const std::string& v : values_reached(x, "post")) {
         if (v.find("shadow-blur") != std::string::npos && !has_shape(render::shadow_blur_shape())) missing += " post=" + v;
+        if ((v.find("blur:") == 0 || v.find(",blur") != std::string::npos || v.find("bloom") != std::string::npos) &&
+            !has_shape(render::image_post_shape()))
+            missing += " post=" + v;
+    }
     for (const std::string& v : values_reached(x, "area-samples"))
         if (std::stoi(v) > 1 && !has_shape(render::area_light_shape())) missing += " area-samples=" + v;
     if (examples::offers(x, "reference") && !has_shape(render::area_light_shape())) missing += " reference=on";
@@ -94,8 +98,11 @@ TEST(ExerciseList, EachExerciseNamesTheModulesItsFramesUse) {
     Exercise multipass = *examples::find_exercise("multipass");
     multipass.frames.erase(multipass.frames.begin());
     EXPECT_EQ(modules_missing(multipass), " shading=deferred");
+    multipass.frames.pop_back();
+    EXPECT_EQ(modules_missing(multipass), " shading=deferred post=blur:4 post=bloom:0.6 post=shadow-blur:6,bloom:0.6");
     // Every native program has every module and every shape.
-    for (const char* shape : {"deferred", "area light", "shadow blur"}) EXPECT_TRUE(render::frame_shape_linked(shape));
+    for (const char* shape : {"deferred", "area light", "shadow blur", "image post"})
+        EXPECT_TRUE(render::frame_shape_linked(shape));
     for (render::Technique t : render::kAllTechniques) EXPECT_TRUE(render::technique_linked(t));
     for (render::Effect e : render::kAllEffects) EXPECT_TRUE(render::effect_linked(e));
     render::Settings s;

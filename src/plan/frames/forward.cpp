@@ -37,6 +37,7 @@ const FrameShape kForwardShape{"forward", forward_applies, plan_forward};
 PENUMBRA_WEAK_IN_PAGES const FrameShape& deferred_shape();
 PENUMBRA_WEAK_IN_PAGES const FrameShape& area_light_shape();
 PENUMBRA_WEAK_IN_PAGES const FrameShape& shadow_blur_shape();
+PENUMBRA_WEAK_IN_PAGES const FrameShape& image_post_shape();
 
 namespace {
 
@@ -46,6 +47,7 @@ ShapeGetter shape_getter(std::string_view name) {
     if (name == "deferred") return &deferred_shape;
     if (name == "area light") return &area_light_shape;
     if (name == "shadow blur") return &shadow_blur_shape;
+    if (name == "image post") return &image_post_shape;
     return nullptr;
 }
 

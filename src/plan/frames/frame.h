@@ -81,7 +81,11 @@ const FrameShape& deferred_shape();      // deferred.cpp
 const FrameShape& area_light_shape();    // area_light.cpp
 const FrameShape& shadow_blur_shape();   // shadow_blur.cpp
 extern const FrameShape kForwardShape;   // forward.cpp
-// Whether the shape of that name ("deferred", "area light", "shadow blur") is in this program.
+// --post blur and bloom (post_passes.cpp): not one of plan_frame_shape's, plan() adds their
+// passes after the frame's; reached the same way.
+const FrameShape& image_post_shape();
+// Whether the shape of that name ("deferred", "area light", "shadow blur", "image post") is in
+// this program.
 bool frame_shape_linked(std::string_view name);
 
 }  // namespace penumbra::render

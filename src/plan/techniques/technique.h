@@ -211,7 +211,7 @@ bool technique_linked(Technique t);
 bool effect_linked(Effect e);
 // "" unless `option` is "technique" or "effects" and the module of `s`'s value for it is not in
 // this program, or it asks for a frame shape that is not (area-samples above 1, shading deferred,
-// post shadow-blur: plan/frames/frame.h): then one line naming it. (Only the option being set: a page's stored technique
+// post shadow-blur, blur or bloom: plan/frames/frame.h): then one line naming it. (Only the option being set: a page's stored technique
 // may be one its exercise's frame replaces, Exercise::frame.)
 std::string unlinked_problem(const Settings& s, std::string_view option);
 // The module of no shadows: the camera pass of a frame whose shadow comes from elsewhere (the

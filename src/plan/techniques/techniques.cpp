@@ -77,6 +77,7 @@ std::string unlinked_problem(const Settings& s, std::string_view option) {
         return not_linked(option, to_string(s.shading));
     if (option == "post" && s.post_step(PostKind::ShadowBlur) && !frame_shape_linked("shadow blur"))
         return not_linked(option, "shadow-blur");
+    if (option == "post" && image_post(s) && !frame_shape_linked("image post")) return not_linked(option, post_text(s.post));
     return {};
 }
 
