@@ -11,6 +11,7 @@
 #include "plan/json.h"
 #include "plan/techniques/technique.h"
 #include "scene/eye.h"
+#include "scenes/portal_scene.h"
 #include "shadow/encoding.h"
 
 namespace penumbra::examples {
@@ -50,7 +51,9 @@ const Exercise& exercise_named(std::string_view name) {
 // The one place a plan's light-sample statistics are read (the plan's area, where it has one).
 const render::AreaStats* area_stats(const render::FramePlan& plan) { return render::area_of(plan); }
 
-CourseApp::CourseApp(std::string_view exercise) : exercise_(&exercise_named(exercise)), course_(scene::make_course_scene()) {
+// Without its portal: course_scene_for() adds it for the first frame that asks for it.
+CourseApp::CourseApp(std::string_view exercise)
+    : exercise_(&exercise_named(exercise)), course_(scene::make_course_scene(10, false)) {
     scene_camera_ = course_.scene.camera;
     // What any exercise's frames add to the course scene (W09P2b's ground), before a GL object is made.
     for (const Exercise& x : exercise_list())
@@ -299,8 +302,14 @@ int CourseApp::gpu_discarded() const { return renderer_ ? renderer_->gpu_timer()
 
 // ---- drawing --------------------------------------------------------------------------------
 
+const scene::Scene& CourseApp::course_scene_for(const render::Settings& s) {
+    const bool asked = std::find(s.effects.begin(), s.effects.end(), render::Effect::Portal) != s.effects.end();
+    if (asked && !course_.scene.portal) course_.scene.portal = scene::make_course_portal();
+    return course_.scene;
+}
+
 void CourseApp::render(const render::Settings& s, const render::FrameInputs& in, const char* label) {
-    render_plan(course_.scene, s, in, label);
+    render_plan(course_scene_for(s), s, in, label);
 }
 
 void CourseApp::render_own_scene(const render::Settings& s, const render::FrameInputs& in) {
@@ -364,7 +373,8 @@ std::vector<render::SnippetProblem> CourseApp::set_snippets(std::string_view tex
     }
     if (const std::string why = lab_refusal(); !why.empty()) return {{0, why}};
     scene::animate_course(course_, clock_.light, clock_.jump);
-    auto problems = render::set_snippets(*renderer_, course_.scene, frame_settings(), text);
+    const render::Settings s = frame_settings();
+    auto problems = render::set_snippets(*renderer_, course_scene_for(s), s, text);
     if (problems.empty()) snippets_ = std::string(text);
     return problems;
 }
@@ -381,7 +391,8 @@ render::LabVerdict CourseApp::lab_check(std::string_view text, int width, int he
     }
     scene::animate_course(course_, t, t);  // the next draw() puts the scene back at the clocks'
     course_.scene.camera = scene_camera_;
-    v = render::lab_check(*renderer_, course_.scene, frame_settings(), text, render::offscreen(width, height));
+    const render::Settings s = frame_settings();
+    v = render::lab_check(*renderer_, course_scene_for(s), s, text, render::offscreen(width, height));
     if (v.compiles) snippets_ = std::string(text);  // else the renderer kept snippets_ (render::lab_check)
     return v;
 }

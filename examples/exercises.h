@@ -147,6 +147,11 @@ public:
     double fly_step() const;
     // The scene the current exercise draws.
     const scene::Scene& scene() const;
+    // The course scene for a frame with settings `s`: its portal (--effects portal, the stencil
+    // exercise's) is made the first time a frame asks for it, not with the scene: every other
+    // page would build the other scene for nothing (about 15 ms of the first frame in the
+    // browser, docs/payload.md). Adding it changes the scene, so the renderer uploads it again.
+    const scene::Scene& course_scene_for(const render::Settings& s);
 
     // The shader lab (docs/snippets.md): on, the frames are drawn with Settings::lab
     // (render::lab_settings of the exercise's) and the snippets set here, where the exercise's

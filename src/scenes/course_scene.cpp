@@ -37,7 +37,7 @@ double course_teapot_landing(double t) {
     return std::ceil(t / kJumpPeriod - 1e-6) * kJumpPeriod;
 }
 
-CourseScene make_course_scene(int teapot_level) {
+CourseScene make_course_scene(int teapot_level, bool portal) {
     CourseScene c;
     Scene& s = c.scene;
 
@@ -79,7 +79,7 @@ CourseScene make_course_scene(int teapot_level) {
     s.camera.yfov = glm::radians(45.0f);
     s.camera.znear = 0.1f;
     s.camera.zfar = 30.0f;
-    s.portal = make_course_portal();  // drawn only under --effects portal
+    if (portal) s.portal = make_course_portal();  // drawn only under --effects portal
 
     animate_course(c, 0.0, 0.0);
     return c;

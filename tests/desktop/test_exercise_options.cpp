@@ -225,6 +225,30 @@ TEST(ExerciseOptions, SoftShadows) {
         EXPECT_NE(help.find(key), std::string::npos) << key << help;
 }
 
+// The course scene's portal (the stencil exercise's effects=portal) is made for the first frame
+// that asks for it, not with the scene. desktop.stencil-portal and web.stencil draw it.
+TEST(ExerciseOptions, ThePortalIsMadeForTheFirstFrameThatAsksForIt) {
+    CourseApp a("stencil");
+    EXPECT_FALSE(a.scene().portal) << "made with the scene: every page would build it for nothing";
+    a.course_scene_for(a.frame_settings());
+    EXPECT_FALSE(a.scene().portal) << "the exercise's default, effects=outline, asks for no portal";
+    ASSERT_EQ(a.set_option("effects", "outline,mirror,portal"), "");
+    const penumbra::scene::Scene& s = a.course_scene_for(a.frame_settings());
+    ASSERT_TRUE(s.portal);
+    ASSERT_NE(s.portal->beyond, nullptr);
+    // The portal of the CLI's course scene (penumbra render --effects portal).
+    const penumbra::scene::CourseScene cli = penumbra::scene::make_course_scene();
+    ASSERT_TRUE(cli.scene.portal);
+    EXPECT_EQ(s.portal->beyond->meshes.size(), cli.scene.portal->beyond->meshes.size());
+    EXPECT_EQ(s.portal->beyond->objects.size(), cli.scene.portal->beyond->objects.size());
+    EXPECT_TRUE(s.portal->world == cli.scene.portal->world);
+    const penumbra::scene::Scene* made = s.portal->beyond.get();
+    ASSERT_EQ(a.set_option("effects", "none"), "");
+    a.course_scene_for(a.frame_settings());
+    ASSERT_EQ(a.set_option("effects", "portal"), "");
+    EXPECT_EQ(a.course_scene_for(a.frame_settings()).portal->beyond.get(), made) << "made once";
+}
+
 TEST(ExerciseOptions, StencilOutline) {
     using penumbra::render::Effect;
     using penumbra::render::Technique;
