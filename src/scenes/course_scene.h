@@ -15,7 +15,7 @@ struct CourseScene {
 
 // Geometry, materials and the marble texture; the animated parts at t = 0. With `portal` the
 // scene's portal (--effects portal's frame and the other scene seen through it, portal_scene.h);
-// without it Scene::portal is null: a page that may never draw it adds it when a frame asks for
+// without it Scene::portal is empty: a page that may never draw it adds it when a frame asks for
 // it (CourseApp::course_scene_for).
 CourseScene make_course_scene(int teapot_level = 10, bool portal = true);
 
