@@ -303,8 +303,7 @@ int CourseApp::gpu_discarded() const { return renderer_ ? renderer_->gpu_timer()
 // ---- drawing --------------------------------------------------------------------------------
 
 const scene::Scene& CourseApp::course_scene_for(const render::Settings& s) {
-    const bool asked = std::find(s.effects.begin(), s.effects.end(), render::Effect::Portal) != s.effects.end();
-    if (asked && !course_.scene.portal) course_.scene.portal = scene::make_course_portal();
+    if (s.has(render::Effect::Portal) && !course_.scene.portal) course_.scene.portal = scene::make_course_portal();
     return course_.scene;
 }
 

@@ -3,6 +3,7 @@
 // takes the image post (frame.h: image_post_shape) or a shape that draws such passes (deferred,
 // the shadow blur); the option's parsing stays in post.cpp.
 #include <algorithm>
+#include <cstdio>
 
 #include "plan/frames/frame.h"
 #include "plan/options.h"
