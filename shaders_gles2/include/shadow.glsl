@@ -90,27 +90,36 @@ vec3 lightRay(vec3 c) {
 // middle, 0 for a symmetric frustum) the eye depth changes per
 // unit of NDC x by z n_x tan_x / |n.r| (y likewise); orthographic: half_w n_x / |n_z|. Converted to
 // window depth by d(z_window)/d(z_eye). |n.r| is floored at 0.05 |r| (a surface within 3 degrees
-// of edge-on to the light, barely lit anyway), which caps the slope at 20.
+// of edge-on to the light, barely lit anyway), which caps the slope at 20. The hard lookup on a map
+// finer than 2048 texels lowers that floor with the texel (to 0.025 from 4096 on), so the capped
+// bias stays the 2048 map's: near the terminator of a tessellated surface the facet is steeper than
+// its interpolated normal says, and that gap does not shrink with the texel (docs/precision.md: the
+// course's acne rose at 4096 without it). PCF and PCSS keep 0.05: their wider reach peter-pans.
 uniform vec2 u_bias_kernel;     // x: one texel in NDC (2 / map size); y: the kernel's reach in texels per axis
 
-// reach: how far the kernel reaches, in texels per axis.
-float shadowBiasReach(vec3 normal, vec3 c, float reach) {
+// reach: how far the kernel reaches, in texels per axis; floorFacing: the floor of |n.r| / |r|.
+float shadowBiasFloor(vec3 normal, vec3 c, float reach, float floorFacing) {
     vec3 nl = SHADOW_ROTATE(normal);
     float n = SHADOW_SLOPE.z;
     float f = SHADOW_SLOPE.w;
     float across = (abs(nl.x) * SHADOW_SLOPE.x + abs(nl.y) * SHADOW_SLOPE.y) * u_bias_kernel.x * reach;
 #ifdef LIGHT_PERSPECTIVE
     vec3 ray = lightRay(c);
-    float facing = max(abs(dot(nl, ray)), 0.05 * length(ray));
+    float facing = max(abs(dot(nl, ray)), floorFacing * length(ray));
     float zEye = 2.0 * n * f / (f + n - (2.0 * c.z - 1.0) * (f - n));
     float dz = zEye * across / facing;
     return u_bias + dz * n * f / ((f - n) * zEye * zEye);
 #else
-    float facing = max(abs(nl.z), 0.05);
+    float facing = max(abs(nl.z), floorFacing);
     return u_bias + across / facing / (f - n);
 #endif
 }
+float shadowBiasReach(vec3 normal, vec3 c, float reach) { return shadowBiasFloor(normal, c, reach, 0.05); }
+#ifdef FILTER_HARD
+float shadowBias(vec3 normal, vec3 c) { return shadowBiasFloor(normal, c, u_bias_kernel.y, 0.05 * clamp(1024.0 * u_bias_kernel.x, 0.5, 1.0)); }
+#else
 float shadowBias(vec3 normal, vec3 c) { return shadowBiasReach(normal, c, u_bias_kernel.y); }
+#endif
 #else
 float shadowBiasReach(vec3 normal, vec3 c, float reach) { return u_bias; }
 float shadowBias(vec3 normal, vec3 c) { return u_bias; }
