@@ -6,7 +6,7 @@ import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
 import path from 'node:path';
 import { launch } from '../../tests/web/harness.mjs';
-import { OUR_DEFAULTS, OURS, ROOT, SIZE, THREE_CONFIGS, log, median, oursOptions, tname, threeOptions } from './config.mjs';
+import { OURS, PAGE_DEFAULTS, ROOT, SIZE, THREE_CONFIGS, log, median, oursOptions, tname, threeOptions } from './config.mjs';
 import { savePng } from './images.mjs';
 
 // A static server on 127.0.0.1 for the site (/), the three.js page (/compare/), three.js itself
@@ -58,7 +58,7 @@ async function openOurs(browser, server, c, aov, problems) {
   if (s.width !== SIZE || s.height !== SIZE) throw new Error(`penumbra's canvas is ${s.width}x${s.height}`);
   if (s.mapSize !== c.map) throw new Error(`penumbra's map is ${s.mapSize}, not ${c.map}`);
   for (const [k, v] of Object.entries(oursOptions(c)))
-    if ((s.options[k] ?? OUR_DEFAULTS[k]) !== v) throw new Error(`penumbra's page took ${k}=${s.options[k]} for ${v} (${s.status})`);
+    if ((s.options[k] ?? PAGE_DEFAULTS[k]) !== v) throw new Error(`penumbra's page took ${k}=${s.options[k]} for ${v} (${s.status})`);
   return { ...p, state: s };
 }
 

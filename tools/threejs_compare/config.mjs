@@ -7,7 +7,8 @@ export const MAP = 1024;
 
 // penumbra's W09P2c page. Each row's options go into the page's URL (and are set again before it is
 // timed); what a row leaves out is the page's default. 'rgba-hard' and 'rgba-pcf4x4' are the
-// defaults (bias auto, the tight light frustum, faces auto, PCF's early exit, map 1024); the
+// defaults (bias auto, the shadows fit, faces auto, PCF's early exit, map 1024); 'rgba-hard-tight'
+// is the default before issue 37 (the tight light frustum, which three.js's rows are given); the
 // 'sheet' rows are the settings before issue 9 (the sheet's bias, both faces, the frustum fitted
 // around the whole scene, the full PCF kernel); the 'matched' row is what three.js's matched rows
 // are given (the sheet's bias, both faces, the tight frustum three.js is fitted to as well), to
@@ -21,14 +22,20 @@ export const OURS = [
   { id: 'rgba-pcf4x4-512', label: 'rgba pcf4x4, defaults, map 512', encoding: 'rgba', filter: 'pcf4x4', map: 512 },
   { id: 'rgba-pcf4x4-2048', label: 'rgba pcf4x4, defaults, map 2048', encoding: 'rgba', filter: 'pcf4x4', map: 2048 },
   { id: 'depthtex-hard', label: 'depthtex hard, defaults', encoding: 'depthtex', filter: 'hard', map: 1024 },
+  { id: 'depthtex-hard-512', label: 'depthtex hard, defaults, map 512', encoding: 'depthtex', filter: 'hard', map: 512 },
   { id: 'depthtex-pcf4x4', label: 'depthtex pcf4x4, defaults', encoding: 'depthtex', filter: 'pcf4x4', map: 1024 },
+  { id: 'depthtex-pcf4x4-512', label: 'depthtex pcf4x4, defaults, map 512', encoding: 'depthtex', filter: 'pcf4x4', map: 512 },
+  { id: 'rgba-hard-tight', label: 'rgba hard, tight fit (the default before issue 37)', encoding: 'rgba', filter: 'hard', map: 1024, 'light-fit': 'tight' },
   { id: 'rgba-hard-sheet', label: 'rgba hard, before (sheet bias, scene fit)', encoding: 'rgba', filter: 'hard', map: 1024, ...BEFORE },
   { id: 'rgba-pcf4x4-sheet', label: 'rgba pcf4x4, before (sheet bias, scene fit, full kernel)', encoding: 'rgba', filter: 'pcf4x4', map: 1024, ...BEFORE },
   { id: 'depthtex-hard-matched', label: 'depthtex hard, matched to three.js (sheet bias, both faces)', encoding: 'depthtex', filter: 'hard', map: 1024, ...BEFORE, 'light-fit': 'tight' },
 ];
 // The library's defaults of the options a row may set (src/plan/option_table.cpp); a page reports an
 // option it has no control for only when it differs from its default.
-export const OUR_DEFAULTS = { bias: 'auto', 'map-faces': 'auto', 'light-fit': 'tight', 'pcf-kernel': 'early-exit' };
+export const OUR_DEFAULTS = { bias: 'auto', 'map-faces': 'auto', 'light-fit': 'shadows', 'pcf-kernel': 'early-exit' };
+// The W09P2c page's own defaults where they differ from the library's (examples/exercises/w09p2c.cpp:
+// the course's map is the tight fit, the table in it); what its state reports when it leaves an option out.
+export const PAGE_DEFAULTS = { ...OUR_DEFAULTS, 'light-fit': 'tight' };
 // The page options of a row, in URL order.
 export const oursOptions = (c) => {
   const o = { encoding: c.encoding, filter: c.filter, 'map-size': String(c.map) };
