@@ -24,7 +24,7 @@ vec4 g_shadow_tile;   // xy: the tile's lower-left corner in the atlas, zw: its 
 #ifdef CASCADES
 vec4 g_cascade_slope;  // the cascade's u_bias_slope
 #define SHADOW_SLOPE g_cascade_slope
-#elif defined(BIAS_AUTO) || defined(FILTER_PCSS)
+#elif (defined(BIAS_AUTO) && !defined(BIAS_PER_VERTEX)) || defined(FILTER_PCSS)
 uniform vec4 u_bias_slope;      // x, y: tan of the half-angles (perspective) or half-extents
                                 // (orthographic); z, w: the light's near and far
 #define SHADOW_SLOPE u_bias_slope
@@ -64,7 +64,7 @@ vec3 cubeFaceWorld(vec3 e) {
 #endif
 #endif
 
-#if defined(BIAS_AUTO) || defined(PCSS_LAYERED)
+#if (defined(BIAS_AUTO) && !defined(BIAS_PER_VERTEX)) || defined(PCSS_LAYERED)
 // The light's eye space, for the receiver's plane (the auto bias's slope, PCSS's layered blocker
 // search). A cube has its own (cubeFaceEye, centre 0).
 #ifndef CUBE
@@ -83,7 +83,12 @@ vec3 lightRay(vec3 c) {
 #endif
 #endif
 
-#ifdef BIAS_AUTO
+#ifdef BIAS_PER_VERTEX
+// The auto bias's slope term from lit.vert (one map, the forward pass; see there): constant over a
+// flat face, so a vertex computes it for the whole face.
+varying float v_bias_slope;
+float shadowBias(vec3 normal, vec3 c) { return u_bias + v_bias_slope; }
+#elif defined(BIAS_AUTO)
 // Receiver-plane slope bias, computed from the receiver's normal in the light's eye space: across
 // the kernel's reach, how far does the surface move along the light's axis? For a plane with
 // normal n hit along the ray r = (c_x + x tan_x, c_y + y tan_y, -1) (perspective; c: the window's
@@ -98,6 +103,7 @@ vec3 lightRay(vec3 c) {
 uniform vec2 u_bias_kernel;     // x: one texel in NDC (2 / map size); y: the kernel's reach in texels per axis
 
 // reach: how far the kernel reaches, in texels per axis; floorFacing: the floor of |n.r| / |r|.
+#include "bias_floor.glsl"
 float shadowBiasFloor(vec3 normal, vec3 c, float reach, float floorFacing) {
     vec3 nl = SHADOW_ROTATE(normal);
     float n = SHADOW_SLOPE.z;
@@ -116,7 +122,7 @@ float shadowBiasFloor(vec3 normal, vec3 c, float reach, float floorFacing) {
 }
 float shadowBiasReach(vec3 normal, vec3 c, float reach) { return shadowBiasFloor(normal, c, reach, 0.05); }
 #ifdef FILTER_HARD
-float shadowBias(vec3 normal, vec3 c) { return shadowBiasFloor(normal, c, u_bias_kernel.y, 0.05 * clamp(1024.0 * u_bias_kernel.x, 0.5, 1.0)); }
+float shadowBias(vec3 normal, vec3 c) { return shadowBiasFloor(normal, c, u_bias_kernel.y, SHADOW_HARD_FLOOR(u_bias_kernel.x)); }
 #else
 float shadowBias(vec3 normal, vec3 c) { return shadowBiasReach(normal, c, u_bias_kernel.y); }
 #endif

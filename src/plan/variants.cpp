@@ -91,6 +91,11 @@ Variant lit_variant(const LitFeatures& f) {
             if (f.pcss_layered) v.defines.emplace_back("PCSS_LAYERED");
         }
         if (f.bias_auto) v.defines.emplace_back("BIAS_AUTO");
+        // The slope term per vertex (lit.vert), exact where it is constant over each triangle: a
+        // faceted mesh, one map, lit.vert's pass (not the deferred one), not PCSS (whose reach is
+        // per fragment).
+        if (f.bias_auto && f.faceted && f.cascades <= 1 && !f.cube && !pcss && f.gbuffer != Gbuffer::Read)
+            v.defines.emplace_back("BIAS_PER_VERTEX");
         if (f.light_perspective && (f.bias_auto || pcss)) v.defines.emplace_back("LIGHT_PERSPECTIVE");
         if (f.mediump) v.defines.emplace_back("EMULATE_MEDIUMP");
         if (f.lab) v.defines.emplace_back("LAB");
@@ -267,6 +272,9 @@ std::vector<Variant> all_variants() {
                             sm.light_perspective = perspective;
                             sm.mediump = mediump;
                             shadowing.push_back(sm);
+                            // A faceted receiver: the slope per vertex (BIAS_PER_VERTEX).
+                            sm.faceted = true;
+                            if (bias_auto && f != shadow::Filter::PCSS) shadowing.push_back(sm);
                         }
             }
     // Each with the textured / spot / visibility bits, and the glTF material features that the
@@ -407,6 +415,7 @@ std::vector<Variant> all_variants() {
         if (base.mediump || (base.shadow_map && base.pcf_kernel != shadow::PcfKernel::EarlyExit &&
                              shadow::pcf_early_exit_applies(base.filter)))
             continue;
+        if (base.faceted) continue;  // no vertices: the deferred pass keeps the slope per fragment
         base.gbuffer = Gbuffer::Read;
         for (int bits = 0; bits < 4; ++bits) {
             base.spot = bits & 1;

@@ -47,6 +47,7 @@ struct LitFeatures {
     bool spot = false;
     bool visibility_aov = false;
     bool bias_auto = false;          // receiver slope bias (with shadow_map)
+    bool faceted = false;            // the receiver's mesh is faceted (scene::Mesh::faceted): bias_auto's slope per vertex
     bool light_perspective = false;  // the light's projection, for bias_auto's depth slope
     bool mediump = false;            // emulate fp16 along the depth path
     int cascades = 0;                // with shadow_map, more than 1: that many cascades in one atlas

@@ -89,12 +89,32 @@ bool is_convex(const Topology& t, bool closed) {
     return behind;
 }
 
+bool is_faceted(const Mesh& mesh) {
+    if (mesh.indices.size() < 3 || mesh.normals.size() != mesh.positions.size()) return false;
+    constexpr float kCos = 0.9999995f;  // cos(1e-3)
+    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        const std::uint32_t v[3] = {mesh.indices[i], mesh.indices[i + 1], mesh.indices[i + 2]};
+        for (std::uint32_t k : v)
+            if (k >= mesh.positions.size()) return false;
+        const glm::vec3 g = glm::cross(mesh.positions[v[1]] - mesh.positions[v[0]], mesh.positions[v[2]] - mesh.positions[v[0]]);
+        const float len = glm::length(g);
+        if (!(len > 0.0f)) continue;
+        for (std::uint32_t k : v) {
+            const glm::vec3& n = mesh.normals[k];
+            const float nl = glm::length(n);
+            if (!(nl > 0.0f) || std::abs(glm::dot(n, g)) < kCos * nl * len) return false;
+        }
+    }
+    return true;
+}
+
 void seal(Mesh& mesh) {
     auto t = std::make_shared<Topology>(weld(mesh));
     bool in_range = true;
     for (std::uint32_t i : mesh.indices) in_range = in_range && i < mesh.positions.size();
     mesh.closed = in_range && is_closed(*t);
     mesh.convex = in_range && is_convex(*t, mesh.closed);
+    mesh.faceted = in_range && is_faceted(mesh);
     mesh.topology = std::move(t);
 }
 

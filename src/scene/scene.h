@@ -27,6 +27,10 @@ struct Mesh {
     // below): flat, or closed and convex. A shadow map need not hold it for its own sake. Set
     // with `closed` by seal().
     bool convex = false;
+    // Every triangle's vertex normals are its plane's normal (is_faceted below): a box, a floor,
+    // not a smooth teapot. The auto bias's slope is then the same over each triangle, and the
+    // camera pass takes it per vertex (lit.vert). Set with `closed` by seal().
+    bool faceted = false;
     // Its triangles over welded positions (weld below): what shadow volumes find silhouette edges
     // in. Set with `closed` by seal(); absent in a mesh made by hand (weld() it when needed).
     std::shared_ptr<const struct Topology> topology;
@@ -53,7 +57,11 @@ bool is_closed(const Topology& topology);
 // vertex-triangle pairs) and within 1e-5 of the mesh's size of a plane counts as on it.
 bool is_convex(const Topology& topology, bool closed);
 
-// Sets mesh.topology, mesh.closed and mesh.convex from the mesh's triangles: call where a mesh is made.
+// Whether every triangle's three vertex normals lie along the triangle's own normal (either way
+// round; within 1e-3 radians). Degenerate triangles are not asked; no triangle at all: false.
+bool is_faceted(const Mesh& mesh);
+
+// Sets mesh.topology, mesh.closed, mesh.convex and mesh.faceted from the mesh's triangles: call where a mesh is made.
 void seal(Mesh& mesh);
 
 // 8-bit RGBA image, rows stored top row first.

@@ -112,6 +112,23 @@ TEST(Casting, FlatAndClosedConvexMeshesCannotShadowThemselves) {
     EXPECT_FALSE(dented.convex);
 }
 
+TEST(Casting, FacetedMeshesHaveTheirTrianglesNormals) {
+    EXPECT_TRUE(scene::make_quad(4.0f).faceted);
+    EXPECT_TRUE(scene::make_box(glm::vec3(1.0f, 2.0f, 0.5f)).faceted);
+    EXPECT_FALSE(scene::make_sphere(1.0f, 16, 8).faceted) << "smooth normals";
+    EXPECT_FALSE(scene::make_teapot(4).faceted);
+    // The control: one corner's normal turned by 0.01 radians.
+    scene::Mesh tilted = scene::make_quad(4.0f);
+    tilted.normals[0] = glm::normalize(tilted.normals[0] + glm::vec3(0.01f, 0.0f, 0.0f));
+    scene::seal(tilted);
+    EXPECT_FALSE(tilted.faceted);
+    // Either way round (a normal against the winding): still the triangle's own line.
+    scene::Mesh flipped = scene::make_quad(4.0f);
+    for (glm::vec3& n : flipped.normals) n = -n;
+    scene::seal(flipped);
+    EXPECT_TRUE(flipped.faceted);
+}
+
 TEST(Casting, TheShadowsFitLeavesTheTableOutAndCutsTheWindowToTheTeapot) {
     scene::CourseScene course = scene::make_course_scene(4);
     scene::animate_course(course, 0.6, 0.6);

@@ -393,6 +393,31 @@ TEST(PcfKernel, TheEarlyExitDiffersOnlyWhereTheCornersAgreeAndAnInnerTapDoesNot)
     EXPECT_EQ(differ, 2 * 4095);
 }
 
+// The auto bias's slope per vertex (lit.vert) only where it is the same over each triangle: the
+// table (faceted), not the teapot (smooth normals); one map in the forward pass, not PCSS, the
+// cascades or the cube, whose lookups choose their map or reach per fragment.
+TEST_F(PlanTest, TheBiasSlopeIsPerVertexOnFacetedReceiversWithOneMap) {
+    const auto per_vertex = [&](const FramePlan& p, int object) {
+        for (const auto& d : p.passes.back().draws)
+            if (d.object == object) return has_define(d, "BIAS_PER_VERTEX");
+        ADD_FAILURE() << "object " << object << " not drawn";
+        return false;
+    };
+    FramePlan p = make();
+    EXPECT_TRUE(per_vertex(p, course.table));
+    EXPECT_FALSE(per_vertex(p, course.teapot));
+    s.bias_auto = false;
+    s.bias = 0.0015f;
+    EXPECT_FALSE(per_vertex(make(), course.table)) << "a constant bias has no slope";
+    s.bias_auto = true;
+    s.filter = shadow::Filter::PCSS;
+    EXPECT_FALSE(per_vertex(make(), course.table));
+    s.filter = shadow::Filter::PCF4x4;
+    EXPECT_TRUE(per_vertex(make(), course.table));
+    s.cascades = render::Settings::kCube;
+    EXPECT_FALSE(per_vertex(make(), course.table));
+}
+
 TEST_F(PlanTest, PcfKernelChoosesTheLookupsVariant) {
     s.filter = shadow::Filter::PCF4x4;
     const FramePlan early = make();

@@ -553,6 +553,8 @@ public:
             lf.filter = s.filter;
             lf.pcf_kernel = s.pcf_kernel;
             lf.bias_auto = s.bias_auto;
+            // A scene object's mesh (-1: a full-screen pass or a draw an effect adds: per fragment).
+            lf.faceted = it.object >= 0 && c.scene.meshes[static_cast<size_t>(c.scene.objects[static_cast<size_t>(it.object)].mesh)].faceted;
             lf.light_perspective = f.perspective;
             lf.mediump = s.precision == shadow::Precision::Mediump;
             lf.lab = s.lab;
