@@ -45,11 +45,7 @@ float biasSlope(vec3 normal, vec4 c) {
     float n = u_bias_slope.z;
     float f = u_bias_slope.w;
     float across = (abs(nl.x) * u_bias_slope.x + abs(nl.y) * u_bias_slope.y) * u_bias_kernel.x * u_bias_kernel.y;
-#ifdef FILTER_HARD
-    float floorFacing = SHADOW_HARD_FLOOR(u_bias_kernel.x);
-#else
-    float floorFacing = 0.05;
-#endif
+    float floorFacing = SHADOW_FACING_FLOOR(u_bias_kernel.x);
 #ifdef LIGHT_PERSPECTIVE
     // The point in the light's eye space from its map coordinates (x, y in [0, w], w the distance
     // along the light's axis): linear, no division, right behind the light too.

@@ -1,6 +1,11 @@
-// The floor of |n.r| / |r| in the auto bias's slope for the hard lookup, from one texel in NDC
-// (u_bias_kernel.x): 0.05 (a slope of at most 20) up to a 2048 map, then lower with the texel, to
-// 0.025 from 4096 on, so that the capped bias stays the 2048 map's (shadow.glsl, docs/precision.md).
-#ifndef SHADOW_HARD_FLOOR
-#define SHADOW_HARD_FLOOR(texel) (0.05 * clamp(1024.0 * (texel), 0.5, 1.0))
+// The floor of |n.r| / |r| in the auto bias's slope, from one texel in NDC (u_bias_kernel.x): 0.05
+// (a slope of at most 20). The hard lookup lowers it with the texel beyond a 2048 map, to 0.025
+// from 4096 on, so that the capped bias stays the 2048 map's; PCF and PCSS keep 0.05 (shadow.glsl,
+// docs/precision.md). Read by the fragment stage (shadow.glsl) and the vertex stage (lit.vert).
+#ifndef SHADOW_FACING_FLOOR
+#ifdef FILTER_HARD
+#define SHADOW_FACING_FLOOR(texel) (0.05 * clamp(1024.0 * (texel), 0.5, 1.0))
+#else
+#define SHADOW_FACING_FLOOR(texel) 0.05
+#endif
 #endif

@@ -121,11 +121,7 @@ float shadowBiasFloor(vec3 normal, vec3 c, float reach, float floorFacing) {
 #endif
 }
 float shadowBiasReach(vec3 normal, vec3 c, float reach) { return shadowBiasFloor(normal, c, reach, 0.05); }
-#ifdef FILTER_HARD
-float shadowBias(vec3 normal, vec3 c) { return shadowBiasFloor(normal, c, u_bias_kernel.y, SHADOW_HARD_FLOOR(u_bias_kernel.x)); }
-#else
-float shadowBias(vec3 normal, vec3 c) { return shadowBiasReach(normal, c, u_bias_kernel.y); }
-#endif
+float shadowBias(vec3 normal, vec3 c) { return shadowBiasFloor(normal, c, u_bias_kernel.y, SHADOW_FACING_FLOOR(u_bias_kernel.x)); }
 #else
 float shadowBiasReach(vec3 normal, vec3 c, float reach) { return u_bias; }
 float shadowBias(vec3 normal, vec3 c) { return u_bias; }
