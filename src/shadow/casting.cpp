@@ -1,5 +1,7 @@
 #include "shadow/casting.h"
 
+#include "shadow/light_frustum.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -71,6 +73,43 @@ bool shadows_any(const CasterBox& caster, const std::vector<SeenReceiver>& seen,
         if (may_shadow(caster.bounds, r.points, light)) return true;
     }
     return false;
+}
+
+std::vector<glm::vec3> shadowed_points(const CasterBox& caster, const std::vector<SeenReceiver>& seen,
+                                       const glm::vec4& light) {
+    std::vector<glm::vec3> out;
+    for (const SeenReceiver& r : seen) {
+        if (r.points.empty() || (caster.convex && r.object == caster.object)) continue;
+        if (may_shadow(caster.bounds, r.points, light)) out.insert(out.end(), r.points.begin(), r.points.end());
+    }
+    return out;
+}
+
+// The shadows fit's per-caster questions (declared in light_frustum.h, beside the fit).
+std::vector<std::vector<glm::vec3>> shadowed_each(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                                  const std::vector<scene::Bounds>& casters,
+                                                  const glm::mat4& camera_view_proj, const CastingInfo& info) {
+    const std::vector<std::vector<glm::vec3>> each = visible_points_each(light, receivers, camera_view_proj);
+    std::vector<SeenReceiver> seen;
+    for (size_t k = 0; k < each.size(); ++k)
+        seen.push_back({k < info.receiver_objects.size() ? info.receiver_objects[k] : -1, each[k]});
+    const glm::vec4 l = light_vector(light);
+    std::vector<std::vector<glm::vec3>> out;
+    for (size_t k = 0; k < casters.size(); ++k) {
+        const CasterBox box{k < info.caster_objects.size() ? info.caster_objects[k] : -1, casters[k],
+                            k < info.caster_convex.size() && info.caster_convex[k] != 0};
+        out.push_back(shadowed_points(box, seen, l));
+    }
+    return out;
+}
+
+std::vector<char> shadowing_flags(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                  const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
+                                  const CastingInfo& info) {
+    std::vector<char> keep;
+    for (const std::vector<glm::vec3>& pts : shadowed_each(light, receivers, casters, camera_view_proj, info))
+        keep.push_back(pts.empty() ? 0 : 1);
+    return keep;
 }
 
 }  // namespace penumbra::shadow

@@ -201,23 +201,32 @@ bool inside_box(const scene::Bounds& b, const glm::vec3& p) {
 }
 
 // What the shadows fit adds to the tight one (null: the tight fit): which casters can shadow a
-// receiver in view (shadowing_flags), and whether to cut the window to them.
+// receiver in view (shadowing_flags), the points of the visible receivers each can shadow, and
+// whether to cut the window to them.
 struct Shadowing {
     std::vector<char> keep;
+    std::vector<std::vector<glm::vec3>> shadowed;  // per caster: the visible points of the receivers it may shadow
     bool fit_window = true;
+};
+
+// Where one drawn caster's shadow can fall: inside its part within the window, seen from the
+// light, and inside the visible receivers it may shadow, seen from the light (empty: anywhere).
+struct Reach {
+    std::vector<glm::vec3> caster;
+    std::vector<glm::vec3> receivers;
 };
 
 // The casters that reach into the window (half-spaces in the light's eye space, the far one
 // included) and, with `shadowing`, can shadow a receiver in view (the others counted in
-// `culled`); their nearest depth from the light (eye-space -z) over the part inside, and those
-// parts' points (`reach`).
+// `culled`); their nearest depth from the light (eye-space -z) over the part inside, and where
+// their shadows can fall (`reach`).
 void select_casters(const std::vector<scene::Bounds>& casters, const glm::mat4& view,
                     const std::vector<glm::vec4>& eye_half_spaces, const Shadowing* shadowing, TightFit& out,
-                    float& nearest, std::vector<glm::vec3>& reach) {
+                    float& nearest, std::vector<Reach>& reach) {
     std::vector<HalfSpace> hs;
     for (const glm::vec4& h : eye_half_spaces) hs.push_back(to_world(view, h));
     for (size_t k = 0; k < casters.size(); ++k) {
-        const std::vector<glm::vec3> pts = clip_box(casters[k], hs);
+        std::vector<glm::vec3> pts = clip_box(casters[k], hs);
         if (pts.empty()) continue;
         if (shadowing && !shadowing->keep[k]) {
             ++out.culled;
@@ -225,8 +234,49 @@ void select_casters(const std::vector<scene::Bounds>& casters, const glm::mat4& 
         }
         out.casters.push_back(static_cast<int>(k));
         for (const glm::vec3& p : pts) nearest = std::min(nearest, -(view * glm::vec4(p, 1.0f)).z);
-        reach.insert(reach.end(), pts.begin(), pts.end());
+        const bool known = shadowing && k < shadowing->shadowed.size();
+        reach.push_back({std::move(pts), known ? shadowing->shadowed[k] : std::vector<glm::vec3>{}});
     }
+}
+
+// The light's window coordinates of a point: tangents (x/depth, y/depth) for a perspective light,
+// eye-space x and y for an orthographic one; false for a perspective point not in front of the
+// eye plane by front_eps.
+struct WindowRect {
+    glm::vec4 r{std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest(),
+                std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest()};  // left, right, bottom, top
+    bool empty() const { return !(r.x <= r.y && r.z <= r.w); }
+};
+bool window_rect(const glm::mat4& view, bool perspective, float front_eps, const std::vector<glm::vec3>& pts,
+                 WindowRect& out) {
+    for (const glm::vec3& p : pts) {
+        const glm::vec3 e = glm::vec3(view * glm::vec4(p, 1.0f));
+        glm::vec2 t(e);
+        if (perspective) {
+            if (!(-e.z > front_eps)) return false;
+            t /= -e.z;
+        }
+        out.r = {std::min(out.r.x, t.x), std::max(out.r.y, t.x), std::min(out.r.z, t.y), std::max(out.r.w, t.y)};
+    }
+    return true;
+}
+
+// The window where the drawn casters' shadows can fall: the union over the casters of the rect
+// of each one's part within the window, cut to the rect of the receivers it may shadow (a shadow
+// falls where both are, seen from the light). false where a point lies at the light's eye plane.
+bool reach_rect(const glm::mat4& view, bool perspective, float front_eps, const std::vector<Reach>& reach,
+                WindowRect& out) {
+    for (const Reach& c : reach) {
+        WindowRect a, b;
+        if (!window_rect(view, perspective, front_eps, c.caster, a)) return false;
+        if (!c.receivers.empty()) {
+            if (!window_rect(view, perspective, front_eps, c.receivers, b)) return false;
+            a.r = {std::max(a.r.x, b.r.x), std::min(a.r.y, b.r.y), std::max(a.r.z, b.r.z), std::min(a.r.w, b.r.w)};
+            if (a.empty()) continue;
+        }
+        out.r = {std::min(out.r.x, a.r.x), std::max(out.r.y, a.r.y), std::min(out.r.z, a.r.z), std::max(out.r.w, a.r.w)};
+    }
+    return true;
 }
 
 // A perspective window: the light's view along one direction and the visible points' extent in
@@ -286,19 +336,13 @@ void finish_window(PerspectiveWindow& w, std::vector<glm::vec2> tangents) {
     w.use = polygon_area(clip_to_rect(convex_hull(std::move(tangents)), lo, hi)) / ((hi.x - lo.x) * (hi.y - lo.y));
 }
 
-// The shadows fit's window: the raw window cut to the tangents of `reach` (what the drawn casters
-// hold inside it), where their shadows can fall; false (the window kept) when one lies at the
-// light's eye plane.
-bool cut_to_casters(PerspectiveWindow& w, const std::vector<glm::vec3>& reach, float front_eps) {
-    if (reach.empty()) return false;
-    glm::vec4 c(std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest(),
-                std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest());
-    for (const glm::vec3& p : reach) {
-        const glm::vec3 e = glm::vec3(w.view * glm::vec4(p, 1.0f));
-        if (!(-e.z > front_eps)) return false;
-        const glm::vec2 t(e.x / -e.z, e.y / -e.z);
-        c = {std::min(c.x, t.x), std::max(c.y, t.x), std::min(c.z, t.y), std::max(c.w, t.y)};
-    }
+// The shadows fit's window: the raw window cut to where the drawn casters' shadows can fall
+// (reach_rect); false (the window kept) when a point lies at the light's eye plane or no shadow
+// falls in it.
+bool cut_to_casters(PerspectiveWindow& w, const std::vector<Reach>& reach, float front_eps) {
+    WindowRect rect;
+    if (reach.empty() || !reach_rect(w.view, true, front_eps, reach, rect) || rect.empty()) return false;
+    const glm::vec4& c = rect.r;
     const glm::vec4 cut(std::max(w.raw.x, c.x), std::min(w.raw.y, c.y), std::max(w.raw.z, c.z), std::min(w.raw.w, c.w));
     if (!(cut.x <= cut.y && cut.z <= cut.w)) return false;
     w.raw = cut;
@@ -352,7 +396,7 @@ bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec
     // The casters inside the pyramid of the window, up to the farthest visible point: a caster
     // between the light and a visible point lies there.
     float nearest = w.zmin;
-    std::vector<glm::vec3> reach;
+    std::vector<Reach> reach;
     select_casters(casters, f.view,
                    {{1.0f, 0.0f, w.xl, 0.0f}, {-1.0f, 0.0f, -w.xr, 0.0f}, {0.0f, 1.0f, w.yb, 0.0f},
                     {0.0f, -1.0f, -w.yt, 0.0f}, {0.0f, 0.0f, 1.0f, w.zmax}},
@@ -396,18 +440,18 @@ void fit_tight_orthographic(const scene::Light& light, const std::vector<glm::ve
     widen_window(yb, yt, tiny);
 
     float nearest = zmin;
-    std::vector<glm::vec3> reach;
+    std::vector<Reach> reach;
     select_casters(casters, f.view,
                    {{1.0f, 0.0f, 0.0f, -xl}, {-1.0f, 0.0f, 0.0f, xr}, {0.0f, 1.0f, 0.0f, -yb}, {0.0f, -1.0f, 0.0f, yt},
                     {0.0f, 0.0f, 1.0f, zmax}},
                    shadowing, out, nearest, reach);
-    if (shadowing && shadowing->fit_window && !reach.empty()) {
-        // The window cut to where the drawn casters' shadows can fall (their parts inside it).
-        const Extent c = eye_extent(f.view, reach);
-        xl = std::max(raw.x, c.lo.x);
-        xr = std::min(raw.y, c.hi.x);
-        yb = std::max(raw.z, c.lo.y);
-        yt = std::min(raw.w, c.hi.y);
+    WindowRect c;
+    if (shadowing && shadowing->fit_window && !reach.empty() && reach_rect(f.view, false, 0.0f, reach, c) && !c.empty()) {
+        // The window cut to where the drawn casters' shadows can fall (reach_rect).
+        xl = std::max(raw.x, c.r.x);
+        xr = std::min(raw.y, c.r.y);
+        yb = std::max(raw.z, c.r.z);
+        yt = std::min(raw.w, c.r.w);
         out.cut = xl <= xr && yb <= yt;
         if (!out.cut) xl = raw.x, xr = raw.y, yb = raw.z, yt = raw.w;
         widen_window(xl, xr, tiny);
@@ -503,25 +547,9 @@ TightFit fit_light_frustum_tight(const scene::Light& light, const std::vector<sc
 TightFit fit_light_frustum_shadows(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                    const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
                                    const CastingInfo& info) {
-    const Shadowing s{shadowing_flags(light, receivers, casters, camera_view_proj, info), info.fit_window};
+    Shadowing s{{}, shadowed_each(light, receivers, casters, camera_view_proj, info), info.fit_window};
+    for (const std::vector<glm::vec3>& pts : s.shadowed) s.keep.push_back(pts.empty() ? 0 : 1);
     return fit_tight(light, receivers, casters, camera_view_proj, &s);
-}
-
-std::vector<char> shadowing_flags(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
-                                  const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
-                                  const CastingInfo& info) {
-    const std::vector<std::vector<glm::vec3>> each = visible_points_each(light, receivers, camera_view_proj);
-    std::vector<SeenReceiver> seen;
-    for (size_t k = 0; k < each.size(); ++k)
-        seen.push_back({k < info.receiver_objects.size() ? info.receiver_objects[k] : -1, each[k]});
-    const glm::vec4 l = light_vector(light);
-    std::vector<char> keep(casters.size(), 0);
-    for (size_t k = 0; k < casters.size(); ++k) {
-        const CasterBox box{k < info.caster_objects.size() ? info.caster_objects[k] : -1, casters[k],
-                            k < info.caster_convex.size() && info.caster_convex[k] != 0};
-        keep[k] = shadows_any(box, seen, l) ? 1 : 0;
-    }
-    return keep;
 }
 
 TightFit fit_light_frustum_scene(const scene::Light& light, const std::vector<scene::Bounds>& receivers,

@@ -89,12 +89,20 @@ struct CastingInfo {
 
 // The shadows fit (--light-fit shadows): the tight fit, drawing only the casters that can shadow
 // a receiver in view (shadow::shadows_any; the rest counted in TightFit::culled), with the window
-// cut to those casters' parts inside it, where their shadows can fall: a visible receiver point
-// outside it can be shadowed by no caster (the lookup reads it as lit). The window keeps the
-// tight fit's margin around them.
+// cut to where their shadows can fall: seen from the light, each drawn caster's part inside the
+// window, cut to the visible receivers it may shadow (shadowed_each; a ground plane under a plank
+// that dips below it shadows only the plank's tip, not the whole ground). A visible receiver
+// point outside the window can be shadowed by no caster (the lookup reads it as lit). The window
+// keeps the tight fit's margin around them.
 TightFit fit_light_frustum_shadows(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                    const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
                                    const CastingInfo& info);
+
+// Per caster box: the visible points (visible_points_each) of every receiver it can shadow
+// (shadow::shadowed_points), empty where a plane proves it shadows none.
+std::vector<std::vector<glm::vec3>> shadowed_each(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                                  const std::vector<scene::Bounds>& casters,
+                                                  const glm::mat4& camera_view_proj, const CastingInfo& info);
 
 // One flag per caster box: 1 where it can shadow a receiver the camera sees (shadow::shadows_any
 // over visible_points_each), 0 where a plane proves it cannot: what the shadows fit leaves out.

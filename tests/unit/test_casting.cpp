@@ -165,6 +165,49 @@ TEST(Casting, TheShadowsFitLeavesTheTableOutAndCutsTheWindowToTheTeapot) {
     EXPECT_EQ(kept.frustum.view_proj(), tight.frustum.view_proj());
 }
 
+// bench_hard's case: a plank dips 3 cm below the ground, so the ground may shadow the plank's tip
+// and is drawn; but its shadow can fall only on the plank, so the window stays cut to the plank
+// and the post, not widened to the whole ground.
+TEST(Casting, TheWindowIsCutToTheReceiversEachCasterCanShadow) {
+    scene::Light light;
+    light.type = scene::LightType::Point;
+    light.position = {-6.5f, 2.3f, 1.1f};
+    const glm::mat4 vp = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 50.0f) *
+                         glm::lookAt(glm::vec3(0.3f, 3.2f, 6.0f), glm::vec3(0.4f, 0.3f, -0.2f), glm::vec3(0, 1, 0));
+    const scene::Bounds ground = box({-6, 0, -6}, {6, 0, 6}), post = box({-2.0f, 0, 0.5f}, {-1.9f, 1, 0.6f});
+    const auto fit = [&](const std::vector<scene::Bounds>& boxes) {
+        shadow::CastingInfo info;
+        for (size_t k = 0; k < boxes.size(); ++k) {
+            info.receiver_objects.push_back(static_cast<int>(k));
+            info.caster_objects.push_back(static_cast<int>(k));
+            info.caster_convex.push_back(1);
+        }
+        return shadow::fit_light_frustum_shadows(light, boxes, boxes, vp, info);
+    };
+    const auto area = [](const shadow::LightFrustum& f) {
+        const glm::mat4 inv = glm::inverse(f.proj);
+        const glm::vec4 a = inv * glm::vec4(-1, -1, -1, 1), c = inv * glm::vec4(1, 1, -1, 1);
+        return std::fabs((c.x / c.w - a.x / a.w) * (c.y / c.w - a.y / a.w)) / (f.znear * f.znear);
+    };
+    const shadow::TightFit above = fit({ground, box({1.2f, 0.0f, 0.2f}, {1.6f, 1.2f, 0.6f}), post});
+    const shadow::TightFit dips = fit({ground, box({1.2f, -0.03f, 0.2f}, {1.6f, 1.2f, 0.6f}), post});
+    ASSERT_TRUE(above.tight && dips.tight && above.cut && dips.cut);
+    EXPECT_EQ(above.culled, 1) << "standing on the ground, nothing is shadowed by it";
+    EXPECT_EQ(dips.culled, 0) << "the ground may shadow the plank's tip below it: drawn";
+    EXPECT_LT(area(dips.frustum), 1.05f * area(above.frustum));
+    // The plank's tip, just under the ground, is inside the window.
+    for (const glm::vec3& p : {glm::vec3(1.2f, -0.02f, 0.2f), glm::vec3(1.6f, -0.02f, 0.6f)}) {
+        const glm::vec4 q = dips.frustum.view_proj() * glm::vec4(p, 1.0f);
+        EXPECT_LE(std::fabs(q.x), q.w);
+        EXPECT_LE(std::fabs(q.y), q.w);
+    }
+    // The control: a slab under the whole ground, which the ground may shadow everywhere; the
+    // window is then the ground's, several times larger.
+    const shadow::TightFit basement =
+        fit({ground, box({1.2f, -0.03f, 0.2f}, {1.6f, 1.2f, 0.6f}), post, box({-6, -1, -6}, {6, -0.5f, 6})});
+    EXPECT_GT(area(basement.frustum), 3.0f * area(dips.frustum));
+}
+
 TEST(Casting, ShadowVolumesLeaveOutTheCastersThatShadowNothing) {
     scene::CourseScene course = scene::make_course_scene(4);
     scene::animate_course(course, 0.6, 0.6);
