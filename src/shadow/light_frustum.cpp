@@ -239,14 +239,15 @@ void select_casters(const std::vector<scene::Bounds>& casters, const glm::mat4& 
     }
 }
 
-// The light's window coordinates of a point: tangents (x/depth, y/depth) for a perspective light,
-// eye-space x and y for an orthographic one; false for a perspective point not in front of the
-// eye plane by front_eps.
+// A rect of the light's window coordinates: tangents (x/depth, y/depth) for a perspective light,
+// eye-space x and y for an orthographic one.
 struct WindowRect {
     glm::vec4 r{std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest(),
                 std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest()};  // left, right, bottom, top
     bool empty() const { return !(r.x <= r.y && r.z <= r.w); }
 };
+// `out` grown by the points; false for a perspective point not in front of the eye plane by
+// front_eps.
 bool window_rect(const glm::mat4& view, bool perspective, float front_eps, const std::vector<glm::vec3>& pts,
                  WindowRect& out) {
     for (const glm::vec3& p : pts) {
