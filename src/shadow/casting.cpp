@@ -67,48 +67,65 @@ bool may_shadow(const scene::Bounds& caster, const std::vector<glm::vec3>& point
     return !(farthest < reach);
 }
 
+namespace {
+
+// Whether `caster` can shadow a point of receiver `r` (never itself when convex).
+bool may_shadow_receiver(const CasterBox& caster, const SeenReceiver& r, const glm::vec4& light) {
+    return !r.points.empty() && !(caster.convex && r.object == caster.object) && may_shadow(caster.bounds, r.points, light);
+}
+
+}  // namespace
+
 bool shadows_any(const CasterBox& caster, const std::vector<SeenReceiver>& seen, const glm::vec4& light) {
-    for (const SeenReceiver& r : seen) {
-        if (r.points.empty() || (caster.convex && r.object == caster.object)) continue;
-        if (may_shadow(caster.bounds, r.points, light)) return true;
-    }
-    return false;
+    return std::any_of(seen.begin(), seen.end(),
+                       [&](const SeenReceiver& r) { return may_shadow_receiver(caster, r, light); });
 }
 
 std::vector<glm::vec3> shadowed_points(const CasterBox& caster, const std::vector<SeenReceiver>& seen,
                                        const glm::vec4& light) {
     std::vector<glm::vec3> out;
-    for (const SeenReceiver& r : seen) {
-        if (r.points.empty() || (caster.convex && r.object == caster.object)) continue;
-        if (may_shadow(caster.bounds, r.points, light)) out.insert(out.end(), r.points.begin(), r.points.end());
-    }
+    for (const SeenReceiver& r : seen)
+        if (may_shadow_receiver(caster, r, light)) out.insert(out.end(), r.points.begin(), r.points.end());
     return out;
 }
+
+namespace {
+
+// The receivers the camera sees, each with its scene object, and caster box k with its object and
+// convexity: what shadows_any and shadowed_points take.
+std::vector<SeenReceiver> seen_receivers(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                         const glm::mat4& camera_view_proj, const CastingInfo& info) {
+    const std::vector<std::vector<glm::vec3>> each = visible_points_each(light, receivers, camera_view_proj);
+    std::vector<SeenReceiver> seen;
+    for (size_t k = 0; k < each.size(); ++k)
+        seen.push_back({k < info.receiver_objects.size() ? info.receiver_objects[k] : -1, each[k]});
+    return seen;
+}
+CasterBox caster_box(const std::vector<scene::Bounds>& casters, const CastingInfo& info, size_t k) {
+    return {k < info.caster_objects.size() ? info.caster_objects[k] : -1, casters[k],
+            k < info.caster_convex.size() && info.caster_convex[k] != 0};
+}
+
+}  // namespace
 
 // The shadows fit's per-caster questions (declared in light_frustum.h, beside the fit).
 std::vector<std::vector<glm::vec3>> shadowed_each(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                                   const std::vector<scene::Bounds>& casters,
                                                   const glm::mat4& camera_view_proj, const CastingInfo& info) {
-    const std::vector<std::vector<glm::vec3>> each = visible_points_each(light, receivers, camera_view_proj);
-    std::vector<SeenReceiver> seen;
-    for (size_t k = 0; k < each.size(); ++k)
-        seen.push_back({k < info.receiver_objects.size() ? info.receiver_objects[k] : -1, each[k]});
+    const std::vector<SeenReceiver> seen = seen_receivers(light, receivers, camera_view_proj, info);
     const glm::vec4 l = light_vector(light);
     std::vector<std::vector<glm::vec3>> out;
-    for (size_t k = 0; k < casters.size(); ++k) {
-        const CasterBox box{k < info.caster_objects.size() ? info.caster_objects[k] : -1, casters[k],
-                            k < info.caster_convex.size() && info.caster_convex[k] != 0};
-        out.push_back(shadowed_points(box, seen, l));
-    }
+    for (size_t k = 0; k < casters.size(); ++k) out.push_back(shadowed_points(caster_box(casters, info, k), seen, l));
     return out;
 }
 
 std::vector<char> shadowing_flags(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                   const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
                                   const CastingInfo& info) {
+    const std::vector<SeenReceiver> seen = seen_receivers(light, receivers, camera_view_proj, info);
+    const glm::vec4 l = light_vector(light);
     std::vector<char> keep;
-    for (const std::vector<glm::vec3>& pts : shadowed_each(light, receivers, casters, camera_view_proj, info))
-        keep.push_back(pts.empty() ? 0 : 1);
+    for (size_t k = 0; k < casters.size(); ++k) keep.push_back(shadows_any(caster_box(casters, info, k), seen, l) ? 1 : 0);
     return keep;
 }
 

@@ -200,12 +200,11 @@ bool inside_box(const scene::Bounds& b, const glm::vec3& p) {
     return glm::all(glm::greaterThanEqual(p, b.min - m)) && glm::all(glm::lessThanEqual(p, b.max + m));
 }
 
-// What the shadows fit adds to the tight one (null: the tight fit): which casters can shadow a
-// receiver in view (shadowing_flags), the points of the visible receivers each can shadow, and
-// whether to cut the window to them.
+// What the shadows fit adds to the tight one (null: the tight fit): per caster, the visible points
+// of the receivers it may shadow (shadowed_each; none: it is left out), and whether to cut the
+// window to where those shadows fall.
 struct Shadowing {
-    std::vector<char> keep;
-    std::vector<std::vector<glm::vec3>> shadowed;  // per caster: the visible points of the receivers it may shadow
+    std::vector<std::vector<glm::vec3>> shadowed;
     bool fit_window = true;
 };
 
@@ -228,14 +227,13 @@ void select_casters(const std::vector<scene::Bounds>& casters, const glm::mat4& 
     for (size_t k = 0; k < casters.size(); ++k) {
         std::vector<glm::vec3> pts = clip_box(casters[k], hs);
         if (pts.empty()) continue;
-        if (shadowing && !shadowing->keep[k]) {
+        if (shadowing && shadowing->shadowed[k].empty()) {
             ++out.culled;
             continue;
         }
         out.casters.push_back(static_cast<int>(k));
         for (const glm::vec3& p : pts) nearest = std::min(nearest, -(view * glm::vec4(p, 1.0f)).z);
-        const bool known = shadowing && k < shadowing->shadowed.size();
-        reach.push_back({std::move(pts), known ? shadowing->shadowed[k] : std::vector<glm::vec3>{}});
+        reach.push_back({std::move(pts), shadowing ? shadowing->shadowed[k] : std::vector<glm::vec3>{}});
     }
 }
 
@@ -548,8 +546,7 @@ TightFit fit_light_frustum_tight(const scene::Light& light, const std::vector<sc
 TightFit fit_light_frustum_shadows(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                    const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
                                    const CastingInfo& info) {
-    Shadowing s{{}, shadowed_each(light, receivers, casters, camera_view_proj, info), info.fit_window};
-    for (const std::vector<glm::vec3>& pts : s.shadowed) s.keep.push_back(pts.empty() ? 0 : 1);
+    const Shadowing s{shadowed_each(light, receivers, casters, camera_view_proj, info), info.fit_window};
     return fit_tight(light, receivers, casters, camera_view_proj, &s);
 }
 
