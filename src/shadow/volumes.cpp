@@ -119,15 +119,23 @@ bool may_shadow_near_plane(const std::array<glm::vec3, 4>& r, const glm::vec4& l
 
 namespace {
 
-// Clips a convex polygon of clip-space points to `dot(plane, p) >= 0`.
-std::vector<glm::vec4> clip(const std::vector<glm::vec4>& in, const glm::vec4& plane) {
-    std::vector<glm::vec4> out;
-    for (size_t i = 0; i < in.size(); ++i) {
-        const glm::vec4& a = in[i];
-        const glm::vec4& b = in[(i + 1) % in.size()];
+// A convex polygon of clip-space points: a triangle clipped by the six planes of the view volume
+// gains at most one vertex per plane. On the stack: covered_pixels runs every moving frame over
+// every volume triangle, and a vector per clip made allocation its largest cost.
+struct Polygon {
+    std::array<glm::vec4, 9> p;
+    size_t n = 0;
+};
+
+// Clips `in` to `dot(plane, p) >= 0`.
+Polygon clip(const Polygon& in, const glm::vec4& plane) {
+    Polygon out;
+    for (size_t i = 0; i < in.n; ++i) {
+        const glm::vec4& a = in.p[i];
+        const glm::vec4& b = in.p[(i + 1) % in.n];
         const float da = glm::dot(plane, a), db = glm::dot(plane, b);
-        if (da >= 0.0f) out.push_back(a);
-        if ((da >= 0.0f) != (db >= 0.0f)) out.push_back(a + (b - a) * (da / (da - db)));
+        if (da >= 0.0f) out.p[out.n++] = a;
+        if ((da >= 0.0f) != (db >= 0.0f)) out.p[out.n++] = a + (b - a) * (da / (da - db));
     }
     return out;
 }
@@ -138,16 +146,24 @@ double covered_pixels(const std::vector<glm::vec4>& tris, const glm::mat4& view_
     static const glm::vec4 planes[6] = {{1, 0, 0, 1}, {-1, 0, 0, 1}, {0, 1, 0, 1}, {0, -1, 0, 1}, {0, 0, 1, 1}, {0, 0, -1, 1}};
     double area = 0.0;
     for (size_t k = 0; k + 2 < tris.size(); k += 3) {
-        std::vector<glm::vec4> poly = {view_proj * tris[k], view_proj * tris[k + 1], view_proj * tris[k + 2]};
+        Polygon poly;
+        poly.p[0] = view_proj * tris[k];
+        poly.p[1] = view_proj * tris[k + 1];
+        poly.p[2] = view_proj * tris[k + 2];
+        poly.n = 3;
         for (const glm::vec4& plane : planes) {
+            // A plane all three corners are inside leaves the polygon as it is (clip would copy it).
+            if (poly.n == 3 && glm::dot(plane, poly.p[0]) >= 0.0f && glm::dot(plane, poly.p[1]) >= 0.0f &&
+                glm::dot(plane, poly.p[2]) >= 0.0f)
+                continue;
             poly = clip(poly, plane);
-            if (poly.size() < 3) break;
+            if (poly.n < 3) break;
         }
-        if (poly.size() < 3) continue;
+        if (poly.n < 3) continue;
         double twice = 0.0;
-        for (size_t i = 0; i < poly.size(); ++i) {
-            const glm::vec4& a = poly[i];
-            const glm::vec4& b = poly[(i + 1) % poly.size()];
+        for (size_t i = 0; i < poly.n; ++i) {
+            const glm::vec4& a = poly.p[i];
+            const glm::vec4& b = poly.p[(i + 1) % poly.n];
             if (!(a.w > 0.0f) || !(b.w > 0.0f)) continue;
             const double ax = 0.5 * (a.x / a.w + 1.0) * width, ay = 0.5 * (a.y / a.w + 1.0) * height;
             const double bx = 0.5 * (b.x / b.w + 1.0) * width, by = 0.5 * (b.y / b.w + 1.0) * height;
