@@ -29,6 +29,10 @@ ShadowVolume extrude_volume(const scene::Topology& t, const glm::mat4& world, co
     // Net uses of each edge, counted in the direction from its lower to its higher index.
     std::unordered_map<std::uint64_t, int> net;
     net.reserve(t.triangles.size());
+    if (caps) {  // at most every triangle: no regrowth (and copy) while they are added
+        v.near_cap.reserve(t.triangles.size());
+        if (!directional) v.far_cap.reserve(t.triangles.size());
+    }
     for (size_t k = 0; k + 2 < t.triangles.size(); k += 3) {
         std::uint32_t a = t.triangles[k], b = t.triangles[k + 1], c = t.triangles[k + 2];
         if (mirrored) std::swap(b, c);
