@@ -123,12 +123,17 @@ bool may_shadow_near_plane(const std::array<glm::vec3, 4>& r, const glm::vec4& l
 
 namespace {
 
-// A convex polygon of clip-space points: a triangle clipped by the six planes of the view volume
-// gains at most one vertex per plane. On the stack: covered_pixels runs every moving frame over
-// every volume triangle, and a vector per clip made allocation its largest cost.
+// A convex polygon of clip-space points, on the stack: covered_pixels runs every moving frame
+// over every volume triangle, and a vector per clip made allocation its largest cost. A triangle
+// clipped by the six planes of the view volume gains at most one vertex per plane (9); rounding
+// can make a polygon a hair from convex, whose clip may gain more, so room for 16 and nothing
+// written past it (a sliver's vertex lost: an area of about nothing).
 struct Polygon {
-    std::array<glm::vec4, 9> p;
+    std::array<glm::vec4, 16> p;
     size_t n = 0;
+    void add(const glm::vec4& v) {
+        if (n < p.size()) p[n++] = v;
+    }
 };
 
 // Clips `in` to `dot(plane, p) >= 0`.
@@ -138,8 +143,8 @@ Polygon clip(const Polygon& in, const glm::vec4& plane) {
         const glm::vec4& a = in.p[i];
         const glm::vec4& b = in.p[(i + 1) % in.n];
         const float da = glm::dot(plane, a), db = glm::dot(plane, b);
-        if (da >= 0.0f) out.p[out.n++] = a;
-        if ((da >= 0.0f) != (db >= 0.0f)) out.p[out.n++] = a + (b - a) * (da / (da - db));
+        if (da >= 0.0f) out.add(a);
+        if ((da >= 0.0f) != (db >= 0.0f)) out.add(a + (b - a) * (da / (da - db)));
     }
     return out;
 }
