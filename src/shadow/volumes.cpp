@@ -1,6 +1,7 @@
 #include "shadow/volumes.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cmath>
 #include <unordered_map>
 
@@ -161,9 +162,9 @@ double covered_pixels(const std::vector<glm::vec4>& tris, const glm::mat4& view_
         poly.p[2] = view_proj * tris[k + 2];
         poly.n = 3;
         for (const glm::vec4& plane : planes) {
-            // A plane all three corners are inside leaves the polygon as it is (clip would copy it).
-            if (poly.n == 3 && glm::dot(plane, poly.p[0]) >= 0.0f && glm::dot(plane, poly.p[1]) >= 0.0f &&
-                glm::dot(plane, poly.p[2]) >= 0.0f)
+            // A plane every corner is inside leaves the polygon as it is (clip would copy it).
+            if (std::all_of(poly.p.begin(), poly.p.begin() + static_cast<std::ptrdiff_t>(poly.n),
+                            [&](const glm::vec4& q) { return glm::dot(plane, q) >= 0.0f; }))
                 continue;
             poly = clip(poly, plane);
             if (poly.n < 3) break;
