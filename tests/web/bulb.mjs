@@ -34,7 +34,7 @@ await runTest('web.bulb', async ({ server, browser }) => {
   mkdirSync(outDir, { recursive: true });
   {
     // The first frame, the controls, the fly camera and the URL.
-    const { page, problems } = await openPage(browser, `${server.url}/bulb.html`);
+    const { page, context, problems } = await openPage(browser, `${server.url}/bulb.html`);
     let s = await page.evaluate(() => window.penumbra.state());
     check(s.exercise === 'bulb' && s.status === 'running', `state: ${s.exercise}, '${s.status}'`);
     check(s.query === DEFAULTS, `defaults: ${s.query}`);
@@ -73,13 +73,15 @@ await runTest('web.bulb', async ({ server, browser }) => {
     await page.click('button[data-fly="reset"]');
     check(!new URL(page.url()).searchParams.has('camera'), `after the scene camera button: ${page.url()}`);
     // An eye outside the room in a link: named in the note, not applied.
-    const { page: bad, problems: badProblems } = await openPage(browser, `${server.url}/bulb.html?camera=9,1,0,0,0&map-size=256`);
+    const { page: bad, context: badContext, problems: badProblems } = await openPage(browser, `${server.url}/bulb.html?camera=9,1,0,0,0&map-size=256`);
     s = await bad.evaluate(() => window.penumbra.state());
     check(s.options['map-size'] === '256' && s.camera.moved === false, `bad link: ${JSON.stringify(s.options)}`);
     check(/room/.test(await bad.textContent('#note')), 'the note does not say the eye must be in the room');
     await checkNoGlErrors(page, bad);
     check(problems.length === 0 && badProblems.length === 0, problems.concat(badProblems).join('; '));
     console.log(`controls, camera and URL restored: ${page.url()}`);
+    await badContext.close();
+    await context.close();
   }
   {
     // The frames: the faces, one map, against headless EGL, the plan's lines, the context's loss.

@@ -48,7 +48,7 @@ await runTest('web.cascades', async ({ server, browser }) => {
   mkdirSync(outDir, { recursive: true });
   {
     // The controls, the fly camera and the URL.
-    const { page, problems } = await openPage(browser, `${server.url}/cascades.html`);
+    const { page, context, problems } = await openPage(browser, `${server.url}/cascades.html`);
     let s = await page.evaluate(() => window.penumbra.state());
     check(s.exercise === 'cascades' && s.status === 'running', `state: ${s.exercise}, '${s.status}'`);
     check(s.query === DEFAULTS, `defaults: ${s.query}`);
@@ -103,13 +103,15 @@ await runTest('web.cascades', async ({ server, browser }) => {
     await page.click('button[data-fly="reset"]');
     check(!new URL(page.url()).searchParams.has('camera'), `after the scene camera button: ${page.url()}`);
     // A bad camera in a link: named in the note, not applied, the rest applied.
-    const { page: bad, problems: badProblems } = await openPage(browser, `${server.url}/cascades.html?camera=1,2,3&cascades=3`);
+    const { page: bad, context: badContext, problems: badProblems } = await openPage(browser, `${server.url}/cascades.html?camera=1,2,3&cascades=3`);
     s = await bad.evaluate(() => window.penumbra.state());
     check(s.options.cascades === '3' && s.camera.moved === false, `bad link: ${JSON.stringify(s.options)}, ${JSON.stringify(s.camera)}`);
     check(/camera/.test(await bad.textContent('#note')), 'the note does not name the bad camera');
     await checkNoGlErrors(page, bad);
     check(problems.length === 0 && badProblems.length === 0, problems.concat(badProblems).join('; '));
     console.log(`controls, camera and URL restored: ${page.url()}`);
+    await badContext.close();
+    await context.close();
   }
   {
     // The frames: tints, the camera, against headless EGL, the plan's lines, the context's loss.

@@ -77,7 +77,7 @@ await runTest('web.soft', async ({ server, browser }) => {
   mkdirSync(outDir, { recursive: true });
   {
     // The controls, with the mouse and the keyboard, and the URL.
-    const { page, problems } = await openPage(browser, `${server.url}/soft.html`);
+    const { page, context, problems } = await openPage(browser, `${server.url}/soft.html`);
     let s = await page.evaluate(() => window.penumbra.state());
     check(s.exercise === 'soft' && s.status === 'running', `state: ${s.exercise}, '${s.status}'`);
     check(s.query === 'light=off&jump=off&light-radius=0.3&filter=pcss&area-samples=1&area-per-frame=4&area-interleave=1&reference=off&' +
@@ -131,7 +131,7 @@ await runTest('web.soft', async ({ server, browser }) => {
     await page.selectOption('#filter', 'pcss');
     check((await page.inputValue('#area-samples')) === '1', 'PCSS did not put the light samples back to 1');
     // A bad value in a link: said in the status line, not applied, the rest applied.
-    const { page: bad, problems: badProblems } =
+    const { page: bad, context: badContext, problems: badProblems } =
       await openPage(browser, `${server.url}/soft.html?filter=pcss9&light-radius=0.2&pcss-taps=500`);
     s = await bad.evaluate(() => window.penumbra.state());
     check(s.options.filter === 'pcss' && s.options['light-radius'] === '0.2' && s.options['pcss-taps'] === '16',
@@ -142,6 +142,8 @@ await runTest('web.soft', async ({ server, browser }) => {
     check(errs.length === 0, `glGetError: ${errs.map((e) => '0x' + e.toString(16)).join(', ')}`);
     check(problems.length === 0 && badProblems.length === 0, problems.concat(badProblems).join('; '));
     console.log(`controls and URL: ${page.url()} restored`);
+    await badContext.close();
+    await context.close();
   }
   {
     // Progressive: 64 light samples, converging, the scene still (the page's own loop).

@@ -12,7 +12,7 @@ async function reloadAndRead(page) {
 
 await runTest('web.url', async ({ server, browser }) => {
   {
-    const { page, problems } = await openPage(browser, `${server.url}/w09p2c.html`);
+    const { page, context, problems } = await openPage(browser, `${server.url}/w09p2c.html`);
     await page.selectOption('#encoding', 'r8');
     await page.check('#filter');
     await page.check('#bias-fixed');
@@ -37,11 +37,12 @@ await runTest('web.url', async ({ server, browser }) => {
     check((await page.getAttribute('#light', 'aria-pressed')) === 'false', 'the light button came back on');
     check(problems.length === 0, problems.join('; '));
     console.log(`w09p2c: ${page.url()} restored`);
+    await context.close();
   }
   {
     // bias=sheet and precision=mediump, chosen with the keyboard: the bias radios move with the
     // arrow keys, the precision select with the arrow keys once focused.
-    const { page, problems } = await openPage(browser, `${server.url}/w09p2c.html`);
+    const { page, context, problems } = await openPage(browser, `${server.url}/w09p2c.html`);
     check(await page.isChecked('#bias-auto'), 'w09p2c: the bias does not start on auto');
     check(/slope/.test(await page.textContent('label:has(#bias-auto)')), 'w09p2c: the auto choice does not mention the slope');
     await page.focus('#bias-auto');
@@ -67,7 +68,8 @@ await runTest('web.url', async ({ server, browser }) => {
     check(s.options.bias === '0.002' && s.options.precision === 'mediump', `w09p2c: ${JSON.stringify(s.options)} after reload`);
     check(await page.isChecked('#bias-fixed') && (await page.inputValue('#bias')) === '0.002', 'w09p2c: the fixed bias was lost');
     // And the URL alone sets both (a link).
-    const { page: linked, problems: linkProblems } = await openPage(browser, `${server.url}/w09p2c.html?bias=auto&precision=mediump&encoding=r8`);
+    await context.close();
+    const { page: linked, context: linkedContext, problems: linkProblems } = await openPage(browser, `${server.url}/w09p2c.html?bias=auto&precision=mediump&encoding=r8`);
     s = await linked.evaluate(() => window.penumbra.state());
     check(s.options.bias === 'auto' && s.options.precision === 'mediump' && s.options.encoding === 'r8',
           `w09p2c: a link gave ${JSON.stringify(s.options)}`);
@@ -75,18 +77,20 @@ await runTest('web.url', async ({ server, browser }) => {
           'w09p2c: a link with bias=auto&precision=mediump did not set the controls');
     check(problems.length === 0 && linkProblems.length === 0, problems.concat(linkProblems).join('; '));
     console.log(`w09p2c: bias=auto, precision=mediump restored (${linked.url()})`);
+    await linkedContext.close();
   }
   {
-    const { page, problems } = await openPage(browser, `${server.url}/w09p2a.html`);
+    const { page, context, problems } = await openPage(browser, `${server.url}/w09p2a.html`);
     await page.check('input[name="projection"][value="ortho"]');
     const s = await reloadAndRead(page);
     check(s.options.projection === 'ortho', `w09p2a: projection ${s.options.projection} after reload`);
     check(await page.isChecked('input[name="projection"][value="ortho"]'), 'w09p2a: the ortho radio lost its check');
     check(problems.length === 0, problems.join('; '));
     console.log(`w09p2a: ${page.url()} restored`);
+    await context.close();
   }
   {
-    const { page, problems } = await openPage(browser, `${server.url}/w09p2b.html`);
+    const { page, context, problems } = await openPage(browser, `${server.url}/w09p2b.html`);
     await page.selectOption('#fbo-view', 'camera');
     await page.selectOption('#map-size', '512');
     const s = await reloadAndRead(page);
@@ -95,15 +99,17 @@ await runTest('web.url', async ({ server, browser }) => {
     check((await page.inputValue('#fbo-view')) === 'camera', 'w09p2b: the FBO select lost camera');
     check(problems.length === 0, problems.join('; '));
     console.log(`w09p2b: ${page.url()} restored`);
+    await context.close();
   }
   {
     // A bad value: said in the status line, the rest still applied, no console error.
-    const { page, problems } = await openPage(browser, `${server.url}/w09p2c.html?encoding=r16&filter=pcf4x4`);
+    const { page, context, problems } = await openPage(browser, `${server.url}/w09p2c.html?encoding=r16&filter=pcf4x4`);
     const s = await page.evaluate(() => window.penumbra.state());
     check(s.options.filter === 'pcf4x4' && s.options.encoding === 'rgba', `bad URL: ${JSON.stringify(s.options)}`);
     const note = await page.textContent('#note');
     check(/r16/.test(note) && (await page.isVisible('#note')), `the note does not mention the bad value: '${note}'`);
     check(!new URL(page.url()).search.includes('r16'), 'the bad value stayed in the URL');
     check(problems.length === 0, problems.join('; '));
+    await context.close();
   }
 });

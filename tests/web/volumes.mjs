@@ -31,7 +31,7 @@ await runTest('web.volumes', async ({ server, browser }) => {
   mkdirSync(outDir, { recursive: true });
   {
     // The controls, with the mouse and the keyboard, and the URL.
-    const { page, problems } = await openPage(browser, `${server.url}/volumes.html`);
+    const { page, context, problems } = await openPage(browser, `${server.url}/volumes.html`);
     let s = await page.evaluate(() => window.penumbra.state());
     check(s.exercise === 'volumes' && s.status === 'running', `state: ${s.exercise}, '${s.status}'`);
     check(s.query === 'light=on&jump=on&volume-method=auto&show-volumes=off&eye=scene&aov=color', `defaults: ${s.query}`);
@@ -51,7 +51,7 @@ await runTest('web.volumes', async ({ server, browser }) => {
     check((await page.inputValue('#aov')) === 'stencil-count', 'the view select lost the stencil count');
     check((await page.getAttribute('#jump', 'aria-pressed')) === 'false', 'the jump button came back on');
     // A bad value in a link: said in the status line, not applied, the rest applied.
-    const { page: bad, problems: badProblems } =
+    const { page: bad, context: badContext, problems: badProblems } =
       await openPage(browser, `${server.url}/volumes.html?volume-method=zmaybe&eye=in-shadow`);
     s = await bad.evaluate(() => window.penumbra.state());
     check(s.options['volume-method'] === 'auto' && s.options.eye === 'in-shadow', `bad link: ${JSON.stringify(s.options)}`);
@@ -60,6 +60,8 @@ await runTest('web.volumes', async ({ server, browser }) => {
     check(errs.length === 0, `glGetError: ${errs.map((e) => '0x' + e.toString(16)).join(', ')}`);
     check(problems.length === 0 && badProblems.length === 0, problems.concat(badProblems).join('; '));
     console.log(`controls and URL: ${page.url()} restored`);
+    await badContext.close();
+    await context.close();
   }
   {
     // Depth-pass against depth-fail with the eye in the shadow, in the visibility view.
