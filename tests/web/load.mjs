@@ -1,7 +1,11 @@
 // web.load: the index and every exercise page load with no console error, no page error, no failed
 // request and no WebGL error after some frames; every control has a label; the index links resolve
-// and shows a picture of every exercise.
-import { runTest, openPage, waitFrames, check, PAGES } from './harness.mjs';
+// and shows a picture of every exercise. Each page's GPU timer (EXT_disjoint_timer_query on
+// SwiftShader) once its loop has timed 10 frames: the passes of the frame plan in the state and in
+// the readout (gpu_checks.mjs; web.gpu_time checks the timer after a context restore and without
+// the extension).
+import { runTest, openPage, check, PAGES } from './harness.mjs';
+import { checkPageGpu, gpuFigures } from './gpu_checks.mjs';
 
 await runTest('web.load', async ({ server, browser }) => {
   // The index: its links lead to every exercise page.
@@ -26,7 +30,8 @@ await runTest('web.load', async ({ server, browser }) => {
   }
   for (const p of PAGES) {
     const { page, context, problems } = await openPage(browser, `${server.url}/${p}.html`);
-    await waitFrames(page, 10);
+    // Ten frames timed (their queries are read a few frames late): the frames the load waited for.
+    const gpu = await checkPageGpu(page, p, 10);
     const errors = await page.evaluate(() => {
       const out = [];
       for (let e = window.penumbra.glError(), i = 0; e !== 0 && i < 16; e = window.penumbra.glError(), ++i) out.push(e);
@@ -49,6 +54,7 @@ await runTest('web.load', async ({ server, browser }) => {
     check(unlabelled.length === 0, `${p}: controls without a label: ${unlabelled.join(', ')}`);
     check(problems.length === 0, `${p}: ${problems.join('; ')}`);
     console.log(`${p}: ${state.frames} frames, ${state.ms.toFixed(2)} ms/frame, ${state.renderer}, no errors`);
+    console.log(gpuFigures(p, gpu.s, gpu.lines));
     await context.close();
   }
 });
