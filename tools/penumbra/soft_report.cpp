@@ -110,7 +110,8 @@ Plot pareto_plot(const SoftRun& w, std::vector<std::string>* front_names) {
     std::vector<measure::Point2> pts;
     std::vector<std::string> names;
     for (const auto& [name, a] : means(w, [](const SoftRow&) { return true; })) {
-        const Method& m = *std::find_if(w.methods.begin(), w.methods.end(), [&](const Method& x) { return x.name == name; });
+        // By value: clang 14 (C++17) does not let a lambda capture a structured binding.
+        const Method& m = *std::find_if(w.methods.begin(), w.methods.end(), [n = name](const Method& x) { return x.name == n; });
         PlotPoint pt;
         pt.x = a.ms;
         pt.y = a.soft;
