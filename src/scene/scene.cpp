@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <tuple>
@@ -34,7 +35,24 @@ Topology weld(const Mesh& mesh) {
         if (!inside || v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) continue;
         t.triangles.insert(t.triangles.end(), {v[0], v[1], v[2]});
     }
+    index_edges(t);
     return t;
+}
+
+void index_edges(Topology& t) {
+    t.edges.clear();
+    t.corner_edges.assign(t.triangles.size() / 3 * 3, 0);
+    std::unordered_map<std::uint64_t, std::uint32_t> ids;
+    ids.reserve(t.triangles.size());
+    for (size_t k = 0; k + 2 < t.triangles.size(); k += 3)
+        for (size_t j = 0; j < 3; ++j) {
+            const std::uint32_t a = t.triangles[k + j], b = t.triangles[k + (j + 1) % 3];
+            const std::uint32_t lo = std::min(a, b), hi = std::max(a, b);
+            const auto [it, added] = ids.emplace((static_cast<std::uint64_t>(lo) << 32) | hi,
+                                                 static_cast<std::uint32_t>(t.edges.size() / 2));
+            if (added) t.edges.insert(t.edges.end(), {lo, hi});
+            t.corner_edges[k + j] = it->second;
+        }
 }
 
 bool is_closed(const Topology& t) {

@@ -3,6 +3,7 @@
 // so any frame can be rebuilt exactly from its t.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -42,8 +43,15 @@ struct Mesh {
 struct Topology {
     std::vector<glm::vec3> positions;      // one per welded vertex
     std::vector<std::uint32_t> triangles;  // three per triangle, into positions, the mesh's winding
+    // The edge table (index_edges; weld makes it): each edge once, as its two vertices, lower index
+    // first; and for each triangle corner k, the edge from corner k to corner k + 1 (mod 3).
+    std::vector<std::uint32_t> edges;
+    std::vector<std::uint32_t> corner_edges;
+    std::size_t edge_count() const { return edges.size() / 2; }
 };
-Topology weld(const Mesh& mesh);
+Topology weld(const Mesh& mesh);  // with its edge table
+// Fills topology.edges and corner_edges from its triangles (a topology made by hand has none).
+void index_edges(Topology& topology);
 
 // Whether the triangles enclose a volume: with positions welded, every edge is shared by exactly
 // two triangles that run it in opposite directions (consistent winding).

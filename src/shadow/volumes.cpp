@@ -3,20 +3,20 @@
 #include <algorithm>
 #include <cstddef>
 #include <cmath>
-#include <unordered_map>
 
 namespace penumbra::shadow {
 
-namespace {
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
-}
-
-}  // namespace
-
-ShadowVolume extrude_volume(const scene::Topology& t, const glm::mat4& world, const glm::vec4& light, bool closed,
-                            bool caps) {
+ShadowVolume extrude_volume(const scene::Topology& topology, const glm::mat4& world, const glm::vec4& light,
+                            bool closed, bool caps) {
+    // The edge table weld made (a topology made by hand gets one here).
+    const scene::Topology* with_edges = &topology;
+    scene::Topology own;
+    if (topology.corner_edges.size() != topology.triangles.size() / 3 * 3) {
+        own = topology;
+        scene::index_edges(own);
+        with_edges = &own;
+    }
+    const scene::Topology& t = *with_edges;
     ShadowVolume v;
     const glm::vec3 l(light);
     const bool directional = light.w == 0.0f;
@@ -28,8 +28,7 @@ ShadowVolume extrude_volume(const scene::Topology& t, const glm::mat4& world, co
     const auto at = [&](std::uint32_t i) { return glm::vec4(p[i], 1.0f); };
 
     // Net uses of each edge, counted in the direction from its lower to its higher index.
-    std::unordered_map<std::uint64_t, int> net;
-    net.reserve(t.triangles.size());
+    std::vector<int> net(t.edge_count(), 0);
     if (caps) {  // at most every triangle: no regrowth (and copy) while they are added
         v.near_cap.reserve(t.triangles.size());
         if (!directional) v.far_cap.reserve(t.triangles.size());
@@ -43,19 +42,21 @@ ShadowVolume extrude_volume(const scene::Topology& t, const glm::mat4& world, co
         if (!(facing != 0.0f)) continue;       // edge-on (or not finite): a volume of no thickness
         if (closed && facing > 0.0f) continue;  // the dark cap: the faces away from the light only
         if (facing < 0.0f) std::swap(b, c);      // turned to face the light
-        const std::uint32_t tri[3] = {a, b, c};
-        for (int e = 0; e < 3; ++e) {
-            const std::uint32_t from = tri[e], to = tri[(e + 1) % 3];
-            net[edge_key(from, to)] += from < to ? 1 : -1;
+        // The mesh's corner order, or (mirrored xor turned) reversed: each edge runs the other way.
+        const int turn = mirrored != (facing < 0.0f) ? -1 : 1;
+        for (size_t j = 0; j < 3; ++j) {
+            const std::uint32_t from = t.triangles[k + j], to = t.triangles[k + (j + 1) % 3];
+            net[t.corner_edges[k + j]] += from < to ? turn : -turn;
         }
         if (caps) {
             v.near_cap.insert(v.near_cap.end(), {at(a), at(b), at(c)});
             if (!directional) v.far_cap.insert(v.far_cap.end(), {away(a), away(c), away(b)});
         }
     }
-    for (const auto& [key, n] : net) {
+    for (size_t e = 0; e < net.size(); ++e) {
+        const int n = net[e];
         if (n == 0) continue;
-        auto u = static_cast<std::uint32_t>(key >> 32), w = static_cast<std::uint32_t>(key & 0xffffffffu);
+        std::uint32_t u = t.edges[2 * e], w = t.edges[2 * e + 1];
         if (n < 0) std::swap(u, w);  // the triangles run the edge u -> w
         for (int k = 0; k < std::abs(n); ++k) {
             ++v.silhouette_edges;

@@ -3,7 +3,9 @@
 // test, the infinite far plane and the fill count; and the plan of a volumes frame.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
+#include <set>
 #include <tuple>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -101,6 +103,45 @@ TEST(ShadowVolumes, TheCheckCanFail) {
     const auto v = shadow::extrude_volume(*sphere.topology, glm::mat4(1.0f), {3, 4, 2, 1}, true, false);
     EXPECT_TRUE(v.near_cap.empty());
     EXPECT_GT(open_edges(v.sides), 0);
+}
+
+TEST(ShadowVolumes, TheEdgeTableNamesEachEdgeOnceAndEveryCornersEdge) {
+    // weld's table: a closed sphere's E = 3T / 2 edges, each once with its lower vertex first, and
+    // each corner's entry the edge from it to the next corner.
+    const scene::Mesh sphere = scene::make_sphere(1.0f, 12, 6);
+    const scene::Topology& t = *sphere.topology;
+    ASSERT_EQ(t.corner_edges.size(), t.triangles.size());
+    EXPECT_EQ(2 * t.edge_count(), t.triangles.size());
+    std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+    for (size_t e = 0; e < t.edge_count(); ++e) {
+        EXPECT_LT(t.edges[2 * e], t.edges[2 * e + 1]);
+        EXPECT_TRUE(seen.insert({t.edges[2 * e], t.edges[2 * e + 1]}).second) << "edge " << e << " twice";
+    }
+    for (size_t k = 0; k < t.triangles.size(); ++k) {
+        const std::uint32_t a = t.triangles[k], b = t.triangles[k - k % 3 + (k + 1) % 3];
+        const std::uint32_t e = t.corner_edges[k];
+        EXPECT_EQ(std::minmax(a, b), std::minmax(t.edges[2 * e], t.edges[2 * e + 1])) << "corner " << k;
+    }
+    // A topology made by hand (no table) extrudes to the same volume, mirrored or not; a table that
+    // names the wrong edges would not (the control).
+    scene::Topology bare;
+    bare.positions = t.positions;
+    bare.triangles = t.triangles;
+    const auto sorted = [](std::vector<glm::vec4> v) {
+        std::vector<Key> k;
+        for (const auto& p : v) k.push_back(key(p));
+        std::sort(k.begin(), k.end());
+        return k;
+    };
+    for (const glm::mat4& world : {glm::mat4(1.0f), glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f))}) {
+        const auto with = shadow::extrude_volume(t, world, {3, 4, 2, 1}, true, true);
+        const auto without = shadow::extrude_volume(bare, world, {3, 4, 2, 1}, true, true);
+        EXPECT_EQ(with.silhouette_edges, without.silhouette_edges);
+        EXPECT_EQ(sorted(all(with)), sorted(all(without)));
+    }
+    scene::Topology wrong = t;
+    std::rotate(wrong.corner_edges.begin(), wrong.corner_edges.begin() + 1, wrong.corner_edges.end());
+    EXPECT_NE(open_edges(all(shadow::extrude_volume(wrong, glm::mat4(1.0f), {3, 4, 2, 1}, true, true))), 0);
 }
 
 TEST(ShadowVolumes, SilhouettesComeFromEdgeMultiplicity) {
