@@ -233,8 +233,12 @@ void Device::draw(const MeshBuffers& mesh) {
                                nullptr));
 }
 
-Buffer Device::upload_points(const std::vector<glm::vec4>& triangles, const char* label) {
-    return Buffer(BufferKind::Vertex, triangles.data(), triangles.size() * sizeof(glm::vec4), label);
+Buffer Device::upload_points(const std::vector<glm::vec4>& triangles, const char* label, std::size_t capacity) {
+    const std::size_t bytes = triangles.size() * sizeof(glm::vec4);
+    if (capacity <= bytes) return Buffer(BufferKind::Vertex, triangles.data(), bytes, label);
+    Buffer b(BufferKind::Vertex, nullptr, capacity, label, true);
+    b.update(triangles.data(), bytes);
+    return b;
 }
 
 void Device::draw_points(const Buffer& points, std::size_t count) {

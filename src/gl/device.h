@@ -60,7 +60,9 @@ public:
     // Triangles of homogeneous points (x, y, z, w) made on the CPU (shadow volumes), uploaded once
     // into a buffer of their own, then drawn from it in a_position as often as they are still
     // wanted (a still volume: render/renderer.h keeps the buffer per list).
-    Buffer upload_points(const std::vector<glm::vec4>& triangles, const char* label);
+    // `capacity`: bytes to allocate if more than the points take (a buffer refilled later with
+    // Buffer::update; GL_DYNAMIC_DRAW then).
+    Buffer upload_points(const std::vector<glm::vec4>& triangles, const char* label, std::size_t capacity = 0);
     void draw_points(const Buffer& points, std::size_t count);
     // A single triangle that covers the viewport (positions in clip space in a_position.xy).
     void draw_fullscreen();

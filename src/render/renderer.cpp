@@ -159,15 +159,34 @@ void Renderer::run(const scene::Scene& scene, const FramePlan& plan) {
     }
     timer_.end_frame();
     device_.apply(gl::PipelineState{});
-    for (auto it = triangles_.begin(); it != triangles_.end();)
-        it = it->second.run + 1 < runs_ ? triangles_.erase(it) : std::next(it);
+    for (auto it = triangles_.begin(); it != triangles_.end();) {
+        if (it->second.run + 1 >= runs_) {
+            ++it;
+            continue;
+        }
+        if (spare_.size() < kSpareBuffers && it->second.buffer.id() != 0) spare_.push_back(std::move(it->second.buffer));
+        it = triangles_.erase(it);
+    }
 }
 
 const gl::Buffer& Renderer::triangle_buffer(const std::shared_ptr<const std::vector<glm::vec4>>& list) {
     TriangleBuffer& b = triangles_[list.get()];
     if (b.list != list) {  // new here
         b.list = list;
-        b.buffer = device_.upload_points(*list, "triangles (a shadow volume)");
+        const std::size_t bytes = list->size() * sizeof(glm::vec4);
+        // The smallest spare buffer it fits, refilled; else a new one with a quarter to spare (a
+        // moving volume grows and shrinks a little from frame to frame).
+        auto fit = spare_.end();
+        for (auto it = spare_.begin(); it != spare_.end(); ++it)
+            if (it->bytes() >= bytes && (fit == spare_.end() || it->bytes() < fit->bytes())) fit = it;
+        if (fit != spare_.end()) {
+            b.buffer = std::move(*fit);
+            spare_.erase(fit);
+            b.buffer.update(list->data(), bytes);
+            ++triangle_refills_;
+        } else {
+            b.buffer = device_.upload_points(*list, "triangles (a shadow volume)", bytes + bytes / 4);
+        }
         ++triangle_uploads_;
     }
     b.run = runs_;

@@ -76,6 +76,7 @@ public:
     // those held on the context now: a list a later plan keeps (the same pointer) is drawn from
     // its buffer, not uploaded again.
     std::uint64_t triangle_uploads() const { return triangle_uploads_; }
+    std::uint64_t triangle_refills() const { return triangle_refills_; }  // of those, into a dropped list's buffer
     std::size_t triangle_buffers() const { return triangles_.size(); }
 
 private:
@@ -108,7 +109,11 @@ private:
     };
     const gl::Buffer& triangle_buffer(const std::shared_ptr<const std::vector<glm::vec4>>& list);
     std::unordered_map<const std::vector<glm::vec4>*, TriangleBuffer> triangles_;
-    std::uint64_t runs_ = 0, triangle_uploads_ = 0;
+    // The buffers of dropped lists (a moving caster's volume of two frames ago), refilled by the
+    // next lists that fit rather than a buffer made and deleted each frame; at most kSpareBuffers.
+    static constexpr std::size_t kSpareBuffers = 8;
+    std::vector<gl::Buffer> spare_;
+    std::uint64_t runs_ = 0, triangle_uploads_ = 0, triangle_refills_ = 0;
     std::vector<float> loaded_;  // fingerprint of the scene whose meshes and images are uploaded
 };
 

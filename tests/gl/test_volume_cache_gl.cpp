@@ -1,6 +1,7 @@
 // Shadow volumes that cost what they draw, on a context: a still frame uploads no triangles and
 // draws the same image; a frame after a move draws what a renderer that never saw the frame
-// before draws; the renderer holds only the lists of the plans it ran last.
+// before draws, from a refilled buffer too; the renderer holds only the lists of the plans it ran
+// last.
 #include "gl_fixture.h"
 
 #include <algorithm>
@@ -83,6 +84,23 @@ TEST_F(VolumeCacheGl, AMovedFrameDrawsWhatAFreshRendererDraws) {
         EXPECT_GE(renderer->triangle_uploads() - uploads, volume_draws(*renderer->last_plan()) - (show ? 1u : 0u));
         EXPECT_EQ(lit, fresh(course.scene, s));
     }
+}
+
+TEST_F(VolumeCacheGl, ARefilledBufferDrawsWhatANewOneDraws) {
+    // The teapot jumps for 8 frames: from the third on, its new volume goes into the buffer of the
+    // one two frames back (a little larger or smaller: the rest of the buffer is not drawn).
+    scene::CourseScene course = scene::make_course_scene(4);
+    const render::Settings s = volumes(false);
+    std::vector<std::uint8_t> first, last;
+    for (int i = 0; i < 8; ++i) {
+        scene::animate_course(course, 0.6, 0.6 + 0.03 * i);
+        last = frame(*renderer, course.scene, s);
+        if (i == 0) first = last;
+    }
+    EXPECT_GT(renderer->triangle_refills(), 0u);
+    EXPECT_NE(last, first) << "the control: the jump shows";
+    EXPECT_EQ(last, fresh(course.scene, s));
+    gl::check_errors("refilled volume buffers");
 }
 
 TEST_F(VolumeCacheGl, TheRendererHoldsOnlyTheListsOfItsLastPlans) {
