@@ -55,16 +55,24 @@ void index_edges(Topology& t) {
         }
 }
 
-bool is_closed(const Topology& t) {
-    if (t.triangles.size() < 12) return false;  // fewer than 4 triangles
-    // Each directed edge once; its reverse once.
-    std::unordered_map<std::uint64_t, int> edges;
-    const auto key = [](std::uint32_t from, std::uint32_t to) { return (static_cast<std::uint64_t>(from) << 32) | to; };
+const Topology& with_edge_table(const Topology& topology, Topology& storage) {
+    if (topology.corner_edges.size() == topology.triangles.size() / 3 * 3) return topology;
+    storage = topology;
+    index_edges(storage);
+    return storage;
+}
+
+bool is_closed(const Topology& topology) {
+    if (topology.triangles.size() < 12) return false;  // fewer than 4 triangles
+    Topology storage;
+    const Topology& t = with_edge_table(topology, storage);
+    // Every edge run once from its lower vertex to its higher, once back.
+    std::vector<int> up(t.edge_count(), 0), down(t.edge_count(), 0);
     for (size_t k = 0; k + 2 < t.triangles.size(); k += 3)
         for (size_t j = 0; j < 3; ++j)
-            if (++edges[key(t.triangles[k + j], t.triangles[k + (j + 1) % 3])] > 1) return false;  // run twice the same way
-    for (const auto& [e, n] : edges)
-        if (!edges.count(key(static_cast<std::uint32_t>(e & 0xffffffffu), static_cast<std::uint32_t>(e >> 32)))) return false;
+            ++(t.triangles[k + j] < t.triangles[k + (j + 1) % 3] ? up : down)[t.corner_edges[k + j]];
+    for (size_t e = 0; e < up.size(); ++e)
+        if (up[e] != 1 || down[e] != 1) return false;
     return true;
 }
 

@@ -52,6 +52,8 @@ struct Topology {
 Topology weld(const Mesh& mesh);  // with its edge table
 // Fills topology.edges and corner_edges from its triangles (a topology made by hand has none).
 void index_edges(Topology& topology);
+// `topology` if it has its edge table, else a copy given one in `storage`.
+const Topology& with_edge_table(const Topology& topology, Topology& storage);
 
 // Whether the triangles enclose a volume: with positions welded, every edge is shared by exactly
 // two triangles that run it in opposite directions (consistent winding).

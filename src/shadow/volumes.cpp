@@ -9,14 +9,8 @@ namespace penumbra::shadow {
 ShadowVolume extrude_volume(const scene::Topology& topology, const glm::mat4& world, const glm::vec4& light,
                             bool closed, bool caps) {
     // The edge table weld made (a topology made by hand gets one here).
-    const scene::Topology* with_edges = &topology;
-    scene::Topology own;
-    if (topology.corner_edges.size() != topology.triangles.size() / 3 * 3) {
-        own = topology;
-        scene::index_edges(own);
-        with_edges = &own;
-    }
-    const scene::Topology& t = *with_edges;
+    scene::Topology storage;
+    const scene::Topology& t = scene::with_edge_table(topology, storage);
     ShadowVolume v;
     const glm::vec3 l(light);
     const bool directional = light.w == 0.0f;
