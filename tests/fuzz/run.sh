@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs one libFuzzer target of a built fuzz tree: run.sh BUILD_DIR TARGET [libFuzzer flags...]
-# (ctest's fuzz.* pass -max_total_time=60; scripts/fuzz.sh builds first and passes its own).
+# (ctest's fuzz.* pass -max_total_time=30; scripts/fuzz.sh builds first and passes its own).
 # TARGET: gltf, options, query or snippets. The corpus grows in BUILD_DIR/fuzz/corpus/TARGET (seeds in
 # BUILD_DIR/fuzz/seeds/TARGET are read, never written); a crash, leak or timeout is written to
 # BUILD_DIR/fuzz/crashes/TARGET/ and fails the run; the log is BUILD_DIR/fuzz/logs/TARGET-*.log.
