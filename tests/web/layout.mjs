@@ -11,7 +11,8 @@
 // showing the value in effect; the note clears with the next good change; and the readouts while
 // the context is lost (no ms figure, a note over the canvas) and after it is restored ("restored",
 // then "running", the note gone).
-// Screenshots of every page at both sizes go to OUT_DIR (argument 1) for a person to look at.
+// Screenshots of every page at both sizes go to OUT_DIR (argument 1) for a person to look at (the
+// phone's whole page in CSS pixels: the layout, at a third of the 3x capture's cost).
 import { mkdirSync } from 'node:fs';
 import path from 'node:path';
 import { runTest, openPage, check, PAGES } from './harness.mjs';
@@ -116,7 +117,7 @@ await runTest('web.layout', async ({ server, browser }) => {
       check(m.canvas.right <= m.innerWidth + 0.5 && m.canvas.width >= 300, `${p} 390x844: the canvas ${JSON.stringify(m.canvas)}`);
       checkStore(p, m, '390x844 at 3x');
       check(m.store.width > 2 * m.canvas.width, `${p} 390x844: the backing store ${m.store.width} px for ${m.canvas.width} CSS px at 3x`);
-      await page.screenshot({ path: path.join(OUT, `${p}-390x844.png`), fullPage: true });
+      await page.screenshot({ path: path.join(OUT, `${p}-390x844.png`), fullPage: true, scale: 'css' });
       check(problems.length === 0, `${p} 390x844: ${problems.join('; ')}`);
       console.log(`${p} 390x844 at 3x: canvas ${m.canvas.width} CSS px, backing store ${m.store.width}x${m.store.height}; page ${m.scrollWidth} px wide`);
       await context.close();
