@@ -1,6 +1,8 @@
 // GL error reporting: errors name the GL call (or the pass) and the source line.
 // Per-call checks are compiled in for Debug builds (or PENUMBRA_GL_CHECKS=1); the renderer also
-// calls check_errors() after every pass in every build, which costs one glGetError per pass.
+// calls check_errors() in every build: after every pass natively (one glGetError per pass), once
+// after the frame's last pass in the browser (kErrorQueryWaits). An error stays queued until a
+// glGetError reads it, so a later check still catches it; it only names a wider span.
 #pragma once
 
 #include <stdexcept>
@@ -26,6 +28,16 @@ void check_errors(const char* where, const char* file = nullptr, int line = 0);
 // The oldest pending glGetError value (0: none), taken off the queue without throwing; for the
 // pages' test hook and for draining what a lost context left behind.
 unsigned int take_error();
+
+// Whether a glGetError waits for every command issued before it. In the browser it does: WebGL's
+// getError is a synchronous call to the GPU process, which answers once it has run what came
+// before (each one a stall in the frame: the pages made 9 or 10 a frame). Natively it reads the
+// driver's error flag.
+#ifdef __EMSCRIPTEN__
+inline constexpr bool kErrorQueryWaits = true;
+#else
+inline constexpr bool kErrorQueryWaits = false;
+#endif
 
 }  // namespace penumbra::gl
 

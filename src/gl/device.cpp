@@ -191,7 +191,11 @@ void Device::apply(const PipelineState& s) {
     if (offset && (s.offset_factor != state_.offset_factor || s.offset_units != state_.offset_units))
         glPolygonOffset(s.offset_factor, s.offset_units);
     state_ = s;
+    // Per call in checked builds only: in the others the pass's (or the frame's) check finds what
+    // these calls left queued, naming the pass.
+#if defined(PENUMBRA_GL_CHECKS) || !defined(NDEBUG)
     check_errors("Device::apply", __FILE__, __LINE__);
+#endif
 }
 
 void Device::use(const Program& program) {

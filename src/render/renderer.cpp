@@ -156,6 +156,14 @@ void Renderer::run(const scene::Scene& scene, const FramePlan& plan) {
         if (!pass.skipped) timer_.begin_pass(pass.name);
         run_pass(scene, plan, pass);
         timer_.end_pass();
+        if (!gl::kErrorQueryWaits && !pass.skipped) gl::check_errors(("the " + pass.name + " pass").c_str());
+    }
+    // In the browser one check for the whole frame (each is a stall: gl/check.h).
+    if (gl::kErrorQueryWaits) {
+        std::string passes;
+        for (const Pass& pass : plan.passes)
+            if (!pass.skipped) passes += (passes.empty() ? "" : ", ") + pass.name;
+        gl::check_errors(("the frame's passes (" + passes + ")").c_str());
     }
     timer_.end_frame();
     device_.apply(gl::PipelineState{});
@@ -271,7 +279,6 @@ void Renderer::run_pass(const scene::Scene& scene, const FramePlan& plan, const 
         pool_.copy_into(plan.resources[static_cast<size_t>(pass.copy_to)].desc.name, t.x, t.y, t.width, t.height);
         device_.forget_textures();
     }
-    gl::check_errors(("the " + pass.name + " pass").c_str());
 }
 
 std::vector<std::uint8_t> Renderer::read_rows(const gl::Target& target) {

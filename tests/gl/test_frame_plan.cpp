@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <set>
 
+#include "gl/gl_headers.h"
 #include "gl/objects.h"
 #include "plan/options.h"
 #include "render/shader_library.h"
@@ -154,6 +155,33 @@ TEST_F(RendererGl, ChecksNameTheProblem) {
     no_ground.ground_object = -1;
     EXPECT_NE(renderer->check(no_ground, s).find("ground"), std::string::npos);
     EXPECT_EQ(renderer->check(course.scene, s), "");
+}
+
+// A GL error stays queued until a glGetError reads it: one left by any call before or inside a
+// pass is caught by the check after that pass, which names the pass (in release builds the state
+// calls are not checked one by one; in the browser the frame is checked once: gl/check.h).
+TEST_F(RendererGl, AnErrorLeftQueuedIsCaughtAfterThePassNamingIt) {
+    auto course = scene::make_course_scene(2);
+    render::Settings s;
+    const auto plan = renderer->plan(course.scene, s, kSmall);
+    ASSERT_FALSE(plan.passes.empty());
+    EXPECT_NO_THROW(renderer->execute(course.scene, plan));  // the control: nothing queued
+    const auto first = std::find_if(plan.passes.begin(), plan.passes.end(), [](const auto& p) { return !p.skipped; });
+    ASSERT_NE(first, plan.passes.end());
+    glEnable(0x1234);  // not a capability: GL_INVALID_ENUM, queued
+    try {
+        renderer->execute(course.scene, plan);
+        ADD_FAILURE() << "the queued GL_INVALID_ENUM was not reported";
+    } catch (const gl::Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("GL_INVALID_ENUM"), std::string::npos) << what;
+#if defined(PENUMBRA_GL_CHECKS) || !defined(NDEBUG)
+        EXPECT_NE(what.find(" after "), std::string::npos) << what;  // checked builds: the first checked call
+#else
+        EXPECT_NE(what.find("the " + first->name + " pass"), std::string::npos) << what;
+#endif
+    }
+    EXPECT_NO_THROW(renderer->execute(course.scene, plan));  // the check drained the queue
 }
 
 TEST_F(RendererGl, EveryCombinationRendersWithoutGlErrors) {

@@ -2,7 +2,10 @@
 // and draws nothing while it is; after restoreContext() it says so, has made its renderer and GL
 // objects again (shaders, meshes, textures, shadow map, FBO, the volumes' buffers, the light samples'
 // targets: the module's GL generation goes from 1 to 2), renders the same frame again (fixed t) and
-// reports no GL or console error.
+// reports no GL or console error. Then, on W09P2c, a GL error queued before a frame (an invalid
+// enum): that frame fails, its error names GL_INVALID_ENUM and the frame's passes (in the browser
+// the renderer reads glGetError once a frame: each read waits for the GPU process) in the
+// module's status, and the next frame draws again.
 import { runTest, openPage, frameAt, compare, check, PAGES } from './harness.mjs';
 
 const T = 0.6;
@@ -44,6 +47,28 @@ await runTest('web.context_loss', async ({ server, browser }) => {
     check(err === 0, `${p}: glGetError 0x${err.toString(16)} after the restore`);
     check(problems.length === 0, `${p}: ${problems.join('; ')}`);
     console.log(`${p}: '${lostStatus}' -> '${await page.textContent('#status')}'; same frame after the restore`);
+    await context.close();
+  }
+
+  {
+    const { page, context, problems } = await openPage(browser, `${server.url}/w09p2c.html`);
+    const ok = await page.evaluate(() => { window.penumbra.pause(); return window.penumbra.renderNow(); });
+    check(ok, 'w09p2c: the frame before the queued error failed');  // the control
+    const r = await page.evaluate(() => {
+      document.getElementById('canvas').getContext('webgl').enable(0x1234);  // GL_INVALID_ENUM, queued
+      const drawn = window.penumbra.renderNow();
+      return { drawn, error: window.penumbra.state().status };
+    });
+    check(!r.drawn, 'w09p2c: a frame after a queued GL_INVALID_ENUM drew as if nothing were wrong');
+    check(/GL_INVALID_ENUM/.test(r.error) && /the frame's passes \(.*camera/.test(r.error),
+          `w09p2c: the queued error was reported as '${r.error}'`);
+    const again = await page.evaluate(() => window.penumbra.renderNow());
+    check(again, 'w09p2c: the frame after the reported error failed too');
+    const err = await page.evaluate(() => window.penumbra.glError());
+    check(err === 0, `w09p2c: glGetError 0x${err.toString(16)} after the reported error`);
+    const others = problems.filter((m) => !/GL_INVALID_ENUM/.test(m));
+    check(others.length === 0, `w09p2c: ${others.join('; ')}`);
+    console.log(`w09p2c: a queued GL error: the status '${r.error}'; the next frame draws`);
     await context.close();
   }
 });

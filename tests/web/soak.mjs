@@ -2,7 +2,7 @@
 // real controls (the selects, boxes, buttons and bias radios, as a student would) through a fixed
 // cycle of 12 settings that visits every value of every control the exercise offers and every
 // combination of encoding x filter x precision. Asserts:
-//   - no GL error: every non-zero WebGL getError (the renderer checks after each pass), the
+//   - no GL error: every non-zero WebGL getError (the renderer checks once a frame here), the
 //     module's pending glGetError after each batch of frames, no frame that failed, no console error;
 //   - GL objects flat: the live textures, buffers, framebuffers, renderbuffers, programs and shaders
 //     (WebGLRenderingContext's create*/delete* wrapped before the page's scripts) at the end of each
