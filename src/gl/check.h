@@ -39,6 +39,14 @@ inline constexpr bool kErrorQueryWaits = true;
 inline constexpr bool kErrorQueryWaits = false;
 #endif
 
+// Checked builds (Debug, or PENUMBRA_GL_CHECKS=1): a glGetError after every GL call (PENUMBRA_GL)
+// and state change, and uniforms the program does not declare refused.
+#if defined(PENUMBRA_GL_CHECKS) || !defined(NDEBUG)
+inline constexpr bool kCheckEachCall = true;
+#else
+inline constexpr bool kCheckEachCall = false;
+#endif
+
 }  // namespace penumbra::gl
 
 #if defined(PENUMBRA_GL_CHECKS) || !defined(NDEBUG)

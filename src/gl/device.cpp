@@ -193,9 +193,7 @@ void Device::apply(const PipelineState& s) {
     state_ = s;
     // Per call in checked builds only: in the others the pass's (or the frame's) check finds what
     // these calls left queued, naming the pass.
-#if defined(PENUMBRA_GL_CHECKS) || !defined(NDEBUG)
-    check_errors("Device::apply", __FILE__, __LINE__);
-#endif
+    if constexpr (kCheckEachCall) check_errors("Device::apply", __FILE__, __LINE__);
 }
 
 void Device::use(const Program& program) {

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "gl/check.h"
 #include "gl/state.h"
 
 namespace penumbra::gl {
@@ -171,11 +172,7 @@ private:
 enum Attribute : std::uint32_t { kPosition = 0, kNormal = 1, kUV = 2 };
 
 // Debug builds (and PENUMBRA_GL_CHECKS) refuse to set a uniform the program does not declare.
-#if defined(PENUMBRA_GL_CHECKS) || !defined(NDEBUG)
-inline constexpr bool kStrictUniforms = true;
-#else
-inline constexpr bool kStrictUniforms = false;
-#endif
+inline constexpr bool kStrictUniforms = kCheckEachCall;
 
 // A linked program. Compile and link logs go into the thrown error with the label.
 class Program {
