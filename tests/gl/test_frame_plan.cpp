@@ -369,8 +369,8 @@ TEST_F(RendererGl, ThePoolHoldsOnlyWhatTheLastPlanDeclared) {
     EXPECT_TRUE(renderer->pool().has("camera"));
     EXPECT_EQ(renderer->pool().bytes(), renderer->last_plan()->resource("shadow-map")->desc.bytes() +
                                             renderer->last_plan()->resource("camera")->desc.bytes());
-    // 512 x 512 RGBA8 + a 24-bit depth buffer (4 bytes a texel as the GPU stores it).
-    EXPECT_EQ(renderer->last_plan()->resource("shadow-map")->desc.bytes(), 512u * 512u * 8u);
+    // 512 x 512 RGBA8 + a 16-bit depth buffer (a packed map's depth only keeps the nearest caster).
+    EXPECT_EQ(renderer->last_plan()->resource("shadow-map")->desc.bytes(), 512u * 512u * 6u);
     s.technique = render::Technique::None;
     renderer->render(course.scene, s, kSmall);
     EXPECT_FALSE(renderer->pool().has("shadow-map"));

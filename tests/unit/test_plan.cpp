@@ -103,6 +103,20 @@ TEST_F(PlanTest, ADepthTextureMapHasNoColour) {
     EXPECT_NE(render::check(course.scene, s, caps, kIn).find("OES_depth_texture"), std::string::npos);
 }
 
+// A packed map reads its depth from the colour; its depth buffer only keeps the nearest caster,
+// in 16 bits even where the context has 24 (the camera's buffer keeps them).
+TEST_F(PlanTest, APackedMapKeepsTheNearestCasterInSixteenBitsOfDepth) {
+    ASSERT_TRUE(caps.depth24);
+    for (const auto e : {shadow::Encoding::RGBA, shadow::Encoding::R8}) {
+        s.encoding = e;
+        const FramePlan p = make();
+        ASSERT_TRUE(p.resource("shadow-map")->desc.depth_buffer);
+        EXPECT_EQ(*p.resource("shadow-map")->desc.depth_buffer, gl::RenderbufferFormat::Depth16);
+        ASSERT_TRUE(p.resource("camera")->desc.depth_buffer);
+        EXPECT_EQ(*p.resource("camera")->desc.depth_buffer, gl::RenderbufferFormat::Depth24);
+    }
+}
+
 TEST_F(PlanTest, ObjectsThatReceiveNoShadowLookNothingUp) {
     course.scene.objects[static_cast<size_t>(course.teapot)].receives_shadow = false;
     const FramePlan p = make();

@@ -136,8 +136,8 @@ void clear_atlas_once(PlanContext& c, size_t first) {
     passes.insert(passes.begin() + static_cast<std::ptrdiff_t>(first), std::move(q));
 }
 
-// The map's texture: packed colour with a depth buffer, or a depth texture; never interpolated
-// (blending two packed values is meaningless).
+// The map's texture: packed colour with a 16-bit depth buffer that only keeps the nearest caster
+// (docs/culling.md), or a depth texture; never interpolated (blending packed values is meaningless).
 ResourceDesc map_desc(const PlanContext& c, int width, int height) {
     ResourceDesc d;
     d.name = c.named(kMap);
@@ -148,7 +148,7 @@ ResourceDesc map_desc(const PlanContext& c, int width, int height) {
     const bool depthtex = c.settings.encoding == shadow::Encoding::DepthTex;
     d.color = !depthtex;
     d.depth_texture = depthtex;
-    if (!depthtex) d.depth_buffer = c.caps.depth_format();
+    if (!depthtex) d.depth_buffer = gl::RenderbufferFormat::Depth16;
     return d;
 }
 
