@@ -33,11 +33,12 @@ else
 fi
 
 # playwright-core (drives /usr/bin/chromium; no browser download), pngjs and three (the three.js
-# side by side, tools/threejs_compare.mjs) for the browser tests, and codemirror (the shader lab's
-# editor, which the web build copies into the site), as package-lock.json pins them.
+# side by side, tools/threejs_compare.mjs) for the browser tests, codemirror (the shader lab's
+# editor, which the web build copies into the site) and google-closure-compiler (the web build
+# minifies the pages' scripts with it), as package-lock.json pins them.
 if [ ! -d node_modules/playwright-core ] || [ ! -d node_modules/three ] || [ ! -d node_modules/codemirror ] ||
-   [ package-lock.json -nt node_modules/.package-lock.json ]; then
-  echo "setup: npm ci (playwright-core, pngjs, three, codemirror)"
+   [ ! -d node_modules/google-closure-compiler ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
+  echo "setup: npm ci (playwright-core, pngjs, three, codemirror, google-closure-compiler)"
   npm ci --no-audit --no-fund --loglevel=error
 fi
 

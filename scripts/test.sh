@@ -10,8 +10,10 @@ cd "$(dirname "$0")/.."
 start=$(date +%s)
 cmake --preset ci >/dev/null
 cmake --build --preset ci
-# The npm packages first: the web build copies the shader lab's editor from node_modules/codemirror.
-{ [ -d node_modules/playwright-core ] && [ -d node_modules/three ] && [ -d node_modules/codemirror ]; } ||
+# The npm packages first: the web build copies the shader lab's editor from node_modules/codemirror
+# and minifies the pages' scripts with node_modules/google-closure-compiler.
+{ [ -d node_modules/playwright-core ] && [ -d node_modules/three ] && [ -d node_modules/codemirror ] &&
+  [ -d node_modules/google-closure-compiler ]; } ||
   npm ci --no-audit --no-fund --loglevel=error
 # The web pages once (Emscripten; prints each page's payload); the web.* tests load build-web/site.
 cmake --preset web >/dev/null
