@@ -9,6 +9,7 @@
 #include "platform/platform.h"
 #include "query.h"
 #include "plan/json.h"
+#include "plan/options.h"
 #include "plan/techniques/technique.h"
 #include "scene/eye.h"
 #include "scenes/portal_scene.h"
@@ -181,8 +182,13 @@ std::string CourseApp::keep_to_the_list(render::Settings& t, std::string_view na
         if (offered.empty()) offered = {listed.front()};
     }
     if (offers(offered)) return {};
-    const double want = std::stod(v);
-    const auto distance = [&](const std::string& x) { return std::fabs(std::log((std::stod(x) + 1.0) / (want + 1.0))); };
+    const auto number = [](const std::string& x) {
+        double d = 0.0;
+        render::parse_number(x, d);  // whole numbers: the option's value and the exercise's list
+        return d;
+    };
+    const double want = number(v);
+    const auto distance = [&](const std::string& x) { return std::fabs(std::log((number(x) + 1.0) / (want + 1.0))); };
     std::string best = offered.front();
     for (const auto& x : offered)
         if (distance(x) < distance(best)) best = x;

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "plan/options.h"
 #include "scenes/room_scene.h"
 #include "scenes/terrain_scene.h"
 
@@ -137,9 +137,10 @@ std::string parse_fly(std::string_view value, const FlyBounds& b, FlyCamera& out
     for (int i = 0; i < 5; ++i) {
         const size_t end = i < 4 ? text.find(',', at) : text.size();
         const std::string part = end == std::string::npos ? std::string() : text.substr(at, end - at);
-        char* stop = nullptr;
-        v[i] = part.empty() ? std::nan("") : std::strtod(part.c_str(), &stop);
-        if (part.empty() || *stop != '\0' || !std::isfinite(v[i]) || (i == 4 && end != text.size()))
+        // Spaces before a number are allowed ("1, 2, 3"), as strtod allowed them.
+        const size_t first = part.find_first_not_of(" \t\n\v\f\r");
+        if (first == std::string::npos || !render::parse_number(std::string_view(part).substr(first), v[i]) ||
+            (i == 4 && end != text.size()))
             return "camera=" + text + ": needs five numbers X,Y,Z,YAW,PITCH (metres, degrees)";
         at = end + 1;
     }

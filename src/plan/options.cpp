@@ -9,6 +9,12 @@
 
 #include "plan/post.h"
 
+#ifdef __EMSCRIPTEN__
+// JavaScript's Number() over `length` ASCII bytes that read_number has checked are a decimal:
+// src/platform/emscripten_number.js, a JavaScript library every module of the web build links.
+extern "C" double penumbra_js_number(const char* text, int length);
+#endif
+
 namespace penumbra::render {
 
 bool Job::operator==(const Job& o) const {
@@ -29,12 +35,56 @@ bool parse_int(std::string_view v, int& out) {
     return true;
 }
 
+namespace {
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// `v` from `at` on, case aside, is `word`.
+bool rest_is(std::string_view v, size_t at, std::string_view word) {
+    if (v.size() - at != word.size()) return false;
+    for (size_t i = 0; i < word.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(v[at + i])) != word[i]) return false;
+    return true;
+}
+
+}  // namespace
+
+bool read_number(std::string_view v, double& out) {
+    size_t i = 0;
+    const bool minus = !v.empty() && v[0] == '-';
+    if (!v.empty() && (v[0] == '-' || v[0] == '+')) ++i;
+    if (rest_is(v, i, "inf") || rest_is(v, i, "infinity")) {
+        out = minus ? -HUGE_VAL : HUGE_VAL;
+        return true;
+    }
+    if (rest_is(v, i, "nan")) {
+        out = std::nan("");
+        return true;
+    }
+    // [+-] digits [. digits] | [+-] . digits, then [eE [+-] digits]: the whole text.
+    size_t digits = 0;
+    for (; i < v.size() && is_digit(v[i]); ++i) ++digits;
+    if (i < v.size() && v[i] == '.')
+        for (++i; i < v.size() && is_digit(v[i]); ++i) ++digits;
+    if (digits == 0) return false;
+    if (i < v.size() && (v[i] == 'e' || v[i] == 'E')) {
+        ++i;
+        if (i < v.size() && (v[i] == '-' || v[i] == '+')) ++i;
+        if (i == v.size() || !is_digit(v[i])) return false;
+        while (i < v.size() && is_digit(v[i])) ++i;
+    }
+    if (i != v.size()) return false;
+#ifdef __EMSCRIPTEN__
+    out = penumbra_js_number(v.data(), static_cast<int>(v.size()));
+#else
+    out = std::strtod(std::string(v).c_str(), nullptr);
+#endif
+    return true;
+}
+
 bool parse_number(std::string_view v, double& out) {
-    const std::string s(v);
-    if (s.empty() || std::isspace(static_cast<unsigned char>(s.front()))) return false;
-    char* end = nullptr;
-    const double x = std::strtod(s.c_str(), &end);
-    if (end != s.c_str() + s.size() || !std::isfinite(x)) return false;
+    double x = 0.0;
+    if (!read_number(v, x) || !std::isfinite(x)) return false;
     out = x;
     return true;
 }
@@ -54,7 +104,8 @@ std::string shortest_float(float f) {
     for (int precision = 1; precision <= 9; ++precision) {
         char buf[32];
         std::snprintf(buf, sizeof buf, "%.*g", precision, static_cast<double>(f));
-        if (static_cast<float>(std::strtod(buf, nullptr)) == f) return buf;
+        double back = 0.0;
+        if (read_number(buf, back) && static_cast<float>(back) == f) return buf;
     }
     return format_number(static_cast<double>(f));
 }
@@ -157,10 +208,8 @@ std::string check_value(const OptionInfo& o, std::string_view value) {
             if (o.type == OptionType::NumberOrWord && among()) return {};
             double v = 0.0;
             if (!parse_number(value, v)) {
-                const std::string text(value);
-                char* end = nullptr;
-                const double x = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
-                if (!text.empty() && end == text.c_str() + text.size() && !std::isfinite(x))
+                double x = 0.0;
+                if (read_number(value, x) && !std::isfinite(x))
                     return opt + "must be a finite number" + range_words(o) + ", got " + quoted;
                 return opt + "not a number: " + quoted +
                        (o.type == OptionType::NumberOrWord ? " (or " + word_list(o.choices, "'") + ")" : "");

@@ -139,6 +139,12 @@ std::string to_args(const Settings& s);
 bool parse_int(std::string_view text, int& out);
 // A finite number as people type it (1e-3, .5); no trailing text, no inf or nan.
 bool parse_number(std::string_view text, double& out);
+// The whole text as a decimal number ([+-] digits [. digits] [e [+-] digits], or .5) or inf,
+// infinity, nan (any case): what strtod reads but hexadecimal, leading spaces and trailing text.
+// The value is correctly rounded: natively by strtod, in the browser by JavaScript's Number()
+// (exact to 20 significant digits, and %.17g prints 17), which keeps the C library's strtod and
+// the long-double arithmetic it needs (7 KB gzipped) out of every page's module.
+bool read_number(std::string_view text, double& out);
 // "640x360".
 bool parse_size(std::string_view text, int& width, int& height);
 // The items of a comma list ("outline,mirror"), empty ones included ("a,,b" has three).

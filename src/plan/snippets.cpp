@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
+
+#include "plan/options.h"
 
 namespace penumbra::render {
 
@@ -150,11 +153,15 @@ std::vector<std::string> contract_types(SnippetFn f) {
     return {};
 }
 
-// A number token's value ("1.5", "2", "1e-3"; octal and hex as C reads them).
+// A number token's value ("1.5", "2", "1e-3", "0x1F"; "017" is 17, as C's strtod reads it).
 bool number_value(const std::string& t, double& v) {
-    char* end = nullptr;
-    v = std::strtod(t.c_str(), &end);
-    return end && *end == '\0';
+    if (t.size() > 2 && t[0] == '0' && (t[1] == 'x' || t[1] == 'X')) {
+        if (!std::all_of(t.begin() + 2, t.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; }))
+            return false;
+        v = static_cast<double>(std::strtoull(t.c_str() + 2, nullptr, 16));
+        return true;
+    }
+    return read_number(t, v);
 }
 
 struct Call {

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 
 #include "plan/options.h"
 
@@ -202,6 +204,29 @@ TEST(Options, TheSharedNumberParsers) {
     EXPECT_EQ(w, 640);
     EXPECT_FALSE(parse_size("640x", w, h));
     EXPECT_EQ(shortest_float(0.003f), "0.003");
+}
+
+// read_number: strtod's decimals and words, nothing else of it (the browser reads the same texts
+// with JavaScript's Number(): web.url checks them there).
+TEST(Options, ReadNumberTakesDecimalsAndTheWordsOnly) {
+    double d = 0.0;
+    for (const char* ok : {"0", "5.", ".5", "+2", "-0.25", "1e-3", "1E+3", "007", "123456789012345678901234"}) {
+        EXPECT_TRUE(read_number(ok, d)) << ok;
+        EXPECT_EQ(d, std::strtod(ok, nullptr)) << ok;
+    }
+    for (const char* word : {"inf", "-Infinity", "NAN"}) {
+        EXPECT_TRUE(read_number(word, d)) << word;
+        EXPECT_FALSE(std::isfinite(d)) << word;
+    }
+    EXPECT_TRUE(read_number("1e999", d));
+    EXPECT_FALSE(std::isfinite(d));
+    for (const char* bad : {"", " 1", "1 ", "0x10", "1e", "e5", ".", "-", "1..2", "--1", "1.2.3", "infx", "1,5"})
+        EXPECT_FALSE(read_number(bad, d)) << "'" << bad << "'";
+    // What format_number prints (17 digits: past a double's 2^53 mantissa) reads back exactly.
+    for (const double x : {0.1, 1.0 / 3.0, 6.02214076e23, 2.2250738585072014e-308, 4.9406564584124654e-324}) {
+        EXPECT_TRUE(read_number(format_number(x), d)) << format_number(x);
+        EXPECT_EQ(d, x) << format_number(x);
+    }
 }
 
 }  // namespace

@@ -112,4 +112,28 @@ await runTest('web.url', async ({ server, browser }) => {
     check(problems.length === 0, problems.join('; '));
     await context.close();
   }
+  {
+    // Numbers as the module reads them in the browser (JavaScript's Number() behind the C++'s
+    // own check of the text, src/plan/options.cpp read_number): the forms people type, 20
+    // significant digits, and what is not a number here although C's strtod reads it.
+    const { page, context, problems } = await openPage(browser, `${server.url}/w09p2c.html`);
+    const set = (v) => page.evaluate((x) => window.penumbra.setOption('bias', x), v);
+    const bias = async () => (await page.evaluate(() => window.penumbra.state())).options.bias;
+    for (const [text, want] of [['.0025', '0.0025'], ['25e-4', '0.0025'], ['+2.5E-3', '0.0025'],
+                                ['0.0030000000000000001', '0.003'], ['0.004', '0.004']]) {
+      const err = await set(text);
+      check(err === '', `bias=${text} refused: ${err}`);
+      check((await bias()) === want, `bias=${text} reads as ${await bias()}, not ${want}`);
+    }
+    for (const [text, why] of [['nan', /finite number/], ['-inf', /finite number/], ['1e999', /finite number/],
+                               ['0x1p-8', /not a number/], [' 0.002', /not a number/], ['0.002 ', /not a number/],
+                               ['1e', /not a number/], ['.', /not a number/]]) {
+      const err = await set(text);
+      check(why.test(err), `bias='${text}': '${err}', want ${why}`);
+      check((await bias()) === '0.004', `bias='${text}' changed the bias to ${await bias()}`);
+    }
+    check(problems.length === 0, problems.join('; '));
+    console.log('w09p2c: numbers read as natively');
+    await context.close();
+  }
 });
