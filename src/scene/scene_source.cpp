@@ -1,6 +1,7 @@
 #include "scene/scene_source.h"
 
 #include "scene/gltf_loader.h"
+#include "scenes/scale_scenes.h"
 
 namespace penumbra::scene {
 
@@ -9,6 +10,12 @@ bool SceneSource::open(const std::string& name, std::string& error, std::vector<
     course_.reset();
     if (name == "teapot") {
         course_ = make_course_scene(teapot_level);
+        return true;
+    }
+    if (is_scale_name(name)) {
+        ScaleSpec spec;
+        if (!parse_scale_name(name, spec, error)) return false;
+        static_ = make_scale_scene(spec);
         return true;
     }
     LoadResult r = load_gltf(name, load);
