@@ -1,6 +1,8 @@
 #include "shadow/casting.h"
 
+#include "shadow/convex.h"
 #include "shadow/light_frustum.h"
+#include "shadow/receiver_index.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,61 +12,85 @@ namespace penumbra::shadow {
 
 namespace {
 
-// The extent of a set along unit-free axis n.
-struct Span {
-    float lo = std::numeric_limits<float>::max();
-    float hi = std::numeric_limits<float>::lowest();
-    void add(float v) {
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-    }
-};
-
-Span box_span(const scene::Bounds& b, const glm::vec3& n) {
-    Span s;
-    for (const glm::vec3& c : scene::corners(b)) s.add(glm::dot(c, n));
-    return s;
-}
-
-// Whether the plane dot(x, n) = v, with the caster on or below it and the points and the light's
-// segments above it, separates them: segment (ray) points other than the start lie strictly
-// above v when the start is on or above it and the light strictly above, or the start strictly
-// above and the light on or above (for a directional light: the ray's direction along n).
-bool separated_along(const scene::Bounds& caster, const std::vector<glm::vec3>& points, const glm::vec4& light,
-                     const glm::vec3& n) {
-    const Span c = box_span(caster, n);
-    Span p;
-    for (const glm::vec3& q : points) p.add(glm::dot(q, n));
-    const float l = glm::dot(glm::vec3(light), n);
-    // The caster below: the points above it and the light's side above too.
-    if (light.w != 0.0f) {
-        if ((p.lo >= c.hi && l > c.hi) || (p.lo > c.hi && l >= c.hi)) return true;
-        if ((p.hi <= c.lo && l < c.lo) || (p.hi < c.lo && l <= c.lo)) return true;
-    } else {
-        if ((p.lo >= c.hi && l > 0.0f) || (p.lo > c.hi && l >= 0.0f)) return true;
-        if ((p.hi <= c.lo && l < 0.0f) || (p.hi < c.lo && l <= 0.0f)) return true;
-    }
-    return false;
+// The unit axes may_shadow tries: x, y, z, and a directional light's own direction when it has one.
+int axes_of(const glm::vec4& light, glm::vec3 (&axes)[4]) {
+    axes[0] = glm::vec3(1, 0, 0);
+    axes[1] = glm::vec3(0, 1, 0);
+    axes[2] = glm::vec3(0, 0, 1);
+    if (light.w != 0.0f) return 3;
+    const float len = glm::length(glm::vec3(light));
+    if (!(len > 0.0f)) return 3;
+    axes[3] = glm::vec3(light) / len;
+    return 4;
 }
 
 }  // namespace
 
+PointSpans point_spans(const std::vector<glm::vec3>& points, const glm::vec4& light) {
+    glm::vec3 axes[4];
+    const int n = axes_of(light, axes);
+    PointSpans s;
+    for (const glm::vec3& q : points)
+        for (int i = 0; i < n; ++i) {
+            const float v = glm::dot(q, axes[i]);
+            s.lo[i] = std::min(s.lo[i], v);
+            s.hi[i] = std::max(s.hi[i], v);
+        }
+    if (light.w != 0.0f) {
+        const glm::vec3 pos(light);
+        for (const glm::vec3& q : points) s.farthest = std::max(s.farthest, glm::length(q - pos));
+    }
+    return s;
+}
+
+CasterSpans caster_spans(const scene::Bounds& caster, const glm::vec4& light) {
+    glm::vec3 axes[4];
+    CasterSpans c;
+    c.axes = axes_of(light, axes);
+    c.point = light.w != 0.0f;
+    const std::vector<glm::vec3> corners = scene::corners(caster);
+    for (int i = 0; i < c.axes; ++i) {
+        float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
+        for (const glm::vec3& p : corners) {
+            lo = std::min(lo, glm::dot(p, axes[i]));
+            hi = std::max(hi, glm::dot(p, axes[i]));
+        }
+        c.lo[i] = lo;
+        c.hi[i] = hi;
+        c.light[i] = glm::dot(glm::vec3(light), axes[i]);
+    }
+    if (c.point) {
+        const glm::vec3 pos(light);
+        c.reach = glm::length(glm::clamp(pos, caster.min, caster.max) - pos);
+    }
+    return c;
+}
+
+// A plane dot(x, n) = v with the caster on one side and the points and the light's segments on the
+// other separates them: segment (ray) points other than the start lie strictly beyond v when the
+// start is on or beyond it and the light strictly beyond, or the start strictly beyond and the
+// light on or beyond (for a directional light: the ray's direction along n).
+bool separated_above(const CasterSpans& c, int axis, float points_lo) {
+    const float top = c.hi[axis], l = c.light[axis];
+    if (c.point) return (points_lo >= top && l > top) || (points_lo > top && l >= top);
+    return (points_lo >= top && l > 0.0f) || (points_lo > top && l >= 0.0f);
+}
+
+bool separated_below(const CasterSpans& c, int axis, float points_hi) {
+    const float bottom = c.lo[axis], l = c.light[axis];
+    if (c.point) return (points_hi <= bottom && l < bottom) || (points_hi < bottom && l <= bottom);
+    return (points_hi <= bottom && l < 0.0f) || (points_hi < bottom && l <= 0.0f);
+}
+
+bool may_shadow(const CasterSpans& caster, const PointSpans& points) {
+    for (int i = 0; i < caster.axes; ++i)
+        if (separated_above(caster, i, points.lo[i]) || separated_below(caster, i, points.hi[i])) return false;
+    return !nearer_than_caster(caster, points.farthest);
+}
+
 bool may_shadow(const scene::Bounds& caster, const std::vector<glm::vec3>& points, const glm::vec4& light) {
     if (caster.empty() || points.empty()) return false;
-    for (const glm::vec3& axis : {glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1)})
-        if (separated_along(caster, points, light, axis)) return false;
-    if (light.w == 0.0f) {
-        const float len = glm::length(glm::vec3(light));
-        if (len > 0.0f && separated_along(caster, points, light, glm::vec3(light) / len)) return false;
-        return true;
-    }
-    // A point light: every point nearer to it than the box's nearest point.
-    const glm::vec3 pos(light);
-    const glm::vec3 nearest = glm::clamp(pos, caster.min, caster.max);
-    const float reach = glm::length(nearest - pos);
-    float farthest = 0.0f;
-    for (const glm::vec3& q : points) farthest = std::max(farthest, glm::length(q - pos));
-    return !(farthest < reach);
+    return may_shadow(caster_spans(caster, light), point_spans(points, light));
 }
 
 namespace {
@@ -89,43 +115,44 @@ std::vector<glm::vec3> shadowed_points(const CasterBox& caster, const std::vecto
     return out;
 }
 
-namespace {
-
-// The receivers the camera sees, each with its scene object, and caster box k with its object and
-// convexity: what shadows_any and shadowed_points take.
 std::vector<SeenReceiver> seen_receivers(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                          const glm::mat4& camera_view_proj, const CastingInfo& info) {
-    const std::vector<std::vector<glm::vec3>> each = visible_points_each(light, receivers, camera_view_proj);
+    std::vector<char> whole;
+    std::vector<std::vector<glm::vec3>> each = visible_points_each(light, receivers, camera_view_proj, &whole);
     std::vector<SeenReceiver> seen;
+    seen.reserve(each.size());
     for (size_t k = 0; k < each.size(); ++k)
-        seen.push_back({k < info.receiver_objects.size() ? info.receiver_objects[k] : -1, each[k]});
+        seen.push_back({k < info.receiver_objects.size() ? info.receiver_objects[k] : -1, std::move(each[k]), whole[k] != 0});
     return seen;
 }
+
+glm::vec3 visible_centroid(const std::vector<SeenReceiver>& seen) {
+    glm::vec3 sum(0.0f);
+    std::size_t count = 0;
+    for (const SeenReceiver& r : seen) {
+        if (r.whole) {
+            // The eight corners: min first, max last (scene::corners).
+            box_face_corners(scene::Bounds{r.points.front(), r.points.back()}, [&](const glm::vec3& p) { sum += p; });
+            count += 24;
+        } else {
+            for (const glm::vec3& p : r.points) sum += p;
+            count += r.points.size();
+        }
+    }
+    return sum / static_cast<float>(count);
+}
+
 CasterBox caster_box(const std::vector<scene::Bounds>& casters, const CastingInfo& info, size_t k) {
     return {k < info.caster_objects.size() ? info.caster_objects[k] : -1, casters[k],
             k < info.caster_convex.size() && info.caster_convex[k] != 0};
 }
 
-}  // namespace
-
-// The shadows fit's per-caster questions (declared in light_frustum.h, beside the fit).
-std::vector<std::vector<glm::vec3>> shadowed_each(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
-                                                  const std::vector<scene::Bounds>& casters,
-                                                  const glm::mat4& camera_view_proj, const CastingInfo& info) {
-    const std::vector<SeenReceiver> seen = seen_receivers(light, receivers, camera_view_proj, info);
-    const glm::vec4 l = light_vector(light);
-    std::vector<std::vector<glm::vec3>> out;
-    for (size_t k = 0; k < casters.size(); ++k) out.push_back(shadowed_points(caster_box(casters, info, k), seen, l));
-    return out;
-}
-
 std::vector<char> shadowing_flags(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                   const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
                                   const CastingInfo& info) {
-    const std::vector<SeenReceiver> seen = seen_receivers(light, receivers, camera_view_proj, info);
-    const glm::vec4 l = light_vector(light);
-    std::vector<char> keep;
-    for (size_t k = 0; k < casters.size(); ++k) keep.push_back(shadows_any(caster_box(casters, info, k), seen, l) ? 1 : 0);
+    const ReceiverIndex index(seen_receivers(light, receivers, camera_view_proj, info), light_vector(light), info.pairwise);
+    std::vector<char> keep(casters.size(), 0);
+    for (size_t k = 0; k < casters.size(); ++k) keep[k] = index.shadows_any(caster_box(casters, info, k)) ? 1 : 0;
     return keep;
 }
 

@@ -48,9 +48,27 @@ std::vector<glm::vec3> clip_polygon(const std::vector<glm::vec3>& poly, const Ha
     return out;
 }
 
-std::vector<glm::vec3> clip_box(const scene::Bounds& box, const std::vector<HalfSpace>& half_spaces) {
+ClipPlanes clip_planes(const std::vector<HalfSpace>& half_spaces) {
+    ClipPlanes out;
+    for (const HalfSpace& h : half_spaces) {
+        const float len = glm::length(glm::vec3(h));
+        if (!(len > 0.0f) || !std::isfinite(len)) {
+            if (h.w < 0.0f) out.nothing = true;  // a half-space that holds nothing
+            continue;                            // one that holds everything
+        }
+        out.unit.push_back(h / len);
+    }
+    return out;
+}
+
+std::vector<glm::vec3> clip_box(const scene::Bounds& box, const std::vector<HalfSpace>& half_spaces, bool* whole) {
+    return clip_box_by(box, clip_planes(half_spaces), whole);
+}
+
+std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& planes, bool* whole) {
     std::vector<glm::vec3> out;
-    if (box.empty()) return out;
+    if (whole) *whole = false;
+    if (box.empty() || planes.nothing) return out;
     const glm::vec3 lo = box.min;
     const glm::vec3 hi = box.max;
     const glm::vec3 centre = box.center();
@@ -58,21 +76,20 @@ std::vector<glm::vec3> clip_box(const scene::Bounds& box, const std::vector<Half
     // Tolerance for "on the plane", relative to the coordinates' magnitude (float rounding).
     const float scale = std::max({radius, max_abs_component(lo), max_abs_component(hi)});
     const float eps = 1e-5f * scale;
+    const std::vector<HalfSpace>& hs = planes.unit;
 
-    std::vector<HalfSpace> hs;
-    for (const HalfSpace& h : half_spaces) {
-        const float len = glm::length(glm::vec3(h));
-        if (!(len > 0.0f) || !std::isfinite(len)) {
-            if (h.w < 0.0f) return out;  // a half-space that holds nothing
-            continue;                    // one that holds everything
-        }
-        hs.push_back(h / len);
-    }
     // A half-space with every corner beyond it: nothing of the box is inside.
     const std::vector<glm::vec3> corners = scene::corners(box);
     for (const HalfSpace& h : hs)
         if (std::all_of(corners.begin(), corners.end(), [&](const glm::vec3& p) { return signed_distance(h, p) < -eps; }))
             return out;
+
+    // The face loop below builds the six faces whole; with every corner inside every half-space by
+    // more than twice the tolerance, nothing clips them and no half-space's plane comes within the
+    // tolerance of the box: the result is the six faces as they are, the same points, unclipped.
+    const bool inside = std::all_of(hs.begin(), hs.end(), [&](const HalfSpace& h) {
+        return std::all_of(corners.begin(), corners.end(), [&](const glm::vec3& p) { return signed_distance(h, p) > 2.0f * eps; });
+    });
 
     const std::array<HalfSpace, 6> box_hs = {HalfSpace(1, 0, 0, -lo.x), HalfSpace(-1, 0, 0, hi.x), HalfSpace(0, 1, 0, -lo.y),
                                              HalfSpace(0, -1, 0, hi.y), HalfSpace(0, 0, 1, -lo.z), HalfSpace(0, 0, -1, hi.z)};
@@ -88,21 +105,15 @@ std::vector<glm::vec3> clip_box(const scene::Bounds& box, const std::vector<Half
     };
 
     // The box's faces (they satisfy the box's own half-spaces already).
-    for (int a = 0; a < 3; ++a) {
-        const int u = (a + 1) % 3;
-        const int v = (a + 2) % 3;
-        for (const float side : {lo[a], hi[a]}) {
-            std::vector<glm::vec3> face(4);
-            const float us[4] = {lo[u], hi[u], hi[u], lo[u]};
-            const float vs[4] = {lo[v], lo[v], hi[v], hi[v]};
-            for (int k = 0; k < 4; ++k) {
-                face[static_cast<size_t>(k)][a] = side;
-                face[static_cast<size_t>(k)][u] = us[k];
-                face[static_cast<size_t>(k)][v] = vs[k];
-            }
-            clip_all(std::move(face), hs.size(), false);
-        }
+    std::vector<glm::vec3> faces;
+    faces.reserve(24);
+    box_face_corners(box, [&](const glm::vec3& p) { faces.push_back(p); });
+    if (inside) {
+        if (!whole) return faces;
+        *whole = true;
+        return corners;
     }
+    for (size_t f = 0; f < faces.size(); f += 4) clip_all({faces.begin() + f, faces.begin() + f + 4}, hs.size(), false);
     // Each half-space's plane: a square around the box centre's foot on it, larger than the
     // box's section (which lies within `radius` of that foot), clipped by the box and the others.
     const float half = 1.01f * radius + 1e-4f * scale + 1e-30f;
@@ -128,7 +139,59 @@ float cross2(const glm::vec2& o, const glm::vec2& a, const glm::vec2& b) {
 
 }  // namespace
 
+namespace {
+
+// Akl and Toussaint's filter: the points deep inside the octagon of the extreme points along x, y,
+// x + y and x - y (hull vertices all) cannot be on the hull, so the sort below need not see them.
+// Only those farther inside every edge than a thousandth of the extent are dropped; points near
+// the boundary stay, so rounding decides nothing here. A view of a hundred thousand objects sends
+// nearly a million points, of which a few dozen remain.
+void drop_inner_points(std::vector<glm::vec2>& p) {
+    const auto key = [](const glm::vec2& v, int d) {
+        switch (d) {
+            case 0: return v.x;
+            case 1: return v.x + v.y;
+            case 2: return v.y;
+            case 3: return v.y - v.x;
+            case 4: return -v.x;
+            case 5: return -v.x - v.y;
+            case 6: return -v.y;
+            default: return v.x - v.y;
+        }
+    };
+    // The extreme point along each of the eight directions, counter-clockwise from +x.
+    std::vector<glm::vec2> octagon;
+    glm::vec2 lo = p.front(), hi = p.front();
+    for (int d = 0; d < 8; ++d) {
+        glm::vec2 best = p.front();
+        for (const glm::vec2& v : p)
+            if (key(v, d) > key(best, d)) best = v;
+        if (octagon.empty() || (best != octagon.back() && best != octagon.front())) octagon.push_back(best);
+    }
+    for (const glm::vec2& v : p) {
+        if (!std::isfinite(v.x) || !std::isfinite(v.y)) return;
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
+    if (octagon.size() < 3) return;
+    // A point is deep inside an edge when it lies farther than a thousandth of the extent from it:
+    // its cross product with the edge over the edge's length.
+    const float depth = 1e-3f * std::max(hi.x - lo.x, hi.y - lo.y);
+    std::vector<float> margin(octagon.size());
+    for (size_t i = 0; i < octagon.size(); ++i) margin[i] = depth * glm::length(octagon[(i + 1) % octagon.size()] - octagon[i]);
+    if (!(depth > 0.0f) || !std::isfinite(depth)) return;
+    const auto deep_inside = [&](const glm::vec2& v) {
+        for (size_t i = 0; i < octagon.size(); ++i)
+            if (!(cross2(octagon[i], octagon[(i + 1) % octagon.size()], v) > margin[i])) return false;
+        return true;
+    };
+    p.erase(std::remove_if(p.begin(), p.end(), deep_inside), p.end());
+}
+
+}  // namespace
+
 std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> p) {
+    if (p.size() > 1024) drop_inner_points(p);
     std::sort(p.begin(), p.end(), [](const glm::vec2& a, const glm::vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     p.erase(std::unique(p.begin(), p.end()), p.end());
     if (p.size() < 3) return p;

@@ -31,7 +31,40 @@ std::vector<glm::vec3> clip_polygon(const std::vector<glm::vec3>& poly, const Ha
 // half-spaces, and a polygon on each half-space's plane (wide enough to hold the box's section)
 // clipped by the box and the other half-spaces. Empty when they do not meet (or the box is empty);
 // a flat box gives the polygon it is. Points may repeat.
-std::vector<glm::vec3> clip_box(const scene::Bounds& box, const std::vector<HalfSpace>& half_spaces);
+// `whole` (when given) says whether the box lay inside every half-space, unclipped: then the result
+// is its eight corners (scene::corners), each once, instead of its six faces' 24 corners. The
+// two are the same set of points; only a sum over them (box_face_corners) tells them apart.
+std::vector<glm::vec3> clip_box(const scene::Bounds& box, const std::vector<HalfSpace>& half_spaces,
+                                bool* whole = nullptr);
+// The half-spaces as clip_box takes them, made unit once for many boxes: those that hold
+// everything dropped, `nothing` set where one holds nothing.
+struct ClipPlanes {
+    std::vector<HalfSpace> unit;
+    bool nothing = false;
+};
+ClipPlanes clip_planes(const std::vector<HalfSpace>& half_spaces);
+std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& planes, bool* whole = nullptr);
+
+// The box's six faces, four corners each, in the order clip_box lists them for a box that nothing
+// clips: fn(corner) 24 times.
+template <typename F>
+void box_face_corners(const scene::Bounds& box, F&& fn) {
+    const glm::vec3 lo = box.min, hi = box.max;
+    for (int a = 0; a < 3; ++a) {
+        const int u = (a + 1) % 3, v = (a + 2) % 3;
+        for (const float side : {lo[a], hi[a]}) {
+            const float us[4] = {lo[u], hi[u], hi[u], lo[u]};
+            const float vs[4] = {lo[v], lo[v], hi[v], hi[v]};
+            for (int k = 0; k < 4; ++k) {
+                glm::vec3 p;
+                p[a] = side;
+                p[u] = us[k];
+                p[v] = vs[k];
+                fn(p);
+            }
+        }
+    }
+}
 
 // ---- 2D ----------------------------------------------------------------------------------------
 

@@ -11,6 +11,7 @@
 
 #include "shadow/casting.h"
 #include "shadow/convex.h"
+#include "shadow/receiver_index.h"
 
 namespace penumbra::shadow {
 
@@ -200,19 +201,22 @@ bool inside_box(const scene::Bounds& b, const glm::vec3& p) {
     return glm::all(glm::greaterThanEqual(p, b.min - m)) && glm::all(glm::lessThanEqual(p, b.max + m));
 }
 
-// What the shadows fit adds to the tight one (null: the tight fit): per caster, the visible points
-// of the receivers it may shadow (shadowed_each; none: it is left out), and whether to cut the
-// window to where those shadows fall.
+// What the shadows fit adds to the tight one (null: the tight fit): the visible receivers indexed
+// (a caster that can shadow none of them is left out), the casters as the index takes them, and
+// whether to cut the window to where their shadows fall.
 struct Shadowing {
-    std::vector<std::vector<glm::vec3>> shadowed;
+    ReceiverIndex* index = nullptr;
+    const std::vector<scene::Bounds>* casters = nullptr;
+    const CastingInfo* info = nullptr;
     bool fit_window = true;
+    CasterBox caster(size_t k) const { return caster_box(*casters, *info, k); }
 };
 
 // Where one drawn caster's shadow can fall: inside its part within the window, seen from the
-// light, and inside the visible receivers it may shadow, seen from the light (empty: anywhere).
+// light, and inside the visible receivers it may shadow (caster `k`; -1: anywhere).
 struct Reach {
     std::vector<glm::vec3> caster;
-    std::vector<glm::vec3> receivers;
+    int k = -1;
 };
 
 // The casters that reach into the window (half-spaces in the light's eye space, the far one
@@ -224,16 +228,19 @@ void select_casters(const std::vector<scene::Bounds>& casters, const glm::mat4& 
                     float& nearest, std::vector<Reach>& reach) {
     std::vector<HalfSpace> hs;
     for (const glm::vec4& h : eye_half_spaces) hs.push_back(to_world(view, h));
+    const ClipPlanes planes = clip_planes(hs);
     for (size_t k = 0; k < casters.size(); ++k) {
-        std::vector<glm::vec3> pts = clip_box(casters[k], hs);
+        // A caster inside the window whole: its eight corners (what follows takes extents only).
+        bool whole = false;
+        std::vector<glm::vec3> pts = clip_box_by(casters[k], planes, &whole);
         if (pts.empty()) continue;
-        if (shadowing && shadowing->shadowed[k].empty()) {
+        if (shadowing && !shadowing->index->shadows_any(shadowing->caster(k))) {
             ++out.culled;
             continue;
         }
         out.casters.push_back(static_cast<int>(k));
         for (const glm::vec3& p : pts) nearest = std::min(nearest, -(view * glm::vec4(p, 1.0f)).z);
-        reach.push_back({std::move(pts), shadowing ? shadowing->shadowed[k] : std::vector<glm::vec3>{}});
+        reach.push_back({std::move(pts), shadowing ? static_cast<int>(k) : -1});
     }
 }
 
@@ -264,13 +271,15 @@ bool window_rect(const glm::mat4& view, bool perspective, float front_eps, const
 // of each one's part within the window, cut to the rect of the receivers it may shadow (a shadow
 // falls where both are, seen from the light). false where a point lies at the light's eye plane.
 bool reach_rect(const glm::mat4& view, bool perspective, float front_eps, const std::vector<Reach>& reach,
-                WindowRect& out) {
+                const Shadowing& shadowing, WindowRect& out) {
+    // Every receiver point is a visible point, and the window's view was fitted to put all of
+    // those in front of the eye plane: no receiver fails here that the fit did not refuse first.
+    if (!shadowing.index->set_window(view, perspective, front_eps)) return false;
     for (const Reach& c : reach) {
-        WindowRect a, b;
+        WindowRect a;
         if (!window_rect(view, perspective, front_eps, c.caster, a)) return false;
-        if (!c.receivers.empty()) {
-            if (!window_rect(view, perspective, front_eps, c.receivers, b)) return false;
-            a.r = {std::max(a.r.x, b.r.x), std::min(a.r.y, b.r.y), std::max(a.r.z, b.r.z), std::min(a.r.w, b.r.w)};
+        if (c.k >= 0) {
+            shadowing.index->cut_to_reach(shadowing.caster(static_cast<size_t>(c.k)), a.r);
             if (a.empty()) continue;
         }
         out.r = {std::min(out.r.x, a.r.x), std::max(out.r.y, a.r.y), std::min(out.r.z, a.r.z), std::max(out.r.w, a.r.w)};
@@ -338,9 +347,9 @@ void finish_window(PerspectiveWindow& w, std::vector<glm::vec2> tangents) {
 // The shadows fit's window: the raw window cut to where the drawn casters' shadows can fall
 // (reach_rect); false (the window kept) when a point lies at the light's eye plane or no shadow
 // falls in it.
-bool cut_to_casters(PerspectiveWindow& w, const std::vector<Reach>& reach, float front_eps) {
+bool cut_to_casters(PerspectiveWindow& w, const std::vector<Reach>& reach, const Shadowing& shadowing, float front_eps) {
     WindowRect rect;
-    if (reach.empty() || !reach_rect(w.view, true, front_eps, reach, rect) || rect.empty()) return false;
+    if (reach.empty() || !reach_rect(w.view, true, front_eps, reach, shadowing, rect) || rect.empty()) return false;
     const glm::vec4& c = rect.r;
     const glm::vec4 cut(std::max(w.raw.x, c.x), std::min(w.raw.y, c.y), std::max(w.raw.z, c.z), std::min(w.raw.w, c.w));
     if (!(cut.x <= cut.y && cut.z <= cut.w)) return false;
@@ -351,7 +360,7 @@ bool cut_to_casters(PerspectiveWindow& w, const std::vector<Reach>& reach, float
 
 // Point and spot lights: false where the tight fit does not apply (the light inside a box, a
 // visible point beside or behind the light's eye plane).
-bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec3>& visible,
+bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec3>& visible, const glm::vec3& centroid,
                            const std::vector<scene::Bounds>& receivers, const std::vector<scene::Bounds>& casters,
                            const Shadowing* shadowing, TightFit& out) {
     const glm::vec3 pos = light.position;
@@ -359,13 +368,8 @@ bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec
         for (const scene::Bounds& b : *boxes)
             if (inside_box(b, pos)) return false;
 
-    glm::vec3 centroid(0.0f);
     float max_dist = 0.0f;
-    for (const glm::vec3& p : visible) {
-        centroid += p;
-        max_dist = std::max(max_dist, glm::length(p - pos));
-    }
-    centroid /= static_cast<float>(visible.size());
+    for (const glm::vec3& p : visible) max_dist = std::max(max_dist, glm::length(p - pos));
     const float scale = std::max(max_dist, 1e-6f * std::max(1.0f, max_abs_component(pos)));
     const glm::vec3 to_centroid = centroid - pos;
     if (!(glm::length(to_centroid) > 1e-4f * scale)) return false;
@@ -400,7 +404,7 @@ bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec
                    {{1.0f, 0.0f, w.xl, 0.0f}, {-1.0f, 0.0f, -w.xr, 0.0f}, {0.0f, 1.0f, w.yb, 0.0f},
                     {0.0f, -1.0f, -w.yt, 0.0f}, {0.0f, 0.0f, 1.0f, w.zmax}},
                    shadowing, out, nearest, reach);
-    if (shadowing && shadowing->fit_window) out.cut = cut_to_casters(w, reach, front_eps);
+    if (shadowing && shadowing->fit_window) out.cut = cut_to_casters(w, reach, *shadowing, front_eps);
 
     f.zfar = 1.02f * w.zmax;
     f.znear = std::max(0.98f * nearest, f.zfar * 1e-4f);
@@ -411,13 +415,10 @@ bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec
 
 // Directional lights: the eye up the light's direction, outside the sphere around every box and
 // visible point, so everything is in front of it.
-void fit_tight_orthographic(const scene::Light& light, const std::vector<glm::vec3>& visible,
+void fit_tight_orthographic(const scene::Light& light, const std::vector<glm::vec3>& visible, const glm::vec3& centroid,
                             const std::vector<scene::Bounds>& receivers, const std::vector<scene::Bounds>& casters,
                             const Shadowing* shadowing, TightFit& out) {
     const glm::vec3 dir = safe_normalize(light.direction, glm::vec3(0.0f, -1.0f, 0.0f));
-    glm::vec3 centroid(0.0f);
-    for (const glm::vec3& p : visible) centroid += p;
-    centroid /= static_cast<float>(visible.size());
     float radius = 0.0f;
     for (const glm::vec3& p : visible) radius = std::max(radius, glm::length(p - centroid));
     for (const auto* boxes : {&receivers, &casters})
@@ -445,7 +446,8 @@ void fit_tight_orthographic(const scene::Light& light, const std::vector<glm::ve
                     {0.0f, 0.0f, 1.0f, zmax}},
                    shadowing, out, nearest, reach);
     WindowRect c;
-    if (shadowing && shadowing->fit_window && !reach.empty() && reach_rect(f.view, false, 0.0f, reach, c) && !c.empty()) {
+    if (shadowing && shadowing->fit_window && !reach.empty() && reach_rect(f.view, false, 0.0f, reach, *shadowing, c) &&
+        !c.empty()) {
         // The window cut to where the drawn casters' shadows can fall (reach_rect).
         xl = std::max(raw.x, c.r.x);
         xr = std::min(raw.y, c.r.y);
@@ -467,7 +469,7 @@ void fit_tight_orthographic(const scene::Light& light, const std::vector<glm::ve
 
 std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& light,
                                                       const std::vector<scene::Bounds>& receivers,
-                                                      const glm::mat4& camera_view_proj) {
+                                                      const glm::mat4& camera_view_proj, std::vector<char>* whole) {
     const std::array<HalfSpace, 6> camera = clip_volume_half_spaces(camera_view_proj);
     std::vector<HalfSpace> hs(camera.begin(), camera.end());
     // A spot light lights nothing outside its outer cone: the four planes through the light that
@@ -485,15 +487,23 @@ std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& ligh
             hs.emplace_back(n, -glm::dot(n, light.position));
         }
     }
+    const ClipPlanes planes = clip_planes(hs);
     std::vector<std::vector<glm::vec3>> out;
-    for (const scene::Bounds& b : receivers) out.push_back(clip_box(b, hs));
+    out.reserve(receivers.size());
+    if (whole) whole->assign(receivers.size(), 0);
+    for (size_t k = 0; k < receivers.size(); ++k) {
+        bool all = false;
+        out.push_back(clip_box_by(receivers[k], planes, whole ? &all : nullptr));
+        if (whole) (*whole)[k] = all ? 1 : 0;
+    }
     return out;
 }
 
 std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                                const glm::mat4& camera_view_proj) {
+    std::vector<char> whole;
     std::vector<glm::vec3> out;
-    for (const std::vector<glm::vec3>& pts : visible_points_each(light, receivers, camera_view_proj))
+    for (const std::vector<glm::vec3>& pts : visible_points_each(light, receivers, camera_view_proj, &whole))
         out.insert(out.end(), pts.begin(), pts.end());
     return out;
 }
@@ -522,13 +532,18 @@ TightFit fit_tight(const scene::Light& light, const std::vector<scene::Bounds>& 
                    const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
                    const Shadowing* shadowing) {
     TightFit r;
-    r.visible = visible_receiver_points(light, receivers, camera_view_proj);
+    // The shadows fit's index holds the receivers clipped already; the tight fit clips them here.
+    std::vector<SeenReceiver> own;
+    if (!shadowing) own = seen_receivers(light, receivers, camera_view_proj, CastingInfo{});
+    const std::vector<SeenReceiver>& seen = shadowing ? shadowing->index->seen() : own;
+    for (const SeenReceiver& each : seen) r.visible.insert(r.visible.end(), each.points.begin(), each.points.end());
     if (!r.visible.empty()) {
+        const glm::vec3 centroid = visible_centroid(seen);
         if (light.type == scene::LightType::Directional) {
-            fit_tight_orthographic(light, r.visible, receivers, casters, shadowing, r);
+            fit_tight_orthographic(light, r.visible, centroid, receivers, casters, shadowing, r);
             r.tight = true;
         } else {
-            r.tight = fit_tight_perspective(light, r.visible, receivers, casters, shadowing, r);
+            r.tight = fit_tight_perspective(light, r.visible, centroid, receivers, casters, shadowing, r);
         }
     }
     if (!r.tight) return fit_light_frustum_scene(light, receivers, casters, camera_view_proj);
@@ -546,7 +561,8 @@ TightFit fit_light_frustum_tight(const scene::Light& light, const std::vector<sc
 TightFit fit_light_frustum_shadows(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                    const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
                                    const CastingInfo& info) {
-    const Shadowing s{shadowed_each(light, receivers, casters, camera_view_proj, info), info.fit_window};
+    ReceiverIndex index(seen_receivers(light, receivers, camera_view_proj, info), light_vector(light), info.pairwise);
+    const Shadowing s{&index, &casters, &info, info.fit_window};
     return fit_tight(light, receivers, casters, camera_view_proj, &s);
 }
 

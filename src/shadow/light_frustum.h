@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/scene.h"
+#include "shadow/casting.h"
 
 namespace penumbra::shadow {
 
@@ -50,13 +51,19 @@ struct TightFit {
 
 // The vertices of each receiver box clipped to the camera's clip volume (camera_view_proj) and,
 // for a spot light, to the four planes of the pyramid around its outer cone (when under 90
-// degrees): every point of a receiver the camera can see lit lies in their convex hulls.
+// degrees): every point of a receiver the camera can see lit lies in their convex hulls. Each
+// point at least once: a box in view whole gives its eight corners.
 std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                                const glm::mat4& camera_view_proj);
-// The same, one list per receiver (in the order of `receivers`).
+// The same, one list per receiver (in the order of `receivers`). With `whole`, a box in view whole
+// gives its eight corners and a 1 there (clip_box); without, its six faces' 24 corners.
 std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& light,
                                                       const std::vector<scene::Bounds>& receivers,
-                                                      const glm::mat4& camera_view_proj);
+                                                      const glm::mat4& camera_view_proj,
+                                                      std::vector<char>* whole = nullptr);
+// Where the fits aim: the mean of the receivers' visible points, a box in view whole counted as
+// its six faces' 24 corners (what visible_points_each gives without `whole`, in that order).
+glm::vec3 visible_centroid(const std::vector<SeenReceiver>& seen);
 
 // The light as a homogeneous point: (position, 1), or (direction towards it, 0); what shadow volumes
 // extrude away from and shadow::may_shadow takes.
@@ -85,12 +92,15 @@ struct CastingInfo {
     std::vector<int> caster_objects;
     std::vector<char> caster_convex;
     bool fit_window = true;
+    // Ask every caster of every receiver in turn, without the index (ReceiverIndex's `linear`):
+    // the pairwise rule the tests hold the index to. Casters x receivers: for tests only.
+    bool pairwise = false;
 };
 
 // The shadows fit (--light-fit shadows): the tight fit, drawing only the casters that can shadow
 // a receiver in view (shadow::shadows_any; the rest counted in TightFit::culled), with the window
 // cut to where their shadows can fall: seen from the light, each drawn caster's part inside the
-// window, cut to the visible receivers it may shadow (shadowed_each; a ground plane under a plank
+// window, cut to the visible receivers it may shadow (ReceiverIndex::cut_to_reach; a ground plane under a plank
 // that dips below it shadows only the plank's tip, not the whole ground). A visible receiver
 // point outside the window can be shadowed by no caster (the lookup reads it as lit). The window
 // keeps the tight fit's margin around them.
@@ -98,11 +108,11 @@ TightFit fit_light_frustum_shadows(const scene::Light& light, const std::vector<
                                    const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
                                    const CastingInfo& info);
 
-// Per caster box: the visible points (visible_points_each) of every receiver it can shadow
-// (shadow::shadowed_points), empty where a plane proves it shadows none.
-std::vector<std::vector<glm::vec3>> shadowed_each(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
-                                                  const std::vector<scene::Bounds>& casters,
-                                                  const glm::mat4& camera_view_proj, const CastingInfo& info);
+// The receivers the camera sees (visible_points_each), each with its scene object (`info`); and
+// caster box k with its object and convexity: what ReceiverIndex (receiver_index.h) is asked.
+std::vector<SeenReceiver> seen_receivers(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                         const glm::mat4& camera_view_proj, const CastingInfo& info);
+CasterBox caster_box(const std::vector<scene::Bounds>& casters, const CastingInfo& info, size_t k);
 
 // One flag per caster box: 1 where it can shadow a receiver the camera sees (shadow::shadows_any
 // over visible_points_each), 0 where a plane proves it cannot: what the shadows fit leaves out.

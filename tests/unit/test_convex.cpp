@@ -172,3 +172,46 @@ TEST(Convex, ClipFlatBoxGivesItsPolygon) {
     }
     EXPECT_GT(polygon_area(h), 0.5f);
 }
+
+TEST(Convex, ABoxInViewWholeGivesItsCornersOnceOrItsFaces) {
+    const glm::mat4 vp = glm::perspective(glm::radians(50.0f), 1.0f, 0.5f, 30.0f) *
+                         glm::lookAt(glm::vec3(0, 2, 8), glm::vec3(0, 0, 0), glm::vec3(0, 1, 0));
+    const auto hs = clip_volume_half_spaces(vp);
+    const std::vector<HalfSpace> planes(hs.begin(), hs.end());
+    const scene::Bounds inside = box({-1, 0, -1}, {1, 1.5f, 0.5f});
+    bool whole = false;
+    const auto corners = clip_box(inside, planes, &whole);
+    EXPECT_TRUE(whole);
+    EXPECT_EQ(corners, scene::corners(inside));
+    // Without `whole`: the six faces' 24 corners in box_face_corners' order, the same set.
+    std::vector<glm::vec3> faces;
+    box_face_corners(inside, [&](const glm::vec3& p) { faces.push_back(p); });
+    EXPECT_EQ(clip_box(inside, planes), faces);
+    for (const glm::vec3& p : faces) EXPECT_TRUE(has_point(corners, p, 0.0f) || has_point(corners, p));
+    // Control: a box the view cuts is not whole, and is clipped.
+    const scene::Bounds cut = box({-40, 0, -1}, {1, 1, 0.5f});
+    EXPECT_FALSE(clip_box(cut, planes, &whole).empty());
+    EXPECT_FALSE(whole);
+}
+
+TEST(Convex, ManyPointsHaveTheHullOfTheirHulls) {
+    // Past 1024 points convex_hull drops the points deep inside first; the hull must not change.
+    // Its reference: the hull of the parts' hulls, each part too small to be filtered.
+    std::mt19937 gen(55);
+    std::normal_distribution<float> n(0.0f, 1.0f);
+    for (const int count : {2000, 20000}) {
+        std::vector<glm::vec2> pts;
+        for (int i = 0; i < count; ++i) pts.emplace_back(n(gen) * 3.0f, n(gen) + 0.1f * static_cast<float>(i % 7));
+        std::vector<glm::vec2> parts;
+        for (size_t at = 0; at < pts.size(); at += 1000) {
+            const std::vector<glm::vec2> part(pts.begin() + static_cast<std::ptrdiff_t>(at),
+                                              pts.begin() + static_cast<std::ptrdiff_t>(std::min(at + 1000, pts.size())));
+            const std::vector<glm::vec2> h = convex_hull(part);
+            parts.insert(parts.end(), h.begin(), h.end());
+        }
+        ASSERT_LE(parts.size(), 1024u);
+        const std::vector<glm::vec2> hull = convex_hull(pts);
+        EXPECT_EQ(hull, convex_hull(parts)) << count << " points";
+        EXPECT_GE(hull.size(), 8u);
+    }
+}
