@@ -26,8 +26,9 @@ std::string shading_problem(const PlanContext& c);
 
 // Forward: the camera pass's first batch of point lights (with --lights and --aov color).
 void forward_lights(PlanContext& c, Pass& cam, std::vector<CameraItem>& items);
-// Forward: the batches after the first, as passes after `cam` (a copy: adding passes moves the plan's).
-void add_forward_light_passes(PlanContext& c, Pass cam);
+// Forward: the batches after the first, as passes after `cam` (the plan's: copied first where
+// there are batches to add, since adding passes moves the plan's).
+void add_forward_light_passes(PlanContext& c, const Pass& cam);
 
 // Deferred: the frame from the technique's passes before the camera's to the lit image in
 // c.camera_target.

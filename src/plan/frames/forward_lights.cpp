@@ -93,9 +93,10 @@ void forward_lights(PlanContext& c, Pass& cam, std::vector<CameraItem>& items) {
     cam.detail += ", " + count_text(static_cast<int>(k), "point light");
 }
 
-void add_forward_light_passes(PlanContext& c, Pass cam) {
+void add_forward_light_passes(PlanContext& c, const Pass& camera) {
     const Settings& s = c.settings;
     if (s.lights <= kLightsPerPass || s.aov != Aov::Color) return;
+    const Pass cam = camera;
     const std::vector<PointLight> lights = point_lights(c.scene, s.lights);
     for (size_t first = kLightsPerPass; first < lights.size(); first += kLightsPerPass) {
         const size_t k = std::min(lights.size() - first, static_cast<size_t>(kLightsPerPass));
