@@ -88,8 +88,9 @@ private:
     // leave float's range, and the ray tracer's bounds turn infinite.
     void check_extent() const {
         const double limit = context_.limits.max_coordinate;
+        const std::vector<Bounds> meshes = all_mesh_bounds(scene_);
         for (size_t i = 0; i < scene_.objects.size(); ++i) {
-            const Bounds b = object_bounds(scene_, scene_.objects[i]);
+            const Bounds b = object_bounds(meshes, scene_.objects[i]);
             if (b.empty()) continue;
             for (const glm::vec3& c : corners(b))
                 for (int k = 0; k < 3; ++k)

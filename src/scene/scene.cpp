@@ -167,13 +167,32 @@ std::vector<glm::vec3> corners(const Bounds& b) {
     return out;
 }
 
-Bounds object_bounds(const Scene& scene, const Object& object) {
+namespace {
+
+Bounds placed(const Bounds& local, const glm::mat4& world) {
     Bounds out;
-    if (object.mesh < 0 || object.mesh >= static_cast<int>(scene.meshes.size())) return out;
-    const Bounds local = mesh_bounds(scene.meshes[static_cast<size_t>(object.mesh)]);
     if (local.empty()) return out;
-    for (const auto& c : corners(local)) out.add(glm::vec3(object.world * glm::vec4(c, 1.0f)));
+    for (const auto& c : corners(local)) out.add(glm::vec3(world * glm::vec4(c, 1.0f)));
     return out;
+}
+
+}  // namespace
+
+Bounds object_bounds(const Scene& scene, const Object& object) {
+    if (object.mesh < 0 || object.mesh >= static_cast<int>(scene.meshes.size())) return {};
+    return placed(mesh_bounds(scene.meshes[static_cast<size_t>(object.mesh)]), object.world);
+}
+
+std::vector<Bounds> all_mesh_bounds(const Scene& scene) {
+    std::vector<Bounds> out;
+    out.reserve(scene.meshes.size());
+    for (const Mesh& m : scene.meshes) out.push_back(mesh_bounds(m));
+    return out;
+}
+
+Bounds object_bounds(const std::vector<Bounds>& mesh_bounds, const Object& object) {
+    if (object.mesh < 0 || object.mesh >= static_cast<int>(mesh_bounds.size())) return {};
+    return placed(mesh_bounds[static_cast<size_t>(object.mesh)], object.world);
 }
 
 glm::mat4 rigid_frame(const glm::mat4& w) {
@@ -188,9 +207,10 @@ glm::mat4 rigid_frame(const glm::mat4& w) {
 }
 
 Bounds scene_bounds(const Scene& scene, bool casters_only) {
+    const std::vector<Bounds> meshes = all_mesh_bounds(scene);
     Bounds out;
     for (const auto& o : scene.objects)
-        if (!casters_only || o.casts_shadow) out.add(object_bounds(scene, o));
+        if (!casters_only || o.casts_shadow) out.add(object_bounds(meshes, o));
     return out;
 }
 

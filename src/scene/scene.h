@@ -192,6 +192,10 @@ bool repeats(const Image& image);
 // Local-space bounds of a mesh, and world-space bounds of an object (its mesh's corners transformed).
 Bounds mesh_bounds(const Mesh& mesh);
 Bounds object_bounds(const Scene& scene, const Object& object);
+// Every mesh's local bounds, once: many nodes share a mesh, and its vertices need reading once,
+// not once a node. object_bounds from them is the same box as from the scene.
+std::vector<Bounds> all_mesh_bounds(const Scene& scene);
+Bounds object_bounds(const std::vector<Bounds>& mesh_bounds, const Object& object);
 // World-space bounds of every object (casters_only: only those that cast shadows).
 Bounds scene_bounds(const Scene& scene, bool casters_only = false);
 // A camera node's world matrix made rigid: its z axis and y axis made orthonormal (x from them),
