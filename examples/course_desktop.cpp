@@ -37,6 +37,7 @@
 #include "gl/check.h"
 #include "platform/platform.h"
 #include "measure/image_io.h"
+#include "scene/memory_budget.h"
 
 using namespace penumbra;
 
@@ -216,6 +217,7 @@ void load_snippets(examples::CourseApp& app, const std::string& path, const char
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (std::string error; !memory::budget_from_env(error)) usage_error(error);
     const Args args = parse_args(argc, argv);
     examples::CourseApp app(args.exercise);
     // Every option is checked before a window opens; what the context supports, after.

@@ -4,7 +4,8 @@
 # exact exit status and, on stderr, one line holding its message fragment; a refused input
 # leaves no output behind. Then what git cannot hold, made here: a FIFO, a device, a folder and a
 # socket given as the scene or named by a buffer's uri, and a symbolic link out of the folder.
-# No command may take longer than 30 s (a hang) or die of a signal.
+# No command may take longer than 30 s (a hang) or die of a signal, and each runs under an
+# address-space cap of 4 GiB (ulimit -v): no bad input may need more.
 # usage: bad_inputs.sh PENUMBRA DATA_DIR WORKDIR
 set -uo pipefail
 penumbra=$1 data=$2 work=$3
@@ -18,7 +19,7 @@ check() {
   local label=$1 want=$2 fragment=$3; shift 3
   rm -rf out && mkdir out
   local err rc
-  err=$(timeout 30 "$@" 2>&1 >/dev/null); rc=$?
+  err=$( (ulimit -v 4194304 && timeout 30 "$@") 2>&1 >/dev/null); rc=$?
   local lines; lines=$(printf '%s' "$err" | grep -c '^penumbra: error')
   local ok=1
   [ "$rc" -eq "$want" ] || ok=0

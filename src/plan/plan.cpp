@@ -13,6 +13,7 @@
 #include "plan/options.h"
 #include "plan/post.h"
 #include "plan/techniques/technique.h"
+#include "scene/memory_budget.h"
 
 namespace penumbra::render {
 
@@ -187,23 +188,25 @@ const StencilUse& PlanContext::stencil(std::string_view name) const {
 // ---- checking and planning ---------------------------------------------------------------------
 
 scene::Bounds shadowed_bounds(const scene::Scene& scene) {
+    const std::vector<scene::Bounds> meshes = scene::all_mesh_bounds(scene);
     scene::Bounds b;
     for (const auto& o : scene.objects)
-        if (valid_mesh(scene, o.mesh) && (o.casts_shadow || o.receives_shadow)) b.add(scene::object_bounds(scene, o));
+        if (valid_mesh(scene, o.mesh) && (o.casts_shadow || o.receives_shadow)) b.add(scene::object_bounds(meshes, o));
     return b;
 }
 
 ShadowBounds shadow_bounds(const scene::Scene& scene, bool blend_shadows) {
+    const std::vector<scene::Bounds> meshes = scene::all_mesh_bounds(scene);
     ShadowBounds b;
     for (const auto& o : scene.objects) {
         if (!valid_mesh(scene, o.mesh)) continue;
         const int object = static_cast<int>(&o - scene.objects.data());
         if (o.receives_shadow) {
-            b.receivers.push_back(scene::object_bounds(scene, o));
+            b.receivers.push_back(scene::object_bounds(meshes, o));
             b.casting.receiver_objects.push_back(object);
         }
         if (casts(scene, o, blend_shadows)) {
-            b.casters.push_back(scene::object_bounds(scene, o));
+            b.casters.push_back(scene::object_bounds(meshes, o));
             b.casting.caster_objects.push_back(object);
             b.casting.caster_convex.push_back(scene.meshes[static_cast<size_t>(o.mesh)].convex ? 1 : 0);
         }
@@ -290,6 +293,7 @@ std::string Planning::allocate() {
 }
 
 std::string check(const scene::Scene& scene, const Settings& s, const gl::Caps& caps, const FrameInputs& in) {
+    memory::Guard guard("planning the frame");
     const Output& out = in.output;
     const int max = caps.max_target_size();
     if (!out.window && (out.width > max || out.height > max))
@@ -311,6 +315,7 @@ std::string check(const scene::Scene& scene, const Settings& s, const gl::Caps& 
 
 FramePlan plan(const scene::Scene& scene, const Settings& s, const gl::Caps& caps, const FrameInputs& in,
                const FramePlan* previous) {
+    memory::Guard guard("planning the frame");
     Planning p(scene, s, caps, in, previous);
     PlanContext& c = p.ctx;
     const Output& out = in.output;

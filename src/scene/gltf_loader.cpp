@@ -4,6 +4,7 @@
 // a bad file must give an error, not a crash. Here: the file checks, the parse, and turning every
 // failure into one line that names the file.
 #include "scene/gltf_loader.h"
+#include "scene/memory_budget.h"
 
 #include <algorithm>
 #include <cctype>
@@ -166,6 +167,8 @@ LoadResult load_gltf_memory(const std::string& name, const unsigned char* bytes,
         }
         gltf_internal::build_scene(model, result, path, context);
         result.ok = true;
+    } catch (const memory::OverBudget& e) {
+        result.error = path + ": " + e.what();
     } catch (const std::bad_alloc&) {
         result.error = path + ": out of memory while loading (the file asks for more than this machine has)";
     } catch (const std::exception& e) {  // GltfError, nlohmann's and tinygltf's own

@@ -1,12 +1,27 @@
 #include "scene/scene_source.h"
 
 #include "scene/gltf_loader.h"
+#include "scene/memory_budget.h"
 #include "scenes/scale_scenes.h"
 
 namespace penumbra::scene {
 
+namespace {
+
+// "pile:100000 (100,001 objects, 600,002 triangles)": what the memory budget's refusal names.
+std::string describe_size(const std::string& name, const Scene& s) {
+    std::size_t triangles = 0;
+    for (const Object& o : s.objects)
+        if (o.mesh >= 0 && o.mesh < static_cast<int>(s.meshes.size())) triangles += s.meshes[static_cast<size_t>(o.mesh)].indices.size() / 3;
+    return name + ": " + std::to_string(s.objects.size()) + " objects, " + std::to_string(triangles) + " triangles";
+}
+
+}  // namespace
+
 bool SceneSource::open(const std::string& name, std::string& error, std::vector<std::string>& warnings,
                        int teapot_level, const LoadOptions& load) {
+    memory::Guard guard("loading the scene");
+    memory::set_subject(name);
     course_.reset();
     if (name == "teapot") {
         course_ = make_course_scene(teapot_level);
@@ -16,6 +31,7 @@ bool SceneSource::open(const std::string& name, std::string& error, std::vector<
         ScaleSpec spec;
         if (!parse_scale_name(name, spec, error)) return false;
         static_ = make_scale_scene(spec);
+        memory::set_subject(describe_size(name, static_));
         return true;
     }
     LoadResult r = load_gltf(name, load);
@@ -25,6 +41,7 @@ bool SceneSource::open(const std::string& name, std::string& error, std::vector<
         return false;
     }
     static_ = std::move(r.scene);
+    memory::set_subject(describe_size(name, static_));
     return true;
 }
 

@@ -37,6 +37,7 @@
 #include "plan/options.h"
 #include "render/renderer.h"
 #include "render/shader_library.h"
+#include "scene/memory_budget.h"
 #include "plan/techniques/technique.h"
 #include "scene/printable.h"
 #include "scene/scene_source.h"
@@ -270,6 +271,11 @@ int main(int argc, char** argv) {
     // A reader that goes away (penumbra plan --json | head -c 10) is an output that cannot be
     // written: a line and exit status 2, not death by SIGPIPE.
     std::signal(SIGPIPE, SIG_IGN);
+    // The heap's ceiling (scene/memory_budget.h): a bad PENUMBRA_MEMORY_BUDGET is bad input.
+    if (std::string error; !memory::budget_from_env(error)) {
+        std::fprintf(stderr, "penumbra: error: %s\n", error.c_str());
+        return 2;
+    }
     const int rc = run(argc, argv);
     if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
         std::fprintf(stderr, "penumbra: error: cannot write to standard output (%s)\n", std::strerror(errno));
@@ -402,6 +408,9 @@ int run(int argc, char** argv) {
     } catch (const gl::Error& e) {
         std::fprintf(stderr, "penumbra: error: GL: %s\n", tools::one_line(e.what()).c_str());
         return 1;
+    } catch (const memory::OverBudget& e) {
+        std::fprintf(stderr, "penumbra: error: %s\n", e.what());
+        return 2;
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "penumbra: error: out of memory\n");
         return 1;

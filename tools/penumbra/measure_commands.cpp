@@ -8,6 +8,7 @@
 #include "cli_options.h"
 #include "measure.h"
 #include "plan/options.h"
+#include "scene/memory_budget.h"
 
 namespace penumbra::tools {
 
@@ -120,6 +121,10 @@ std::shared_ptr<MeasureCommands> add_measure_commands(CLI::App& app) {
                            "cascaded shadow maps against one map instead, on --scenes FILE.gltf (default "
                            "tests/data/terrain_km.gltf): error by band of view depth, ms/frame of a pan, shimmer against "
                            "the truth's -> cascades.csv, cascades.md, cascades.svg/.png (docs/cascades.md)");
+    m->bench_cmd->add_flag("--scale", b.scale,
+                           "the cost against the object count instead: piled and spread scenes of 1,000, 10,000 and "
+                           "100,000 objects under a point, a spot and a sun light, plan and frame time and heap at the "
+                           "defaults and with no shadows -> scale.csv, scale.md, scale.svg/.png (docs/scale.md)");
     m->bench_cmd->add_flag("--truth-noise", b.truth_noise,
                            "only the area-light truth's own noise: mean |soft(N) - soft(4N)| on the course scene, N = 64, "
                            "256, 1024 -> soft_truth_noise.csv (part of a full --soft run too)");
@@ -154,6 +159,9 @@ int run_measure_commands(MeasureCommands& m) {
     } catch (const CommandError& e) {
         std::fprintf(stderr, "penumbra: error: %s\n", one_line(e.message).c_str());
         return e.code;
+    } catch (const memory::OverBudget& e) {
+        std::fprintf(stderr, "penumbra: error: %s\n", e.what());
+        return 2;
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "penumbra: error: out of memory\n");
         return 1;
