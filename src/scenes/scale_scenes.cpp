@@ -23,10 +23,10 @@ struct Lcg {
     }
 };
 
-// A square pyramid 0.1 wide and 0.12 tall standing on y = 0, flat-shaded, wound outwards: closed
+// A square pyramid 0.2 wide and 0.35 tall standing on y = 0, flat-shaded, wound outwards: closed
 // and convex, so it never needs to shadow itself in a map.
 Mesh pyramid() {
-    const float s = 0.05f, h = 0.12f;
+    const float s = 0.1f, h = 0.35f;
     const glm::vec3 b0(-s, 0, -s), b1(s, 0, -s), b2(s, 0, s), b3(-s, 0, s), apex(0, h, 0);
     const glm::vec3 faces[6][3] = {{b3, b2, apex}, {b2, b1, apex}, {b1, b0, apex}, {b0, b3, apex}, {b0, b1, b2}, {b0, b2, b3}};
     Mesh m;
@@ -114,8 +114,8 @@ Scene make_scale_scene(const ScaleSpec& spec) {
         if (pile) {
             at = glm::vec3(rng.uniform(-1.5f, 1.5f), rng.uniform(0.0f, 0.3f), rng.uniform(-0.15f, 0.15f));
         } else {
-            const float half = 0.5f * 0.3f * static_cast<float>(side - 1);
-            at = glm::vec3(0.3f * static_cast<float>(i % side) - half, 0.0f, 0.3f * static_cast<float>(i / side) - half);
+            const float first = -0.5f * 0.3f * static_cast<float>(side - 1);
+            at = glm::vec3(first + 0.3f * static_cast<float>(i % side), 0.0f, first + 0.3f * static_cast<float>(i / side));
         }
         const float turn = rng.uniform(0.0f, 1.5707964f);
         Object o;
@@ -126,20 +126,24 @@ Scene make_scale_scene(const ScaleSpec& spec) {
         s.objects.push_back(std::move(o));
     }
 
-    // The camera sees the whole layout from the front, a little above.
-    const glm::vec3 eye = pile ? glm::vec3(0.0f, 1.2f, 2.8f) : glm::vec3(0.0f, 0.45f * extent + 1.0f, 0.7f * extent + 1.0f);
-    const glm::vec3 look = pile ? glm::vec3(0.0f, 0.1f, 0.0f) : glm::vec3(0.0f);
+    // The pile: seen whole from the front, a little above, lit from the front right. The forest:
+    // seen from its edge, looking in over the trees, the nearest rows close and the far ones
+    // towards the horizon, lit from above its middle.
+    const float half = 0.5f * extent;
+    const glm::vec3 eye = pile ? glm::vec3(0.0f, 1.3f, 2.9f) : glm::vec3(0.0f, 2.0f, half + 2.0f);
+    const glm::vec3 look = pile ? glm::vec3(0.0f, 0.15f, 0.0f) : glm::vec3(0.0f, 0.0f, half - 6.0f);
     s.camera.view = glm::lookAt(eye, look, glm::vec3(0.0f, 1.0f, 0.0f));
     s.camera.yfov = glm::radians(50.0f);
     s.camera.znear = pile ? 0.05f : 0.1f;
-    s.camera.zfar = pile ? 20.0f : 3.0f * extent + 10.0f;
+    s.camera.zfar = pile ? 20.0f : 2.0f * extent + 10.0f;
 
     s.light.type = spec.light;
-    s.light.position = pile ? glm::vec3(0.6f, 3.0f, 1.0f) : glm::vec3(0.15f * extent, 0.6f * extent + 2.0f, 0.1f * extent);
+    s.light.position = pile ? glm::vec3(2.6f, 1.5f, 0.8f) : glm::vec3(0.3f * half, 0.2f * half + 3.0f, half + 4.0f);
+    const glm::vec3 aim = pile ? glm::vec3(0.0f, 0.15f, 0.0f) : glm::vec3(0.0f);
     if (spec.light == LightType::Directional) {
-        s.light.direction = light_direction_at(50.0f, 30.0f);
+        s.light.direction = light_direction_at(35.0f, 30.0f);
     } else {
-        s.light.direction = glm::normalize(look - s.light.position);
+        s.light.direction = glm::normalize(aim - s.light.position);
         s.light.spot_outer_cone = glm::radians(60.0f);
         s.light.spot_inner_cone = glm::radians(50.0f);
     }

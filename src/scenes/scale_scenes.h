@@ -1,12 +1,13 @@
 // Scenes of many objects that share one small mesh, made in code at any size: what the planner's
 // cost is measured and tested on (penumbra bench --scale, tests/cli_scale.sh). By name, as
 // --scene takes them:
-//   pile:N[:LIGHT]    N pyramids heaped in a 3 x 0.3 strip on a ground: every caster near every
-//                     receiver, the case where a per-pair list grows with N squared;
-//   forest:N[:LIGHT]  N pyramids on a square grid 0.3 apart on a ground: each shadows only its
-//                     neighbours;
-// LIGHT: point (default; above the middle), spot (the same place, aimed at the middle, a 60 degree
-// half-angle cone) or sun (a directional light 50 degrees up).
+//   pile:N[:LIGHT]    N pyramids heaped in a 3 x 0.3 strip on a ground, seen whole from the front:
+//                     every caster near every receiver, where a per-pair list grows with N squared;
+//   forest:N[:LIGHT]  N pyramids on a square grid 0.3 apart on a ground, seen from its edge out to
+//                     the horizon: each shadows only its neighbours;
+// LIGHT: point (default: the pile's from the right, the forest's behind the camera, up high), spot
+// (the same place, aimed at the middle, a 60 degree half-angle cone) or sun (a directional light
+// 35 degrees up). The pyramids are 0.2 wide and 0.35 tall.
 #pragma once
 
 #include <string>

@@ -48,7 +48,11 @@ CasterSpans caster_spans(const scene::Bounds& caster, const glm::vec4& light) {
     CasterSpans c;
     c.axes = axes_of(light, axes);
     c.point = light.w != 0.0f;
-    const std::vector<glm::vec3> corners = scene::corners(caster);
+    // scene::corners' eight, without a vector (this runs twice a caster).
+    glm::vec3 corners[8];
+    for (int k = 0; k < 8; ++k)
+        corners[k] = {(k & 1) ? caster.max.x : caster.min.x, (k & 2) ? caster.max.y : caster.min.y,
+                      (k & 4) ? caster.max.z : caster.min.z};
     for (int i = 0; i < c.axes; ++i) {
         float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
         for (const glm::vec3& p : corners) {

@@ -105,14 +105,14 @@ std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& p
     };
 
     // The box's faces (they satisfy the box's own half-spaces already).
-    std::vector<glm::vec3> faces;
-    faces.reserve(24);
-    box_face_corners(box, [&](const glm::vec3& p) { faces.push_back(p); });
-    if (inside) {
-        if (!whole) return faces;
+    if (inside && whole) {
         *whole = true;
         return corners;
     }
+    std::vector<glm::vec3> faces;
+    faces.reserve(24);
+    box_face_corners(box, [&](const glm::vec3& p) { faces.push_back(p); });
+    if (inside) return faces;
     for (size_t f = 0; f < faces.size(); f += 4) clip_all({faces.begin() + f, faces.begin() + f + 4}, hs.size(), false);
     // Each half-space's plane: a square around the box centre's foot on it, larger than the
     // box's section (which lies within `radius` of that foot), clipped by the box and the others.

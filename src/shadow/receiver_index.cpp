@@ -9,6 +9,17 @@ namespace penumbra::shadow {
 namespace {
 
 constexpr int kLeafSize = 4;
+
+// The nodes a query has still to visit. The hierarchy splits at medians, so its depth is about
+// log2(n / kLeafSize) and a depth-first walk holds at most one node a level: 64 levels hold any
+// count of receivers there can be.
+struct Stack {
+    int at[64];
+    int size = 0;
+    void push(int n) { at[size++] = n; }
+    int pop() { return at[--size]; }
+    bool empty() const { return size == 0; }
+};
 constexpr float kBig = std::numeric_limits<float>::max();
 
 bool finite4(const glm::vec4& v) {
@@ -125,11 +136,11 @@ bool ReceiverIndex::shadows_any(const CasterBox& caster) const {
     const CasterSpans c = caster_spans(caster.bounds, light_);
     if (linear_)
         return std::any_of(items_.begin(), items_.end(), [&](const Item& r) { return passes(caster, c, r); });
-    std::vector<int> stack{0};
+    Stack stack;
+    stack.push(0);
     while (!stack.empty()) {
-        const Node& n = nodes_[static_cast<size_t>(stack.back())];
-        const int self = stack.back();
-        stack.pop_back();
+        const int self = stack.pop();
+        const Node& n = nodes_[static_cast<size_t>(self)];
         if (none_pass(c, n)) continue;
         if (all_pass(caster, c, n)) return true;
         if (n.right < 0) {
@@ -137,8 +148,8 @@ bool ReceiverIndex::shadows_any(const CasterBox& caster) const {
                 if (passes(caster, c, items_[static_cast<size_t>(i)])) return true;
             continue;
         }
-        stack.push_back(n.right);
-        stack.push_back(self + 1);
+        stack.push(n.right);
+        stack.push(self + 1);
     }
     return false;
 }
@@ -178,11 +189,11 @@ void ReceiverIndex::cut_to_reach(const CasterBox& caster, WindowSides& rect) con
             for (const Item& r : items_)
                 if (passes(caster, c, r)) grow(found, r.rect);
         } else {
-            std::vector<int> stack{0};
+            Stack stack;
+            stack.push(0);
             while (!stack.empty()) {
-                const int self = stack.back();
+                const int self = stack.pop();
                 const Node& n = nodes_[static_cast<size_t>(self)];
-                stack.pop_back();
                 if (!could_widen(found, rect, n.rect) || none_pass(c, n)) continue;
                 if (all_pass(caster, c, n)) {
                     grow(found, n.rect);
@@ -200,8 +211,8 @@ void ReceiverIndex::cut_to_reach(const CasterBox& caster, WindowSides& rect) con
                 const Node& a = nodes_[static_cast<size_t>(self + 1)];
                 const Node& b = nodes_[static_cast<size_t>(n.right)];
                 const bool a_wider = (a.rect.y - a.rect.x) + (a.rect.w - a.rect.z) >= (b.rect.y - b.rect.x) + (b.rect.w - b.rect.z);
-                stack.push_back(a_wider ? n.right : self + 1);
-                stack.push_back(a_wider ? self + 1 : n.right);
+                stack.push(a_wider ? n.right : self + 1);
+                stack.push(a_wider ? self + 1 : n.right);
             }
         }
     }
