@@ -534,6 +534,12 @@ void run_sweep(Sweep& w) {
 }  // namespace
 
 void run_bench(const BenchOptions& in) {
+    if (in.scale) {
+        if (in.cascades || in.soft || in.truth_noise || !in.from_csv.empty())
+            throw CommandError{"--scale: not with --cascades, --soft, --truth-noise or --from-csv", 2};
+        run_scale_bench(in);
+        return;
+    }
     if (in.cascades) {
         if (in.soft || in.truth_noise || !in.from_csv.empty())
             throw CommandError{"--cascades: not with --soft, --truth-noise or --from-csv", 2};

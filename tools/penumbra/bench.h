@@ -279,6 +279,10 @@ void run_soft_bench(const BenchOptions& o);
 
 void run_cascades_bench(const BenchOptions& o);
 
+// ---- scale_bench.cpp: penumbra bench --scale ---------------------------------------------------
+
+void run_scale_bench(const BenchOptions& o);
+
 // ---- bench_report.cpp ------------------------------------------------------------------------
 
 // Writes results.csv, results.md, tradeoff.svg/.png and tradeoff_mae.svg/.png into `dir`;

@@ -66,6 +66,8 @@ struct BenchOptions {
     bool truth_noise = false;
     // --cascades: cascaded shadow maps against one map on a large scene instead (cascades_bench.cpp).
     bool cascades = false;
+    // --scale: plan and frame time and heap against the object count instead (scale_bench.cpp).
+    bool scale = false;
     std::vector<std::string> allow_outside;  // --allow-outside: for every scene of --scenes
 };
 void run_bench(const BenchOptions& o);

@@ -53,6 +53,7 @@ public:
         text(left_, 26, p_.title, 17, "#111111", Anchor::Start, true);
         text(left_, 46, p_.subtitle, 12, "#444444", Anchor::Start);
         grid_and_axes();
+        series_lines();
         front_line();
         markers();
         legend();
@@ -64,10 +65,16 @@ private:
         xmin_ = ymin_ = 1e300;
         xmax_ = ymax_ = -1e300;
         for (const auto& pt : p_.points) {
-            if (!std::isfinite(pt.x) || !std::isfinite(pt.y) || (p_.log_x && pt.x <= 0.0)) continue;
+            if (!shown(pt)) continue;
             xmin_ = std::min(xmin_, pt.x);
             xmax_ = std::max(xmax_, pt.x);
+            ymin_ = std::min(ymin_, pt.y);
             ymax_ = std::max(ymax_, pt.y);
+        }
+        if (p_.log_y) {
+            if (ymin_ > ymax_) ymin_ = 1.0, ymax_ = 10.0;
+            ymin_ = std::pow(10.0, std::floor(std::log10(ymin_ / 1.15)));
+            ymax_ = std::pow(10.0, std::ceil(std::log10(ymax_ * 1.15)));
         }
         if (xmin_ > xmax_) xmin_ = 1.0, xmax_ = 10.0, ymax_ = 1.0;
         if (p_.log_x) {
@@ -78,9 +85,27 @@ private:
             xmin_ = std::max(0.0, xmin_ - pad);
             xmax_ += pad;
         }
+        if (p_.log_y) return;
         ymin_ = 0.0;
         ystep_ = nice_step(std::max(ymax_, 1e-9) / 6.0);
         ymax_ = std::ceil(std::max(ymax_ * 1.06, 1e-9) / ystep_) * ystep_;
+    }
+
+    bool shown(const PlotPoint& pt) const {
+        return std::isfinite(pt.x) && std::isfinite(pt.y) && !(p_.log_x && pt.x <= 0.0) && !(p_.log_y && pt.y <= 0.0);
+    }
+
+    // 1, 2, 5 in each decade within [lo, hi] (every integer multiple where that gives under 4).
+    static std::vector<double> decade_ticks(double lo, double hi) {
+        std::vector<double> t;
+        for (const std::vector<int>& ms : {std::vector<int>{1, 2, 5}, std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9}}) {
+            t.clear();
+            for (double d = std::pow(10.0, std::floor(std::log10(lo))); d <= hi; d *= 10.0)
+                for (int m : ms)
+                    if (d * m >= lo * 0.999 && d * m <= hi * 1.001) t.push_back(d * m);
+            if (t.size() >= 4) break;
+        }
+        return t;
     }
 
     static double nice_step(double raw) {
@@ -94,7 +119,11 @@ private:
                                   : (x - xmin_) / (xmax_ - xmin_);
         return left_ + t * (right_ - left_);
     }
-    double py(double y) const { return bottom_ - (y - ymin_) / (ymax_ - ymin_) * (bottom_ - top_); }
+    double py(double y) const {
+        const double t = p_.log_y ? (std::log10(y) - std::log10(ymin_)) / (std::log10(ymax_) - std::log10(ymin_))
+                                  : (y - ymin_) / (ymax_ - ymin_);
+        return bottom_ - t * (bottom_ - top_);
+    }
 
     static std::string fmt(double v) {
         char b[32];
@@ -140,22 +169,17 @@ private:
 
     void grid_and_axes() {
         const std::string grid = "#e3e3e3", axis = "#333333";
-        for (double y = ymin_; y <= ymax_ + 1e-9 * ystep_; y += ystep_) {
+        std::vector<double> yt;
+        if (p_.log_y) yt = decade_ticks(ymin_, ymax_);
+        else
+            for (double y = ymin_; y <= ymax_ + 1e-9 * ystep_; y += ystep_) yt.push_back(y);
+        for (double y : yt) {
             line(left_, py(y), right_, py(y), grid, 1.0);
             text(left_ - 8, py(y) + 4, fmt(y), 11, axis, Anchor::End);
         }
         std::vector<double> xt;
         if (p_.log_x) {
-            for (double d = std::pow(10.0, std::floor(std::log10(xmin_))); d <= xmax_; d *= 10.0)
-                for (double m : {1.0, 2.0, 5.0})
-                    if (d * m >= xmin_ * 0.999 && d * m <= xmax_ * 1.001) xt.push_back(d * m);
-            // A narrow range (under a decade) gets every integer multiple as well.
-            if (xt.size() < 4) {
-                xt.clear();
-                for (double d = std::pow(10.0, std::floor(std::log10(xmin_))); d <= xmax_; d *= 10.0)
-                    for (int m = 1; m <= 9; ++m)
-                        if (d * m >= xmin_ * 0.999 && d * m <= xmax_ * 1.001) xt.push_back(d * m);
-            }
+            xt = decade_ticks(xmin_, xmax_);
         } else {
             const double step = nice_step((xmax_ - xmin_) / 6.0);
             for (double x = std::ceil(xmin_ / step) * step; x <= xmax_; x += step) xt.push_back(x);
@@ -168,6 +192,20 @@ private:
         line(left_, top_, left_, bottom_, axis, 1.2);
         text(0.5 * (left_ + right_), bottom_ + 40, p_.xlabel, 13, axis, Anchor::Middle);
         text(left_ - 60, top_ - 14, p_.ylabel, 13, axis, Anchor::Start);
+    }
+
+    void series_lines() {
+        for (const std::vector<std::size_t>& series : p_.lines) {
+            Item it;
+            it.kind = Item::Polyline;
+            it.width = 1.6;
+            for (std::size_t i : series) {
+                if (i >= p_.points.size() || !shown(p_.points[i])) continue;
+                if (it.pts.empty()) it.stroke = color(p_.points[i].color);
+                it.pts.push_back({px(p_.points[i].x), py(p_.points[i].y)});
+            }
+            if (it.pts.size() >= 2) items_.push_back(it);
+        }
     }
 
     void front_line() {
@@ -259,7 +297,7 @@ private:
             for (size_t i = 0; i < p_.points.size(); ++i) {
                 const PlotPoint& pt = p_.points[i];
                 if (on_front[i] != (pass == 1)) continue;
-                if (!std::isfinite(pt.x) || !std::isfinite(pt.y) || (p_.log_x && pt.x <= 0.0)) continue;
+                if (!shown(pt)) continue;
                 const double cx = px(pt.x), cy = py(pt.y);
                 if (on_front[i]) {
                     Item ring;
@@ -291,9 +329,7 @@ private:
         std::vector<Box> taken;
         std::vector<size_t> labelled = p_.front;  // the front's points, then the other callouts
         for (size_t i = 0; i < p_.points.size(); ++i)
-            if (!p_.points[i].callout.empty() && !on_front[i] && std::isfinite(p_.points[i].x) && std::isfinite(p_.points[i].y) &&
-                !(p_.log_x && p_.points[i].x <= 0.0))
-                labelled.push_back(i);
+            if (!p_.points[i].callout.empty() && !on_front[i] && shown(p_.points[i])) labelled.push_back(i);
         for (size_t i : labelled) {
             const PlotPoint& pt = p_.points[i];
             const double r = pt.radius + 5.0;

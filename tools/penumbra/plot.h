@@ -30,8 +30,11 @@ struct Plot {
     std::string xlabel;
     std::string ylabel;
     bool log_x = true;
+    bool log_y = false;  // decades up the y axis (points at or below 0 left out)
     std::vector<PlotPoint> points;
     std::vector<std::size_t> front;  // indices into points, by increasing x
+    // Series drawn as lines: each a list of indices into points, joined in the first one's colour.
+    std::vector<std::vector<std::size_t>> lines;
     std::vector<std::string> colors; // "#rrggbb"
     std::string color_title = "encoding (colour)";  // the legend's headings
     std::string marker_title = "filter (shape)";
