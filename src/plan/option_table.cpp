@@ -40,7 +40,10 @@ std::vector<Option<Options>> make_table() {
         t.push_back({std::move(info), store, print});
     };
 
-    OptionInfo scene = make_option_info("scene", P::Job, T::Text, "teapot (the course scene) or FILE.gltf / FILE.glb", "Scene");
+    OptionInfo scene = make_option_info("scene", P::Job, T::Text,
+                                        "teapot (the course scene), FILE.gltf / FILE.glb, or pile:N / forest:N "
+                                        "(N pyramids; :spot or :sun for another light)",
+                                        "Scene");
     add(scene, [](Options& o, std::string_view v) { o.job.scene = std::string(v); },
         [](const Options& o) { return o.job.scene; });
 

@@ -239,12 +239,19 @@ std::string FramePlan::to_text() const {
             for (int r : reads) o << " " << resource_name(*this, r);
             o << "\n";
         }
-        for (const Draw& d : p.draws)
+        // A pass of many draws has few variants and binding sets: each named once, while it repeats.
+        const Draw* last = nullptr;
+        std::string variant, bindings;
+        for (const Draw& d : p.draws) {
+            if (!last || d.variant.vertex != last->variant.vertex || d.variant.fragment != last->variant.fragment ||
+                d.variant.defines != last->variant.defines)
+                variant = d.variant.name();
+            if (!last || d.bindings != last->bindings) bindings = binding_names(p, d.bindings);
+            last = &d;
             o << "     draw " << (d.fullscreen ? std::string("full-screen triangle") : d.label)
               << (d.triangles ? " (" + std::to_string(d.triangles->size() / 3) + " triangles)" : std::string()) << ": "
-              << d.variant.name()
-              << " with " << binding_names(p, d.bindings) << (d.cull ? ", cull " + gl::to_string(*d.cull) : std::string())
-              << "\n";
+              << variant << " with " << bindings << (d.cull ? ", cull " + gl::to_string(*d.cull) : std::string()) << "\n";
+        }
     }
     for (const auto& n : notes) o << "note: " << n << "\n";
     return o.str();

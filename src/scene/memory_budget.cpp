@@ -129,8 +129,10 @@ bool budget_from_env(std::string& error) {
 
 void set_subject(const std::string& text) { std::snprintf(g_subject, sizeof g_subject, "%s", text.c_str()); }
 
+#ifndef __EMSCRIPTEN__
 Guard::Guard(const char* step) : outer_(t_step) { t_step = step; }
 Guard::~Guard() { t_step = outer_; }
+#endif
 
 const char* OverBudget::what() const noexcept {
     static thread_local char message[640];

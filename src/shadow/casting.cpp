@@ -119,6 +119,49 @@ std::vector<glm::vec3> shadowed_points(const CasterBox& caster, const std::vecto
     return out;
 }
 
+std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& light,
+                                                      const std::vector<scene::Bounds>& receivers,
+                                                      const glm::mat4& camera_view_proj, std::vector<char>* whole) {
+    const std::array<HalfSpace, 6> camera = clip_volume_half_spaces(camera_view_proj);
+    std::vector<HalfSpace> hs(camera.begin(), camera.end());
+    // A spot light lights nothing outside its outer cone: the four planes through the light that
+    // touch the cone (a pyramid holding it), when the cone is under a hemisphere.
+    const float theta = light.spot_outer_cone;
+    if (light.type == scene::LightType::Spot && theta >= 0.0f && theta < glm::radians(89.0f)) {
+        // The spot's axis, as the fits take it (a direction of no length: straight down).
+        const float len = glm::length(light.direction);
+        const glm::vec3 d = !(len > 1e-12f) || !std::isfinite(len) ? glm::vec3(0.0f, -1.0f, 0.0f) : light.direction / len;
+        const glm::vec3 u =
+            glm::normalize(glm::cross(d, std::fabs(d.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.0f, 0.0f, 1.0f)));
+        const glm::vec3 v = glm::cross(d, u);
+        const float s = std::sin(theta);
+        const float c = std::cos(theta);
+        for (const glm::vec3& e : {u, -u, v, -v}) {
+            const glm::vec3 n = s * d - c * e;
+            hs.emplace_back(n, -glm::dot(n, light.position));
+        }
+    }
+    const ClipPlanes planes = clip_planes(hs);
+    std::vector<std::vector<glm::vec3>> out;
+    out.reserve(receivers.size());
+    if (whole) whole->assign(receivers.size(), 0);
+    for (size_t k = 0; k < receivers.size(); ++k) {
+        bool all = false;
+        out.push_back(clip_box_by(receivers[k], planes, whole ? &all : nullptr));
+        if (whole) (*whole)[k] = all ? 1 : 0;
+    }
+    return out;
+}
+
+std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
+                                               const glm::mat4& camera_view_proj) {
+    std::vector<char> whole;
+    std::vector<glm::vec3> out;
+    for (const std::vector<glm::vec3>& pts : visible_points_each(light, receivers, camera_view_proj, &whole))
+        out.insert(out.end(), pts.begin(), pts.end());
+    return out;
+}
+
 std::vector<SeenReceiver> seen_receivers(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                          const glm::mat4& camera_view_proj, const CastingInfo& info) {
     std::vector<char> whole;

@@ -139,59 +139,65 @@ float cross2(const glm::vec2& o, const glm::vec2& a, const glm::vec2& b) {
 
 }  // namespace
 
-namespace {
+std::vector<std::size_t> near_boundary(const std::vector<glm::vec2>& points, const std::vector<glm::vec2>& polygon,
+                                       float depth) {
+    std::vector<std::size_t> out;
+    // Deep inside an edge: farther than `depth` from its line, inwards (the cross product with the
+    // edge, over the edge's length).
+    std::vector<float> margin(polygon.size());
+    for (size_t i = 0; i < polygon.size(); ++i) margin[i] = depth * glm::length(polygon[(i + 1) % polygon.size()] - polygon[i]);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        bool deep = polygon.size() >= 3;
+        for (size_t i = 0; i < polygon.size() && deep; ++i)
+            deep = cross2(polygon[i], polygon[(i + 1) % polygon.size()], points[k]) > margin[i];
+        if (!deep) out.push_back(k);
+    }
+    return out;
+}
 
 // Akl and Toussaint's filter: the points deep inside the octagon of the extreme points along x, y,
 // x + y and x - y (hull vertices all) cannot be on the hull, so the sort below need not see them.
 // Only those farther inside every edge than a thousandth of the extent are dropped; points near
 // the boundary stay, so rounding decides nothing here. A view of a hundred thousand objects sends
-// nearly a million points, of which a few dozen remain.
-void drop_inner_points(std::vector<glm::vec2>& p) {
-    const auto key = [](const glm::vec2& v, int d) {
-        switch (d) {
-            case 0: return v.x;
-            case 1: return v.x + v.y;
-            case 2: return v.y;
-            case 3: return v.y - v.x;
-            case 4: return -v.x;
-            case 5: return -v.x - v.y;
-            case 6: return -v.y;
-            default: return v.x - v.y;
-        }
+// over a million points, of which a few thousand remain.
+std::vector<std::size_t> hull_candidates(const std::vector<glm::vec2>& p) {
+    std::vector<std::size_t> all(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) all[i] = i;
+    if (p.size() <= 1024) return all;
+    // The extreme point along each of the eight directions, counter-clockwise from +x: x, x + y,
+    // y, y - x, -x, -x - y, -y, x - y; the first point to reach each maximum, in one pass.
+    const auto keys = [](const glm::vec2& v, float (&k)[8]) {
+        k[0] = v.x, k[1] = v.x + v.y, k[2] = v.y, k[3] = v.y - v.x;
+        k[4] = -v.x, k[5] = -v.x - v.y, k[6] = -v.y, k[7] = v.x - v.y;
     };
-    // The extreme point along each of the eight directions, counter-clockwise from +x.
-    std::vector<glm::vec2> octagon;
+    size_t best[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    float top[8];
+    keys(p.front(), top);
     glm::vec2 lo = p.front(), hi = p.front();
-    for (int d = 0; d < 8; ++d) {
-        glm::vec2 best = p.front();
-        for (const glm::vec2& v : p)
-            if (key(v, d) > key(best, d)) best = v;
-        if (octagon.empty() || (best != octagon.back() && best != octagon.front())) octagon.push_back(best);
-    }
-    for (const glm::vec2& v : p) {
-        if (!std::isfinite(v.x) || !std::isfinite(v.y)) return;
+    for (size_t i = 0; i < p.size(); ++i) {
+        const glm::vec2& v = p[i];
+        if (!std::isfinite(v.x) || !std::isfinite(v.y)) return all;
         lo = glm::min(lo, v);
         hi = glm::max(hi, v);
+        float k[8];
+        keys(v, k);
+        for (int d = 0; d < 8; ++d)
+            if (k[d] > top[d]) top[d] = k[d], best[d] = i;
     }
-    if (octagon.size() < 3) return;
-    // A point is deep inside an edge when it lies farther than a thousandth of the extent from it:
-    // its cross product with the edge over the edge's length.
+    std::vector<glm::vec2> octagon;
+    for (size_t b : best)
+        if (octagon.empty() || (p[b] != octagon.back() && p[b] != octagon.front())) octagon.push_back(p[b]);
     const float depth = 1e-3f * std::max(hi.x - lo.x, hi.y - lo.y);
-    std::vector<float> margin(octagon.size());
-    for (size_t i = 0; i < octagon.size(); ++i) margin[i] = depth * glm::length(octagon[(i + 1) % octagon.size()] - octagon[i]);
-    if (!(depth > 0.0f) || !std::isfinite(depth)) return;
-    const auto deep_inside = [&](const glm::vec2& v) {
-        for (size_t i = 0; i < octagon.size(); ++i)
-            if (!(cross2(octagon[i], octagon[(i + 1) % octagon.size()], v) > margin[i])) return false;
-        return true;
-    };
-    p.erase(std::remove_if(p.begin(), p.end(), deep_inside), p.end());
+    if (octagon.size() < 3 || !(depth > 0.0f) || !std::isfinite(depth)) return all;
+    return near_boundary(p, octagon, depth);
 }
 
-}  // namespace
-
 std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> p) {
-    if (p.size() > 1024) drop_inner_points(p);
+    if (p.size() > 1024) {
+        std::vector<glm::vec2> kept;
+        for (std::size_t i : hull_candidates(p)) kept.push_back(p[i]);
+        p = std::move(kept);
+    }
     std::sort(p.begin(), p.end(), [](const glm::vec2& a, const glm::vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     p.erase(std::unique(p.begin(), p.end()), p.end());
     if (p.size() < 3) return p;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -74,6 +75,20 @@ std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> points);
 
 // A convex polygon clipped to the rectangle [lo, hi] (Sutherland-Hodgman).
 std::vector<glm::vec2> clip_to_rect(const std::vector<glm::vec2>& poly, const glm::vec2& lo, const glm::vec2& hi);
+
+// The points of `points` not deeper inside the convex polygon (counter-clockwise) than `depth`
+// from every edge, by index: all of them where the polygon has under three corners. What lies
+// deeper cannot be on the hull of the points the polygon's corners are taken from, nor on it
+// after a projective change of view that keeps them all in front (rounding cannot move a point by
+// a thousandth of the extent).
+std::vector<std::size_t> near_boundary(const std::vector<glm::vec2>& points, const std::vector<glm::vec2>& polygon,
+                                       float depth);
+
+// The points that may be on the hull, by index, in order: over 1,024 points, those not deeper
+// than a thousandth of the extent inside the octagon of the extreme points along x, y, x + y and
+// x - y (Akl and Toussaint); else all. convex_hull sorts only these; the hull of them is the
+// hull of all, to the bit.
+std::vector<std::size_t> hull_candidates(const std::vector<glm::vec2>& points);
 
 // The area of a simple polygon (either orientation).
 float polygon_area(const std::vector<glm::vec2>& poly);

@@ -300,30 +300,46 @@ struct PerspectiveWindow {
 
 void finish_window(PerspectiveWindow& w, std::vector<glm::vec2> tangents);
 
-// false when a point is not in front of the light's eye plane (at least front_eps).
+// The window along `dir` around `visible`; false when a point is not in front of the light's eye
+// plane (at least front_eps). With many points, only those that may lie on the hull of their
+// tangents (hull_candidates) decide the window's sides and its hull: `outline` flags them, given
+// (read) or to make (written, where `make_outline`); the others count for the depth range and the
+// eye plane only.
 bool perspective_window(const glm::vec3& pos, const glm::vec3& dir, const std::vector<glm::vec3>& visible,
-                        float front_eps, PerspectiveWindow& w) {
+                        std::vector<char>& outline, bool make_outline, float front_eps, PerspectiveWindow& w) {
     w.view = look_along(pos, dir);
     float xl = std::numeric_limits<float>::max(), xr = std::numeric_limits<float>::lowest();
     float yb = xl, yt = xr;
     w.zmin = xl;
     w.zmax = 0.0f;
+    const bool outlined = !outline.empty() && !make_outline;
     std::vector<glm::vec2> tangents;
-    tangents.reserve(visible.size());
-    for (const glm::vec3& p : visible) {
-        const glm::vec3 e = glm::vec3(w.view * glm::vec4(p, 1.0f));
+    tangents.reserve(outlined ? visible.size() / 8 : visible.size());
+    for (size_t i = 0; i < visible.size(); ++i) {
+        const glm::vec3 e = glm::vec3(w.view * glm::vec4(visible[i], 1.0f));
         const float depth = -e.z;
         if (!(depth > front_eps)) return false;
+        w.zmin = std::min(w.zmin, depth);
+        w.zmax = std::max(w.zmax, depth);
+        if (outlined && !outline[i]) continue;
         const glm::vec2 t(e.x / depth, e.y / depth);
         tangents.push_back(t);
         xl = std::min(xl, t.x);
         xr = std::max(xr, t.x);
         yb = std::min(yb, t.y);
         yt = std::max(yt, t.y);
-        w.zmin = std::min(w.zmin, depth);
-        w.zmax = std::max(w.zmax, depth);
     }
     w.raw = {xl, xr, yb, yt};
+    if (make_outline && tangents.size() > 1024) {
+        // The hull of the candidates is the hull of all (convex_hull takes the same ones).
+        outline.assign(visible.size(), 0);
+        std::vector<glm::vec2> near;
+        for (std::size_t i : hull_candidates(tangents)) {
+            outline[i] = 1;
+            near.push_back(tangents[i]);
+        }
+        tangents = std::move(near);
+    }
     finish_window(w, std::move(tangents));
     return true;
 }
@@ -362,7 +378,7 @@ bool cut_to_casters(PerspectiveWindow& w, const std::vector<Reach>& reach, const
 // visible point beside or behind the light's eye plane).
 bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec3>& visible, const glm::vec3& centroid,
                            const std::vector<scene::Bounds>& receivers, const std::vector<scene::Bounds>& casters,
-                           const Shadowing* shadowing, TightFit& out) {
+                           const Shadowing* shadowing, TightFit& out, std::vector<char>& outline) {
     const glm::vec3 pos = light.position;
     for (const auto* boxes : {&receivers, &casters})
         for (const scene::Bounds& b : *boxes)
@@ -380,14 +396,17 @@ bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec
     // wide receiver, below the cap). The one the cap does not cut, then the one with the higher
     // texel use.
     PerspectiveWindow a, b;
-    const bool has_a = perspective_window(pos, glm::normalize(to_centroid), visible, front_eps, a);
+    const bool has_a = perspective_window(pos, glm::normalize(to_centroid), visible, outline, true, front_eps, a);
     bool has_b = false;
     if (has_a) {
         const float ax = 0.5f * (std::atan(a.raw.x) + std::atan(a.raw.y));
         const float ay = 0.5f * (std::atan(a.raw.z) + std::atan(a.raw.w));
         const glm::vec3 eye_dir = glm::normalize(glm::vec3(std::tan(ax), std::tan(ay), -1.0f));
         const glm::vec3 dir = glm::transpose(glm::mat3(a.view)) * eye_dir;
-        has_b = perspective_window(pos, safe_normalize(dir, glm::normalize(to_centroid)), visible, front_eps, b);
+        // The second window looks from the same point: a projective change of the first's tangents
+        // that keeps every point in front, so the first's hull candidates hold the second's too.
+        has_b = perspective_window(pos, safe_normalize(dir, glm::normalize(to_centroid)), visible, outline, false,
+                                   front_eps, b);
     }
     if (!has_a && !has_b) return false;
     PerspectiveWindow w =
@@ -467,47 +486,6 @@ void fit_tight_orthographic(const scene::Light& light, const std::vector<glm::ve
 
 }  // namespace
 
-std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& light,
-                                                      const std::vector<scene::Bounds>& receivers,
-                                                      const glm::mat4& camera_view_proj, std::vector<char>* whole) {
-    const std::array<HalfSpace, 6> camera = clip_volume_half_spaces(camera_view_proj);
-    std::vector<HalfSpace> hs(camera.begin(), camera.end());
-    // A spot light lights nothing outside its outer cone: the four planes through the light that
-    // touch the cone (a pyramid holding it), when the cone is under a hemisphere.
-    const float theta = light.spot_outer_cone;
-    if (light.type == scene::LightType::Spot && theta >= 0.0f && theta < glm::radians(89.0f)) {
-        const glm::vec3 d = safe_normalize(light.direction, glm::vec3(0.0f, -1.0f, 0.0f));
-        const glm::vec3 u =
-            glm::normalize(glm::cross(d, std::fabs(d.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.0f, 0.0f, 1.0f)));
-        const glm::vec3 v = glm::cross(d, u);
-        const float s = std::sin(theta);
-        const float c = std::cos(theta);
-        for (const glm::vec3& e : {u, -u, v, -v}) {
-            const glm::vec3 n = s * d - c * e;
-            hs.emplace_back(n, -glm::dot(n, light.position));
-        }
-    }
-    const ClipPlanes planes = clip_planes(hs);
-    std::vector<std::vector<glm::vec3>> out;
-    out.reserve(receivers.size());
-    if (whole) whole->assign(receivers.size(), 0);
-    for (size_t k = 0; k < receivers.size(); ++k) {
-        bool all = false;
-        out.push_back(clip_box_by(receivers[k], planes, whole ? &all : nullptr));
-        if (whole) (*whole)[k] = all ? 1 : 0;
-    }
-    return out;
-}
-
-std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
-                                               const glm::mat4& camera_view_proj) {
-    std::vector<char> whole;
-    std::vector<glm::vec3> out;
-    for (const std::vector<glm::vec3>& pts : visible_points_each(light, receivers, camera_view_proj, &whole))
-        out.insert(out.end(), pts.begin(), pts.end());
-    return out;
-}
-
 glm::vec4 light_vector(const scene::Light& light) {
     return light.type == scene::LightType::Directional ? glm::vec4(-light.direction, 0.0f)
                                                         : glm::vec4(light.position, 1.0f);
@@ -516,6 +494,7 @@ glm::vec4 light_vector(const scene::Light& light) {
 float texel_use(const LightFrustum& f, const std::vector<glm::vec3>& points) {
     const glm::mat4 vp = f.view_proj();
     std::vector<glm::vec2> ndc;
+    ndc.reserve(points.size());
     for (const glm::vec3& p : points) {
         const glm::vec4 c = vp * glm::vec4(p, 1.0f);
         if (!(c.w > 0.0f)) continue;
@@ -532,10 +511,14 @@ TightFit fit_tight(const scene::Light& light, const std::vector<scene::Bounds>& 
                    const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,
                    const Shadowing* shadowing) {
     TightFit r;
+    std::vector<char> outline;  // the points near the hull, where there are many (empty: all)
     // The shadows fit's index holds the receivers clipped already; the tight fit clips them here.
     std::vector<SeenReceiver> own;
     if (!shadowing) own = seen_receivers(light, receivers, camera_view_proj, CastingInfo{});
     const std::vector<SeenReceiver>& seen = shadowing ? shadowing->index->seen() : own;
+    std::size_t count = 0;
+    for (const SeenReceiver& each : seen) count += each.points.size();
+    r.visible.reserve(count);
     for (const SeenReceiver& each : seen) r.visible.insert(r.visible.end(), each.points.begin(), each.points.end());
     if (!r.visible.empty()) {
         const glm::vec3 centroid = visible_centroid(seen);
@@ -543,11 +526,18 @@ TightFit fit_tight(const scene::Light& light, const std::vector<scene::Bounds>& 
             fit_tight_orthographic(light, r.visible, centroid, receivers, casters, shadowing, r);
             r.tight = true;
         } else {
-            r.tight = fit_tight_perspective(light, r.visible, centroid, receivers, casters, shadowing, r);
+            r.tight = fit_tight_perspective(light, r.visible, centroid, receivers, casters, shadowing, r, outline);
         }
     }
     if (!r.tight) return fit_light_frustum_scene(light, receivers, casters, camera_view_proj);
-    r.texel_use = texel_use(r.frustum, r.visible);
+    if (outline.empty()) {
+        r.texel_use = texel_use(r.frustum, r.visible);
+    } else {  // the points near the hull give the same hull (fit_tight_perspective)
+        std::vector<glm::vec3> near;
+        for (std::size_t i = 0; i < r.visible.size(); ++i)
+            if (outline[i]) near.push_back(r.visible[i]);
+        r.texel_use = texel_use(r.frustum, near);
+    }
     return r;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace penumbra::shadow {
@@ -9,6 +10,14 @@ namespace penumbra::shadow {
 namespace {
 
 constexpr int kLeafSize = 4;
+// The pages draw only their own scenes, a few hundred objects at most, where asking receiver by
+// receiver costs nothing; the hierarchy's code is 2.3 KB of each shadow-mapped page's module,
+// gzipped. The answers are the same either way (the unit tests hold the two to each other).
+#ifdef __EMSCRIPTEN__
+constexpr bool kLinearOnly = true;
+#else
+constexpr bool kLinearOnly = false;
+#endif
 
 // The nodes a query has still to visit. The hierarchy splits at medians, so its depth is about
 // log2(n / kLeafSize) and a depth-first walk holds at most one node a level: 64 levels hold any
@@ -65,15 +74,45 @@ bool could_widen(const WindowSides& found, const WindowSides& caster, const Wind
 WindowSides empty_window() { return {kBig, -kBig, kBig, -kBig}; }
 
 ReceiverIndex::ReceiverIndex(std::vector<SeenReceiver> seen, const glm::vec4& light, bool linear)
-    : light_(light), linear_(linear), seen_(std::move(seen)) {
+    : light_(light), linear_(linear || kLinearOnly), seen_(std::move(seen)) {
     // A receiver with no visible point can be shadowed by nothing (may_shadow: false).
     for (size_t k = 0; k < seen_.size(); ++k)
         if (!seen_[k].points.empty())
             items_.push_back({point_spans(seen_[k].points, light), seen_[k].object, static_cast<int>(k), empty_window()});
-    if (!linear_ && !items_.empty()) {
-        nodes_.reserve(2 * items_.size() / kLeafSize + 2);
-        build(0, static_cast<int>(items_.size()));
+    if (linear_ || items_.empty()) return;
+    // The items in Morton order of their centres (10 bits an axis over the centres' box; a centre
+    // that is not finite counts as 0), then split in halves by count: one sort, and each node's
+    // items are neighbours in space and in memory.
+    const auto centre = [](const Item& it, int a) {
+        const float c = 0.5f * it.spans.lo[a] + 0.5f * it.spans.hi[a];
+        return std::isfinite(c) ? c : 0.0f;
+    };
+    glm::vec3 lo(kBig), hi(-kBig);
+    for (const Item& it : items_)
+        for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], centre(it, a)), hi[a] = std::max(hi[a], centre(it, a));
+    const auto spread = [](std::uint64_t v) {  // 10 bits to every third of 30
+        v = (v | (v << 16)) & 0x030000FFull;
+        v = (v | (v << 8)) & 0x0300F00Full;
+        v = (v | (v << 4)) & 0x030C30C3ull;
+        return (v | (v << 2)) & 0x09249249ull;
+    };
+    std::vector<std::uint64_t> keys(items_.size());
+    for (size_t i = 0; i < items_.size(); ++i) {
+        std::uint64_t code = 0;
+        for (int a = 0; a < 3; ++a) {
+            const float extent = hi[a] - lo[a];
+            const float t = extent > 0.0f && std::isfinite(extent) ? (centre(items_[i], a) - lo[a]) / extent : 0.0f;
+            code |= spread(static_cast<std::uint64_t>(std::clamp(t, 0.0f, 1.0f) * 1023.0f)) << a;
+        }
+        keys[i] = (code << 32) | i;  // the index keeps the order strict
     }
+    std::sort(keys.begin(), keys.end());
+    std::vector<Item> ordered;
+    ordered.reserve(items_.size());
+    for (std::uint64_t k : keys) ordered.push_back(items_[k & 0xFFFFFFFFull]);
+    items_ = std::move(ordered);
+    nodes_.reserve(2 * items_.size() / kLeafSize + 2);
+    build(0, static_cast<int>(items_.size()));
 }
 
 void ReceiverIndex::bound(Node& n) const {
@@ -98,34 +137,33 @@ void ReceiverIndex::bound(Node& n) const {
     }
 }
 
-// Nodes in depth-first order, each node's first child right after it: items split at the median
-// of their centres along the widest axis, down to kLeafSize a leaf. O(n log n).
+// Nodes in depth-first order, each node's first child right after it: the items' range split in
+// halves, down to kLeafSize a leaf; a node's bounds are its leaf's items' or its children's. O(n).
 int ReceiverIndex::build(int begin, int end) {
     const int at = static_cast<int>(nodes_.size());
     nodes_.push_back({});
     Node n;
     n.begin = begin;
     n.end = end;
-    bound(n);
-    if (end - begin > kLeafSize) {
-        // The centre along each world axis; a value that is not finite sorts as 0, so the order stays strict.
-        auto centre = [](const Item& it, int axis) {
-            const float c = 0.5f * it.spans.lo[axis] + 0.5f * it.spans.hi[axis];
-            return std::isfinite(c) ? c : 0.0f;
-        };
-        glm::vec3 lo(kBig), hi(-kBig);
-        for (int i = begin; i < end; ++i)
-            for (int a = 0; a < 3; ++a) {
-                lo[a] = std::min(lo[a], centre(items_[static_cast<size_t>(i)], a));
-                hi[a] = std::max(hi[a], centre(items_[static_cast<size_t>(i)], a));
-            }
-        const glm::vec3 extent = hi - lo;
-        const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+    if (end - begin <= kLeafSize) {
+        bound(n);
+    } else {
         const int mid = begin + (end - begin) / 2;
-        std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
-                         [&](const Item& a, const Item& b) { return centre(a, axis) < centre(b, axis); });
         build(begin, mid);
         n.right = build(mid, end);
+        // The union of the children's bounds (a node with a value that is not finite is never
+        // decided by its bounds, so theirs may be anything).
+        const Node& a = nodes_[static_cast<size_t>(at) + 1];
+        const Node& b = nodes_[static_cast<size_t>(n.right)];
+        n.lo_min = glm::min(a.lo_min, b.lo_min);
+        n.lo_max = glm::max(a.lo_max, b.lo_max);
+        n.hi_min = glm::min(a.hi_min, b.hi_min);
+        n.hi_max = glm::max(a.hi_max, b.hi_max);
+        n.far_min = std::min(a.far_min, b.far_min);
+        n.far_max = std::max(a.far_max, b.far_max);
+        n.object_min = std::min(a.object_min, b.object_min);
+        n.object_max = std::max(a.object_max, b.object_max);
+        n.finite = a.finite && b.finite;
     }
     nodes_[static_cast<size_t>(at)] = n;
     return at;
@@ -134,7 +172,7 @@ int ReceiverIndex::build(int begin, int end) {
 bool ReceiverIndex::shadows_any(const CasterBox& caster) const {
     if (caster.bounds.empty() || items_.empty()) return false;
     const CasterSpans c = caster_spans(caster.bounds, light_);
-    if (linear_)
+    if (linear_ || kLinearOnly)
         return std::any_of(items_.begin(), items_.end(), [&](const Item& r) { return passes(caster, c, r); });
     Stack stack;
     stack.push(0);
@@ -185,7 +223,7 @@ void ReceiverIndex::cut_to_reach(const CasterBox& caster, WindowSides& rect) con
     WindowSides found = empty_window();
     if (!caster.bounds.empty() && !items_.empty()) {
         const CasterSpans c = caster_spans(caster.bounds, light_);
-        if (linear_) {
+        if (linear_ || kLinearOnly) {
             for (const Item& r : items_)
                 if (passes(caster, c, r)) grow(found, r.rect);
         } else {

@@ -95,6 +95,8 @@ Pass camera_pass(PlanContext& c, const Module& module, bool stencil,
     cam.clear = Clear{c.settings.aov == Aov::Visibility ? kWhite : kBackground, true, stencil};
     cam.bindings = c.lit_bindings();
     std::vector<CameraItem> items;
+    cam.draws.reserve(c.drawable.size());
+    items.reserve(c.drawable.size());
     const std::uint32_t all = (1u << cam.bindings.size()) - 1u;
     for (int i : c.drawable) {
         if (module.keeps_out_of_camera(c, i)) continue;

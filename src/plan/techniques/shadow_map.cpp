@@ -80,6 +80,7 @@ Pass map_pass(const PlanContext& c, const std::vector<int>& casters, int& cut_ou
     p.state.color_write = !depthtex;
     p.object_uniforms = ObjectUniforms::Mvp;
     cut_outs = 0;
+    p.draws.reserve(casters.size());
     for (int i : casters) {
         p.draws.push_back(c.mesh_draw(i));
         // A cut-out (MASK) leaves depth only where its alpha is kept: a leaf-shaped shadow.
@@ -90,7 +91,8 @@ Pass map_pass(const PlanContext& c, const std::vector<int>& casters, int& cut_ou
     }
     // Grouped by culling (stable: scene order within a group), so the pass changes it at most
     // twice; the pass's own state is its first group's.
-    std::stable_sort(p.draws.begin(), p.draws.end(), [](const Draw& a, const Draw& b) { return *a.cull < *b.cull; });
+    const auto by_cull = [](const Draw& a, const Draw& b) { return *a.cull < *b.cull; };
+    if (!std::is_sorted(p.draws.begin(), p.draws.end(), by_cull)) std::stable_sort(p.draws.begin(), p.draws.end(), by_cull);
     p.state.cull = p.draws.empty() ? gl::Cull::None : *p.draws.front().cull;
     for (Draw& dr : p.draws)
         if (dr.cull == p.state.cull) dr.cull.reset();
