@@ -79,7 +79,7 @@ ReceiverIndex::ReceiverIndex(std::vector<SeenReceiver> seen, const glm::vec4& li
     for (size_t k = 0; k < seen_.size(); ++k)
         if (!seen_[k].points.empty())
             items_.push_back({point_spans(seen_[k].points, light), seen_[k].object, static_cast<int>(k), empty_window()});
-    if (linear_ || items_.empty()) return;
+    if (linear_ || kLinearOnly || items_.empty()) return;
     // The items in Morton order of their centres (10 bits an axis over the centres' box; a centre
     // that is not finite counts as 0), then split in halves by count: one sort, and each node's
     // items are neighbours in space and in memory.
