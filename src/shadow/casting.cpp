@@ -97,28 +97,6 @@ bool may_shadow(const scene::Bounds& caster, const std::vector<glm::vec3>& point
     return may_shadow(caster_spans(caster, light), point_spans(points, light));
 }
 
-namespace {
-
-// Whether `caster` can shadow a point of receiver `r` (never itself when convex).
-bool may_shadow_receiver(const CasterBox& caster, const SeenReceiver& r, const glm::vec4& light) {
-    return !r.points.empty() && !(caster.convex && r.object == caster.object) && may_shadow(caster.bounds, r.points, light);
-}
-
-}  // namespace
-
-bool shadows_any(const CasterBox& caster, const std::vector<SeenReceiver>& seen, const glm::vec4& light) {
-    return std::any_of(seen.begin(), seen.end(),
-                       [&](const SeenReceiver& r) { return may_shadow_receiver(caster, r, light); });
-}
-
-std::vector<glm::vec3> shadowed_points(const CasterBox& caster, const std::vector<SeenReceiver>& seen,
-                                       const glm::vec4& light) {
-    std::vector<glm::vec3> out;
-    for (const SeenReceiver& r : seen)
-        if (may_shadow_receiver(caster, r, light)) out.insert(out.end(), r.points.begin(), r.points.end());
-    return out;
-}
-
 std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& light,
                                                       const std::vector<scene::Bounds>& receivers,
                                                       const glm::mat4& camera_view_proj, std::vector<char>* whole) {

@@ -69,11 +69,5 @@ struct CasterBox {
     bool convex = false;
 };
 
-// Whether `caster` can shadow a point of any receiver in `seen` (itself only if not convex).
-bool shadows_any(const CasterBox& caster, const std::vector<SeenReceiver>& seen, const glm::vec4& light);
-// The points of every receiver in `seen` that `caster` can shadow, as shadows_any decides: its
-// shadow falls inside their hulls (empty: it shadows none).
-std::vector<glm::vec3> shadowed_points(const CasterBox& caster, const std::vector<SeenReceiver>& seen,
-                                       const glm::vec4& light);
 
 }  // namespace penumbra::shadow

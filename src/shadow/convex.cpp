@@ -158,8 +158,8 @@ std::vector<std::size_t> near_boundary(const std::vector<glm::vec2>& points, con
 // Akl and Toussaint's filter: the points deep inside the octagon of the extreme points along x, y,
 // x + y and x - y (hull vertices all) cannot be on the hull, so the sort below need not see them.
 // Only those farther inside every edge than a thousandth of the extent are dropped; points near
-// the boundary stay, so rounding decides nothing here. A view of a hundred thousand objects sends
-// over a million points, of which a few thousand remain.
+// the boundary stay, so rounding decides nothing here. A view of many objects sends about ten
+// points an object, of which few remain.
 std::vector<std::size_t> hull_candidates(const std::vector<glm::vec2>& p) {
     std::vector<std::size_t> all(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) all[i] = i;

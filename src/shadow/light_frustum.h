@@ -98,7 +98,7 @@ struct CastingInfo {
 };
 
 // The shadows fit (--light-fit shadows): the tight fit, drawing only the casters that can shadow
-// a receiver in view (shadow::shadows_any; the rest counted in TightFit::culled), with the window
+// a receiver in view (ReceiverIndex::shadows_any; the rest counted in TightFit::culled), with the window
 // cut to where their shadows can fall: seen from the light, each drawn caster's part inside the
 // window, cut to the visible receivers it may shadow (ReceiverIndex::cut_to_reach; a ground plane under a plank
 // that dips below it shadows only the plank's tip, not the whole ground). A visible receiver
@@ -114,7 +114,7 @@ std::vector<SeenReceiver> seen_receivers(const scene::Light& light, const std::v
                                          const glm::mat4& camera_view_proj, const CastingInfo& info);
 CasterBox caster_box(const std::vector<scene::Bounds>& casters, const CastingInfo& info, size_t k);
 
-// One flag per caster box: 1 where it can shadow a receiver the camera sees (shadow::shadows_any
+// One flag per caster box: 1 where it can shadow a receiver the camera sees (ReceiverIndex::shadows_any
 // over visible_points_each), 0 where a plane proves it cannot: what the shadows fit leaves out.
 std::vector<char> shadowing_flags(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                   const std::vector<scene::Bounds>& casters, const glm::mat4& camera_view_proj,

@@ -11,17 +11,17 @@ namespace {
 
 constexpr int kLeafSize = 4;
 // The pages draw only their own scenes, a few hundred objects at most, where asking receiver by
-// receiver costs nothing; the hierarchy's code is 2.3 KB of each shadow-mapped page's module,
-// gzipped. The answers are the same either way (the unit tests hold the two to each other).
+// receiver costs nothing and the hierarchy's code would cost each page's download (docs/payload.md).
+// The answers are the same either way (the unit tests hold the two to each other).
 #ifdef __EMSCRIPTEN__
 constexpr bool kLinearOnly = true;
 #else
 constexpr bool kLinearOnly = false;
 #endif
 
-// The nodes a query has still to visit. The hierarchy splits at medians, so its depth is about
-// log2(n / kLeafSize) and a depth-first walk holds at most one node a level: 64 levels hold any
-// count of receivers there can be.
+// The nodes a query has still to visit. The hierarchy splits its items in halves, so its depth is
+// about log2(n / kLeafSize) and a depth-first walk holds at most one node a level more: 64 hold
+// any count of receivers there can be.
 struct Stack {
     int at[64];
     int size = 0;

@@ -1,6 +1,7 @@
 // The receivers the camera sees, indexed for the one question the shadows fit asks of each caster:
 // which of them can it shadow (shadow::may_shadow)? Asked receiver by receiver, that question
-// costs casters x receivers; a pile of 5,000 objects took 20 s and 11 GB. Here the receivers sit
+// costs casters x receivers, and a crowd of objects made it the whole frame's cost (docs/scale.md).
+// Here the receivers sit
 // in a bounding-volume hierarchy over the extents may_shadow reads, so a caster's question visits
 // only the nodes that straddle its planes. The answers are may_shadow's, exactly: a node is
 // passed over only where every receiver in it fails the same test, and taken whole only where
@@ -27,7 +28,7 @@ public:
     // the tests hold the hierarchy to.
     ReceiverIndex(std::vector<SeenReceiver> seen, const glm::vec4& light, bool linear = false);
 
-    // Whether `caster` can shadow a point of any receiver (shadow::shadows_any).
+    // Whether `caster` can shadow a point of any receiver: may_shadow, never itself when convex.
     bool shadows_any(const CasterBox& caster) const;
 
     // Each receiver's rect in the light's window (as window coordinates are taken: tangents x/depth,

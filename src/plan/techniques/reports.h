@@ -61,7 +61,7 @@ struct VolumeStats {
     // Casters whose volume (the same triangles, Draw::triangles the same pointer) came from the
     // previous plan, and those extruded in this one; printed only when some were kept.
     int kept = 0, extruded = 0;
-    // Casters left out: they shadow no receiver in view (--light-fit shadows, shadow::shadows_any).
+    // Casters left out: they shadow no receiver in view (--light-fit shadows, shadow::ReceiverIndex::shadows_any).
     int culled = 0;
     // Casters whose fill came from the previous plan too (their volume kept and the camera still).
     int fill_kept = 0;

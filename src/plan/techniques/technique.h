@@ -72,7 +72,7 @@ struct PlanContext;
 shadow::TightFit fit_to_view(const PlanContext& c, bool soft);
 // One flag per PlanContext::casters entry: 0 where --light-fit shadows leaves that caster out of
 // every map, cascade, cube face and volume, as it can shadow no receiver the camera sees
-// (shadow::shadows_any); all 1 under the other fits.
+// (shadow::ReceiverIndex::shadows_any); all 1 under the other fits.
 std::vector<char> shadowing_casters(const PlanContext& c);
 
 // What a module sees of the frame being planned, and the helpers it adds with.
