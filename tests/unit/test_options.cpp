@@ -151,7 +151,8 @@ TEST(Options, BadValuesAreNamedAndLeaveTheOptionsAlone) {
         {"gooch-method", "disc", "--gooch-method: unknown value 'disc' (planes, texture)"},
         {"eye", "above", "--eye: unknown value 'above' (scene, in-shadow)"},
         {"colour", "red", "unknown option --colour"},
-        {"scene", "", "--scene: needs a value: teapot (the course scene) or FILE.gltf / FILE.glb"},
+        {"scene", "", "--scene: needs a value: teapot (the course scene), FILE.gltf / FILE.glb, or pile:N / forest:N "
+                      "(N pyramids; :spot or :sun for another light)"},
     };
     for (const auto& b : bad) {
         Options o;

@@ -89,13 +89,11 @@ Pass map_pass(const PlanContext& c, const std::vector<int>& casters, int& cut_ou
         p.draws.back().variant = depth_variant(s.encoding, c.depth_path, alpha);
         p.draws.back().cull = map_cull(s.map_faces, c.scene, p.draws.back());
     }
-    // Grouped by culling (stable: scene order within a group), so the pass changes it at most
-    // twice; the pass's own state is its first group's.
-    const auto by_cull = [](const Draw& a, const Draw& b) { return *a.cull < *b.cull; };
-    if (!std::is_sorted(p.draws.begin(), p.draws.end(), by_cull)) std::stable_sort(p.draws.begin(), p.draws.end(), by_cull);
-    p.state.cull = p.draws.empty() ? gl::Cull::None : *p.draws.front().cull;
-    for (Draw& dr : p.draws)
-        if (dr.cull == p.state.cull) dr.cull.reset();
+    // Grouped by culling, stably (one group is sorted already): at most two changes in the pass.
+    const auto by = [](const Draw& a, const Draw& b) { return *a.cull < *b.cull; };
+    if (!std::is_sorted(p.draws.begin(), p.draws.end(), by)) std::stable_sort(p.draws.begin(), p.draws.end(), by);
+    p.state.cull = p.draws.empty() ? gl::Cull::None : *p.draws.front().cull;  // the first group's
+    for (Draw& dr : p.draws) if (dr.cull == p.state.cull) dr.cull.reset();
     return p;
 }
 
