@@ -12,7 +12,6 @@ namespace {
 std::atomic<std::size_t> g_budget{kDefaultBudget};
 std::atomic<std::size_t> g_live{0};
 std::atomic<std::size_t> g_peak{0};
-std::atomic<bool> g_counted{false};
 thread_local const char* t_step = nullptr;
 
 // What a refusal reports, kept without allocating (the heap is at its budget when they are set).
@@ -33,16 +32,11 @@ void describe_into(std::size_t bytes, char* out, std::size_t size) {
     else std::snprintf(out, size, v < 10.0 ? "%.1f %s" : "%.0f %s", v, units[u]);
 }
 
-}  // namespace
-
-namespace {
-
 // Each thread keeps what it allocated and freed since its last flush and adds it to the shared
 // count once it passes 64 KiB either way: an atomic add on every allocation slowed every
 // allocating step. The shared count, and the peak, are so within 64 KiB a thread of the truth.
 constexpr std::ptrdiff_t kFlush = 64 << 10;
 thread_local std::ptrdiff_t t_pending = 0;
-thread_local bool t_counting = false;
 
 void flush() {
     const std::size_t live = g_live.fetch_add(static_cast<std::size_t>(t_pending), std::memory_order_relaxed) +
@@ -65,13 +59,6 @@ std::size_t peak() {
 void reset_peak() {
     flush();
     g_peak.store(g_live.load(std::memory_order_relaxed), std::memory_order_relaxed);
-}
-bool counted() { return g_counted.load(std::memory_order_relaxed); }
-
-std::string describe(std::size_t bytes) {
-    char b[32];
-    describe_into(bytes, b, sizeof b);
-    return b;
 }
 
 bool parse_size(const std::string& text, std::size_t& bytes) {
@@ -147,10 +134,6 @@ const char* OverBudget::what() const noexcept {
 }
 
 bool on_allocate(std::size_t bytes) {
-    if (!t_counting) {
-        t_counting = true;
-        g_counted.store(true, std::memory_order_relaxed);
-    }
     const std::size_t limit = budget();
     if (t_step && limit) {
         const std::size_t live = g_live.load(std::memory_order_relaxed) + static_cast<std::size_t>(t_pending) + bytes;

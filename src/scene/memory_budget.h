@@ -24,15 +24,12 @@ void set_budget(std::size_t bytes);
 bool budget_from_env(std::string& error);
 // "2G" (binary units: K, M, G, T, with or without "iB"), "1.5GiB", a byte count; false otherwise.
 bool parse_size(const std::string& text, std::size_t& bytes);
-// "2.0 GiB", "512 MiB", "900 KiB", "12 B".
-std::string describe(std::size_t bytes);
 
-// The heap the counting operator new holds now, the most it held since reset_peak(), and
-// whether anything counts.
+// The heap the counting operator new holds now, and the most it held since reset_peak() (0
+// where nothing counts).
 std::size_t in_use();
 std::size_t peak();
 void reset_peak();
-bool counted();
 
 // What the run is working on, for OverBudget's message: "pile:100000 (100,001 objects, 600,002
 // triangles)". Set where a scene is opened.

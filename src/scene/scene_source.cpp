@@ -8,7 +8,7 @@ namespace penumbra::scene {
 
 namespace {
 
-// "pile:100000 (100,001 objects, 600,002 triangles)": what the memory budget's refusal names.
+// "pile:100000: 100001 objects, 600002 triangles": what the memory budget's refusal names.
 std::string describe_size(const std::string& name, const Scene& s) {
     std::size_t triangles = 0;
     for (const Object& o : s.objects)

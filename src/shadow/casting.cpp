@@ -99,7 +99,7 @@ bool may_shadow(const scene::Bounds& caster, const std::vector<glm::vec3>& point
 
 std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& light,
                                                       const std::vector<scene::Bounds>& receivers,
-                                                      const glm::mat4& camera_view_proj, std::vector<char>* whole) {
+                                                      const glm::mat4& camera_view_proj, std::vector<char>& whole) {
     const std::array<HalfSpace, 6> camera = clip_volume_half_spaces(camera_view_proj);
     std::vector<HalfSpace> hs(camera.begin(), camera.end());
     // A spot light lights nothing outside its outer cone: the four planes through the light that
@@ -122,11 +122,11 @@ std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& ligh
     const ClipPlanes planes = clip_planes(hs);
     std::vector<std::vector<glm::vec3>> out;
     out.reserve(receivers.size());
-    if (whole) whole->assign(receivers.size(), 0);
+    whole.assign(receivers.size(), 0);
     for (size_t k = 0; k < receivers.size(); ++k) {
         bool all = false;
-        out.push_back(clip_box_by(receivers[k], planes, whole ? &all : nullptr));
-        if (whole) (*whole)[k] = all ? 1 : 0;
+        out.push_back(clip_box_by(receivers[k], planes, &all));
+        whole[k] = all ? 1 : 0;
     }
     return out;
 }
@@ -135,7 +135,7 @@ std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const 
                                                const glm::mat4& camera_view_proj) {
     std::vector<char> whole;
     std::vector<glm::vec3> out;
-    for (const std::vector<glm::vec3>& pts : visible_points_each(light, receivers, camera_view_proj, &whole))
+    for (const std::vector<glm::vec3>& pts : visible_points_each(light, receivers, camera_view_proj, whole))
         out.insert(out.end(), pts.begin(), pts.end());
     return out;
 }
@@ -143,7 +143,7 @@ std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const 
 std::vector<SeenReceiver> seen_receivers(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                          const glm::mat4& camera_view_proj, const CastingInfo& info) {
     std::vector<char> whole;
-    std::vector<std::vector<glm::vec3>> each = visible_points_each(light, receivers, camera_view_proj, &whole);
+    std::vector<std::vector<glm::vec3>> each = visible_points_each(light, receivers, camera_view_proj, whole);
     std::vector<SeenReceiver> seen;
     seen.reserve(each.size());
     for (size_t k = 0; k < each.size(); ++k)

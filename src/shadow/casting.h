@@ -69,5 +69,4 @@ struct CasterBox {
     bool convex = false;
 };
 
-
 }  // namespace penumbra::shadow

@@ -61,8 +61,8 @@ ClipPlanes clip_planes(const std::vector<HalfSpace>& half_spaces) {
     return out;
 }
 
-std::vector<glm::vec3> clip_box(const scene::Bounds& box, const std::vector<HalfSpace>& half_spaces, bool* whole) {
-    return clip_box_by(box, clip_planes(half_spaces), whole);
+std::vector<glm::vec3> clip_box(const scene::Bounds& box, const std::vector<HalfSpace>& half_spaces) {
+    return clip_box_by(box, clip_planes(half_spaces));
 }
 
 std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& planes, bool* whole) {
@@ -137,8 +137,8 @@ float cross2(const glm::vec2& o, const glm::vec2& a, const glm::vec2& b) {
     return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
-}  // namespace
-
+// The points not deeper inside the convex polygon (counter-clockwise) than `depth` from every
+// edge, by index: all of them where the polygon has under three corners.
 std::vector<std::size_t> near_boundary(const std::vector<glm::vec2>& points, const std::vector<glm::vec2>& polygon,
                                        float depth) {
     std::vector<std::size_t> out;
@@ -154,6 +154,8 @@ std::vector<std::size_t> near_boundary(const std::vector<glm::vec2>& points, con
     }
     return out;
 }
+
+}  // namespace
 
 // Akl and Toussaint's filter: the points deep inside the octagon of the extreme points along x, y,
 // x + y and x - y (hull vertices all) cannot be on the hull, so the sort below need not see them.

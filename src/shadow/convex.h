@@ -32,11 +32,7 @@ std::vector<glm::vec3> clip_polygon(const std::vector<glm::vec3>& poly, const Ha
 // half-spaces, and a polygon on each half-space's plane (wide enough to hold the box's section)
 // clipped by the box and the other half-spaces. Empty when they do not meet (or the box is empty);
 // a flat box gives the polygon it is. Points may repeat.
-// `whole` (when given) says whether the box lay inside every half-space, unclipped: then the result
-// is its eight corners (scene::corners), each once, instead of its six faces' 24 corners. The
-// two are the same set of points; only a sum over them (box_face_corners) tells them apart.
-std::vector<glm::vec3> clip_box(const scene::Bounds& box, const std::vector<HalfSpace>& half_spaces,
-                                bool* whole = nullptr);
+std::vector<glm::vec3> clip_box(const scene::Bounds& box, const std::vector<HalfSpace>& half_spaces);
 // The half-spaces as clip_box takes them, made unit once for many boxes: those that hold
 // everything dropped, `nothing` set where one holds nothing.
 struct ClipPlanes {
@@ -44,6 +40,10 @@ struct ClipPlanes {
     bool nothing = false;
 };
 ClipPlanes clip_planes(const std::vector<HalfSpace>& half_spaces);
+// clip_box by planes made already. `whole` (when given) says whether the box lay inside every
+// half-space, unclipped: then the result is its eight corners (scene::corners), each once, instead
+// of its six faces' 24 corners. The two are the same set of points; only a sum over them
+// (box_face_corners) tells them apart.
 std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& planes, bool* whole = nullptr);
 
 // The box's six faces, four corners each, in the order clip_box lists them for a box that nothing
@@ -76,18 +76,12 @@ std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> points);
 // A convex polygon clipped to the rectangle [lo, hi] (Sutherland-Hodgman).
 std::vector<glm::vec2> clip_to_rect(const std::vector<glm::vec2>& poly, const glm::vec2& lo, const glm::vec2& hi);
 
-// The points of `points` not deeper inside the convex polygon (counter-clockwise) than `depth`
-// from every edge, by index: all of them where the polygon has under three corners. What lies
-// deeper cannot be on the hull of the points the polygon's corners are taken from, nor on it
-// after a projective change of view that keeps them all in front (rounding cannot move a point by
-// a thousandth of the extent).
-std::vector<std::size_t> near_boundary(const std::vector<glm::vec2>& points, const std::vector<glm::vec2>& polygon,
-                                       float depth);
-
 // The points that may be on the hull, by index, in order: over 1,024 points, those not deeper
 // than a thousandth of the extent inside the octagon of the extreme points along x, y, x + y and
 // x - y (Akl and Toussaint); else all. convex_hull sorts only these; the hull of them is the
-// hull of all, to the bit.
+// hull of all, to the bit. A point that deep cannot reach the hull either after a projective
+// change of view that keeps every point in front (rounding cannot move it a thousandth of the
+// extent).
 std::vector<std::size_t> hull_candidates(const std::vector<glm::vec2>& points);
 
 // The area of a simple polygon (either orientation).

@@ -55,14 +55,14 @@ struct TightFit {
 // point at least once: a box in view whole gives its eight corners.
 std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                                const glm::mat4& camera_view_proj);
-// The same, one list per receiver (in the order of `receivers`). With `whole`, a box in view whole
-// gives its eight corners and a 1 there (clip_box); without, its six faces' 24 corners.
+// The same, one list per receiver (in the order of `receivers`); a box in view whole gives its
+// eight corners and a 1 in `whole` (clip_box_by).
 std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& light,
                                                       const std::vector<scene::Bounds>& receivers,
-                                                      const glm::mat4& camera_view_proj,
-                                                      std::vector<char>* whole = nullptr);
+                                                      const glm::mat4& camera_view_proj, std::vector<char>& whole);
 // Where the fits aim: the mean of the receivers' visible points, a box in view whole counted as
-// its six faces' 24 corners (what visible_points_each gives without `whole`, in that order).
+// its six faces' 24 corners (in clip_box's order, as the fits counted them before boxes were kept
+// whole: the aim, and so every plan, stays the same to the bit).
 glm::vec3 visible_centroid(const std::vector<SeenReceiver>& seen);
 
 // The light as a homogeneous point: (position, 1), or (direction towards it, 0); what shadow volumes

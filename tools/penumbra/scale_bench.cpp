@@ -57,7 +57,8 @@ void time_plans(const render::Renderer& r, const scene::Scene& s, const render::
         const auto t0 = Clock::now();
         const render::FramePlan plan = r.plan(s, settings, in);
         times.push_back(1000.0 * seconds_since(t0));
-        added = std::max(added, memory::peak() - std::min(memory::peak(), before));
+        const std::size_t top = memory::peak();
+        added = std::max(added, top - std::min(top, before));
         if (map_draws) {
             *map_draws = 0;
             for (const render::Pass& p : plan.passes)
