@@ -26,13 +26,17 @@ const TYPES = {
   '.wasm': 'application/wasm', '.png': 'image/png', '.json': 'application/json',
 };
 
-// Serves `root` on 127.0.0.1 at a free port. Returns {url, close()}.
-export async function serve(root) {
+// Serves `root` on 127.0.0.1 at a free port, and each folder of `routes` ([[prefix, folder], ...],
+// e.g. ['/three/', 'node_modules/three']) under its prefix. Returns {url, close()}.
+export async function serve(root, routes = []) {
   const server = createServer(async (req, res) => {
     try {
-      const rel = decodeURIComponent(new URL(req.url, 'http://x').pathname);
-      const file = path.join(root, path.normalize(rel === '/' ? '/index.html' : rel));
-      if (!file.startsWith(path.resolve(root))) throw new Error('outside the site');
+      let rel = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+      let base = root;
+      const route = routes.find(([prefix]) => rel.startsWith(prefix));
+      if (route) [base, rel] = [route[1], rel.slice(route[0].length - 1)];
+      const file = path.join(base, path.normalize(rel === '/' ? '/index.html' : rel));
+      if (!file.startsWith(path.resolve(base))) throw new Error('outside the site');
       const s = await stat(file);
       if (!s.isFile()) throw new Error('not a file');
       const body = await readFile(file);
@@ -183,13 +187,13 @@ export async function setOptions(page, options) {
   check(err === '', `setOption ${err}`);
 }
 
-// Runs `body` with a browser and the served site, closing both whatever happens; prints PASS or
-// the failure and sets the exit status.
-export async function runTest(name, body) {
+// Runs `body` with a browser and the served site (and `routes`, as serve's), closing both whatever
+// happens; prints PASS or the failure and sets the exit status.
+export async function runTest(name, body, routes = []) {
   const started = Date.now();
   let server, browser;
   try {
-    server = await serve(siteDir());
+    server = await serve(siteDir(), routes);
     browser = await launch();
     await body({ server, browser });
     console.log(`PASS ${name} (${((Date.now() - started) / 1000).toFixed(1)} s)`);
