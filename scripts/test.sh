@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The test command: builds with warnings as errors and runs every test ring (unit, GL on headless
 # EGL, shader validation, command line, the desktop app under Xvfb, the web pages in headless
-# Chromium), then the fuzz targets for 30 s each (clang, libFuzzer with ASan + UBSan: the glTF
+# Chromium), then the fuzz targets for 20 s each (clang, libFuzzer with ASan + UBSan: the glTF
 # loader, the option parser, the pages' URL query; docs/reliability.md), then the unit and GL tests
 # again under ASan + UBSan.
 # Set PENUMBRA_SKIP_FUZZ=1 to skip the fuzz runs, PENUMBRA_SKIP_ASAN=1 to skip the sanitizer pass.
@@ -20,7 +20,7 @@ cmake --preset web >/dev/null
 cmake --build --preset web
 ctest --preset ci
 if [ "${PENUMBRA_SKIP_FUZZ:-0}" != 1 ]; then
-  echo "== the fuzz targets, 30 s each (build-fuzz; scripts/fuzz.sh for long runs) =="
+  echo "== the fuzz targets, 20 s each (build-fuzz; scripts/fuzz.sh for long runs) =="
   cmake --preset fuzz >/dev/null
   cmake --build --preset fuzz
   ctest --preset fuzz

@@ -14,7 +14,7 @@ export const MAP = 1024;
 // are given (the sheet's bias, both faces, the tight frustum three.js is fitted to as well), to
 // check pixel by pixel that both renderers see the same map.
 const BEFORE = { bias: 'sheet', 'map-faces': 'both', 'light-fit': 'scene', 'pcf-kernel': 'full' };
-export const OURS = [
+export let OURS = [
   { id: 'rgba-hard', label: 'rgba hard, defaults', encoding: 'rgba', filter: 'hard', map: 1024 },
   { id: 'rgba-hard-512', label: 'rgba hard, defaults, map 512', encoding: 'rgba', filter: 'hard', map: 512 },
   { id: 'rgba-hard-2048', label: 'rgba hard, defaults, map 2048', encoding: 'rgba', filter: 'hard', map: 2048 },
@@ -49,6 +49,14 @@ export const OUR_BIAS = 0.0015;
 // back faces into the map: shadowSide = the opposite of the material's side), and matched (the
 // sheet's bias, both faces into the map). Both are given penumbra's tight light frustum
 // (tests/threejs/compare.js fits it as src/shadow/light_frustum.cpp does).
+// What --quick renders of penumbra's rows (web.threejs): those the checks and ratios read (the
+// defaults, their depthtex twins, the row matched to three.js's), not the doc's other sizes and
+// befores.
+const QUICK = ['rgba-hard', 'rgba-pcf4x4', 'depthtex-hard', 'depthtex-pcf4x4', 'depthtex-hard-matched'];
+export function quickRows() {
+  OURS = OURS.filter((c) => QUICK.includes(c.id));
+}
+
 export const THREE_CONFIGS = [
   { id: 'three-basic-default', label: 'three.js BasicShadowMap, defaults', type: 'basic', bias: 0, shadowSide: 'default', vs: 'rgba-hard' },
   { id: 'three-basic-matched', label: 'three.js BasicShadowMap, matched', type: 'basic', bias: -OUR_BIAS, shadowSide: 'double', vs: 'rgba-hard' },

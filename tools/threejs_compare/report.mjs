@@ -83,7 +83,7 @@ against the same Embree ground truth with the same metric code (\`penumbra truth
 
 \`\`\`sh
 node tools/threejs_compare.mjs            # about ${Math.max(1, Math.round(env.seconds / 60))} min; prints the table, writes this file and out/threejs/
-node tools/threejs_compare.mjs --quick --check --no-doc   # what the web.threejs test runs (t = 0.6, 5 frames)
+node tools/threejs_compare.mjs --quick --check --no-doc   # what the web.threejs test runs (t = 0.6, 5 frames, the default rows)
 \`\`\`
 
 It builds nothing: it uses \`build/penumbra\` (export, truth, render), \`build-web/site\` (the W09P2c
