@@ -16,8 +16,9 @@
 // the shadow map reused, as on the page). One frame after each control a step changes (as the
 // page's loop would draw between two clicks), then the rest of the step's 50.
 //
-//   node tests/web/soak.mjs [--frames N (default 1200: two cycles)] [--canvas PX (default: the
-//        page's 512)] [--minutes M (stop after the last whole cycle that fits)] [--out FILE.json]
+//   node tests/web/soak.mjs [--frames N (default 1200: two cycles)] [--per-change N (default 50)]
+//        [--canvas PX (default: the page's 512)] [--minutes M (stop after the last whole cycle that
+//        fits)] [--out FILE.json]
 // The full soak: --frames 20000. The figures are printed as a table and written as JSON to --out
 // (default build/test-output/web/soak.json).
 import { mkdirSync, writeFileSync } from 'node:fs';
@@ -34,13 +35,14 @@ const FRAMES = Number(arg('--frames', '1200'));
 const CANVAS = Number(arg('--canvas', '0')); // 0: the page's own size (512)
 const MINUTES = Number(arg('--minutes', '0')); // >0: stop after the last whole cycle that fits
 const OUT = path.resolve(arg('--out', path.join(path.dirname(new URL(import.meta.url).pathname), '../../build/test-output/web/soak.json')));
-const PER_CHANGE = 50;
+const PER_CHANGE = Number(arg('--per-change', '50'));
 // Malloc's bytes in use differ by a few strings' capacity between two samples (the state JSON and
 // the plan text the module keeps for the page, which carry timings): trial runs swung by up to
 // 2.9 KB after the first cycle. The bound is about 5 times that; a leak of 1 byte a frame over the
 // full soak (19,400 frames after the first cycle) or of 50 bytes a settings change exceeds it.
 const HEAP_BOUND = 16 * 1024;
 check(Number.isInteger(FRAMES) && FRAMES > 0, `--frames ${FRAMES}`);
+check(Number.isInteger(PER_CHANGE) && PER_CHANGE > 0, `--per-change ${PER_CHANGE}`);
 
 // The cycle: each step the whole state of the controls; a step touches only the controls whose value
 // changes. encoding, filter, precision: all 12 combinations; bias auto / sheet / two fixed values
