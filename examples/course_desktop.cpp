@@ -23,6 +23,7 @@
 //   "W09P2c | light=on jump=on encoding=rgba filter=hard ... | 2.10 ms/frame"
 // It changes at the frame after a key changes a control; the ms every half second.
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -145,8 +146,11 @@ Args parse_args(int argc, char** argv) {
             continue;
         }
         if (arg.rfind("--", 0) != 0) usage_error("unexpected argument '" + arg + "'");
-        if (i + 1 >= argc) usage_error(arg + ": needs a value");
+        if (i + 1 >= argc) usage_error(arg + ": needs a value (it is the last argument)");
         const std::string name = arg.substr(2), value = argv[++i];
+        // "--scene --time 0.5": the value missing is --scene's ("-0.5" is a value).
+        if (value.size() > 2 && value[0] == '-' && value[1] == '-' && std::isalpha(static_cast<unsigned char>(value[2])))
+            usage_error(arg + ": needs a value (got the option " + value + " instead)");
         if (name == "exercise") {
             if (!examples::find_exercise(value))
                 usage_error("--exercise: unknown value '" + value + "' (" + examples::exercise_names() + ")");

@@ -225,6 +225,7 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
                 if (flies(x)) flying += (flying.empty() ? "" : ", ") + std::string(x.name);
             return "camera: only the exercises with a scene of their own (" + flying + ") fly their camera";
         }
+        if (value.empty()) return "camera: needs a value: X,Y,Z,YAW,PITCH (metres, degrees)";
         return o->fly.set(value);
     }
     if (set_by_the_exercise(*exercise_, name))

@@ -81,6 +81,41 @@ expect 2 "outline colour form"    "--outline-color: expected six hex digits" ren
 expect 2 "plan frames too many"  "--frames: must lie in [1, 10000]" plan --frames 100000
 expect 2 "gallery time nan"      "--time: must be a finite number" gallery --out-dir newdir --time nan
 
+# An option without its value is named, not the word after it (CLI11 said "The following argument
+# was not expected: 0.5"); a negative number is a value, not an option (the control).
+expect 2 "scene without value"   "penumbra: error: --scene: needs a value (got the option --time instead)" render --scene --time 0.5
+expect 2 "time without value"    "--time: needs a value (it is the last argument)" render --time
+expect 2 "time= empty"           "--time: needs a value (nothing after its '=')" render --time=
+expect 2 "encoding '' empty"     "--encoding: needs a value: r8, rgba, depthtex" render --encoding ''
+expect 2 "grade out"             "--out: needs a value (got the option --size instead)" grade "$data" --out --size 64x48
+expect 2 "negative is a value"   "--bias: must lie in [0, 1], got '-0.5'" render --bias -0.5
+expect 2 "negative time"         "--frames: must lie in [1, 10000]" render --time -0.5 --frames 0
+# Every option that takes a value, of every subcommand (as each --help lists them: a name and a
+# type), named when it is the last word and when another option follows it: exactly that one line,
+# exit status 2, and the folder as it was (checked once around the loop: expect's per-case look
+# at the folder made this loop alone take minutes).
+subcommands=$("$penumbra" --help | awk '/^Subcommands:/ { on = 1; next } on && /^  [a-z]/ { print $1 }')
+valued=0 loop_bad=0
+before=$(find . | LC_ALL=C sort)
+for sub in $subcommands; do
+  for opt in $("$penumbra" "$sub" --help | sed -n 's/^  \(-[a-zA-Z],\)\{0,1\}\(--[a-z0-9-]*\) [A-Z][A-Z_:]*\( .*\)\{0,1\}$/\2/p'); do
+    for next in "" --scene; do
+      want="penumbra: error: $opt: needs a value (got the option --scene instead) (see penumbra --help)"
+      [ -z "$next" ] && want="penumbra: error: $opt: needs a value (it is the last argument) (see penumbra --help)"
+      err=$("$penumbra" "$sub" "$opt" $next 2>&1 >/dev/null); rc=$?
+      if [ "$rc" -ne 2 ] || [ "$err" != "$want" ]; then
+        echo "FAIL $sub $opt $next: rc=$rc stderr: $err"; loop_bad=$((loop_bad + 1))
+      fi
+    done
+    valued=$((valued + 1))
+  done
+done
+[ "$before" = "$(find . | LC_ALL=C sort)" ] || { echo "FAIL the options without values changed the folder"; loop_bad=$((loop_bad + 1)); }
+# The control of the loop: it found the commands and their options (render's alone take 40).
+if [ "$loop_bad" -eq 0 ] && [ "$valued" -ge 100 ] && grep -qw grade <<<"$subcommands"; then pass=$((pass + 1))
+else echo "FAIL the options that take a value: $loop_bad failed, $valued found in: $subcommands"; fail=$((fail + 1)); fi
+echo "options that take a value, each without it: $valued"
+
 # A folder that does not exist: named, nothing written (not the folder either).
 expect 2 "missing folder"        "folder nowhere does not exist" render --out nowhere/out.png
 # Unwritable outputs are bad input too (2), with the system's reason, found before any rendering.

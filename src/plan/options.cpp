@@ -178,6 +178,8 @@ std::string check_value(const OptionInfo& o, std::string_view value) {
             if (c.value == value) return true;
         return false;
     };
+    // No value at all (`--time ''`, a page's `?time=`): the option named, and what it takes.
+    if (value.empty() && !o.may_be_empty) return opt + "needs a value: " + accepted_values(o);
     switch (o.type) {
         case OptionType::Choice:
             if (o.list && !o.choices.empty() && value != o.choices.front().value) {
@@ -226,7 +228,6 @@ std::string check_value(const OptionInfo& o, std::string_view value) {
             return {};
         }
         case OptionType::Text:
-            if (value.empty() && !o.may_be_empty) return opt + "needs a value: " + std::string(o.help);
             if (o.form)
                 if (std::string why = o.form(value); !why.empty()) return opt + why + ", got " + quoted;
             return {};

@@ -48,6 +48,12 @@ for _ in $(seq 1 100); do grep -q "live.glsl reloaded: compiled" "$out/live.log"
 pkill -TERM -P "$pid" 2> /dev/null; kill "$pid" 2> /dev/null; wait "$pid" 2> /dev/null
 if grep -q "live.glsl reloaded: compiled" "$out/live.log"; then echo "ok live: reloaded"
 else echo "FAIL live: not reloaded: $(cat "$out/live.log" "$out/live.err" | tail -5)"; fail=1; fi
+# An option without its value is named, not the option after it (a negative number is a value).
+err=$(env -u DISPLAY "$app" --exercise w09p2c --time --frames 3 2>&1 > /dev/null); rc=$?
+if [ $rc -eq 2 ] && [ "$err" = "penumbra-desktop: error: --time: needs a value (got the option --frames instead) (see penumbra-desktop --help)" ]
+then echo "ok --time --frames 3: $err"; else echo "FAIL --time --frames 3: exit $rc: $err"; fail=1; fi
+err=$(env -u DISPLAY "$app" --exercise w09p2c --time -0.5 --frames 0 2>&1 > /dev/null)
+case "$err" in *"--frames: must lie"*) echo "ok --time -0.5 is a value: $err";; *) echo "FAIL --time -0.5: $err"; fail=1;; esac
 # Bad input: one line, exit status 2, no window needed.
 for args in "--snippets $out/missing.glsl" "--exercise volumes --snippets $data/answer.glsl"; do
   err=$(env -u DISPLAY "$app" $args 2>&1 > /dev/null); rc=$?

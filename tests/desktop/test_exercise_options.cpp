@@ -120,6 +120,22 @@ TEST(ExerciseOptions, BadValuesChangeNothing) {
     EXPECT_EQ(a.set_option("encoding", "r16").rfind("encoding: ", 0), 0u) << "no leading -- in a URL's message";
 }
 
+// A URL's key without its value (`?encoding=`, `?light`) is named with what it takes, for the
+// table's options, the page's toggles, the clock and the camera; nothing changes.
+TEST(ExerciseOptions, AKeyWithoutItsValueIsNamed) {
+    CourseApp a("w09p2c");
+    const std::string before = a.query();
+    for (const char* name : {"encoding", "filter", "bias", "map-size", "light", "jump", "time", "eye", "aov"}) {
+        const std::string err = a.set_option(name, "");
+        EXPECT_EQ(err.rfind(std::string(name) + ": needs a value: ", 0), 0u) << err;
+    }
+    EXPECT_EQ(a.query(), before);
+    CourseApp flying("cascades");
+    EXPECT_EQ(flying.set_option("camera", ""), "camera: needs a value: X,Y,Z,YAW,PITCH (metres, degrees)");
+    // The control: a bad value is not called a missing one.
+    EXPECT_EQ(a.set_option("encoding", "r16").find("needs a value"), std::string::npos);
+}
+
 // The eye is a job option the exercises take (like time): shown on the volumes page, kept in the
 // URL of the others once moved into the shadow, refused when misspelt.
 TEST(ExerciseOptions, TheEyeMovesIntoTheShadowAndIsKept) {

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "plan/options.h"
 #include "query.h"
 #include "scene/printable.h"
 
@@ -106,4 +107,38 @@ TEST(Query, EncodedComponentsReadBackTheSame) {
         ASSERT_EQ(p.size(), 1u) << v;
         EXPECT_EQ(p[0].value, v);
     }
+}
+
+// A key without its value (`?scene=&time=0.5`, `?scene`) is named, with what it takes, by the
+// option table (render::check_value); the pairs after it are still read as their own.
+TEST(Query, AKeyWithoutItsValueIsNamed) {
+    penumbra::render::Options o;
+    const auto set = [&](std::string_view n, std::string_view v) { return penumbra::render::parse_option(o, n, v); };
+    auto notes = apply_query("?scene=&time=0.5", set);
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0].rfind("--scene: needs a value: teapot (the course scene)", 0), 0u) << notes[0];
+    EXPECT_EQ(o.job.time, 0.5);
+    for (const char* q : {"?time&encoding=", "time=&encoding"}) {
+        notes = apply_query(q, set);
+        ASSERT_EQ(notes.size(), 2u) << q;
+        EXPECT_EQ(notes[0], "--time: needs a value: a number in [-1000000, 1000000]") << q;
+        EXPECT_EQ(notes[1], "--encoding: needs a value: r8, rgba, depthtex") << q;
+    }
+    // Every option of the table that takes a value says so by name; "out" alone may be empty.
+    for (const auto& opt : penumbra::render::option_table()) {
+        const std::string name(opt.info.name);
+        notes = apply_query(name + "=", set);
+        if (opt.info.may_be_empty) {
+            EXPECT_TRUE(notes.empty()) << name;
+            continue;
+        }
+        ASSERT_EQ(notes.size(), 1u) << name;
+        EXPECT_EQ(notes[0].rfind("--" + name + ": needs a value: ", 0), 0u) << notes[0];
+    }
+    // The control: with values, no note; a bad value is not called a missing one.
+    EXPECT_TRUE(apply_query("?scene=teapot&time=0.25", set).empty());
+    EXPECT_EQ(o.job.time, 0.25);
+    notes = apply_query("?time=soon", set);
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0].find("needs a value"), std::string::npos) << notes[0];
 }

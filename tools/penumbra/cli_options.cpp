@@ -1,6 +1,7 @@
 #include "cli_options.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -54,6 +55,58 @@ void add_allow_outside(CLI::App* cmd, std::vector<std::string>& paths) {
                     "the scene's files (buffers, images) may also be read under this folder; repeatable "
                     "(default: only under the scene file's own folder)")
         ->type_name("PATH");
+}
+
+namespace {
+
+bool option_word(std::string_view a) {
+    const auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
+    if (a.size() < 2 || a[0] != '-') return false;
+    if (a[1] == '-') return a.size() > 2 && letter(a[2]);  // "--" alone ends the options
+    return letter(a[1]);
+}
+
+// The option `word` names on `cmd` or a command above it (nullptr: none).
+const CLI::Option* find_option(const CLI::App* cmd, const std::string& word) {
+    for (; cmd; cmd = cmd->get_parent())
+        if (const CLI::Option* o = cmd->get_option_no_throw(word)) return o;
+    return nullptr;
+}
+
+}  // namespace
+
+std::string missing_value(const CLI::App& app, int argc, const char* const* argv) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view a = argv[i];
+        if (a == "-h" || a == "--help" || a == "--help-all") return {};  // CLI11 prints the help
+    }
+    const CLI::App* cmd = &app;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--") break;
+        if (!option_word(a)) {
+            // A subcommand's name: its options from here on. Any other word is a value.
+            for (const CLI::App* sub : cmd->get_subcommands([](const CLI::App*) { return true; }))
+                if (sub->check_name(a)) {
+                    cmd = sub;
+                    break;
+                }
+            continue;
+        }
+        if (const size_t eq = a.find('='); eq != std::string::npos) {  // --name=value
+            const CLI::Option* o = find_option(cmd, a.substr(0, eq));
+            if (o && o->get_items_expected_min() > 0 && eq + 1 == a.size())
+                return a.substr(0, eq) + ": needs a value (nothing after its '=')";
+            continue;
+        }
+        const CLI::Option* o = find_option(cmd, a);
+        if (!o || o->get_items_expected_min() == 0) continue;  // unknown (CLI11 says so), or a flag
+        if (i + 1 >= argc) return a + ": needs a value (it is the last argument)";
+        if (option_word(argv[i + 1]))
+            return a + ": needs a value (got the option " + scene::printable(argv[i + 1]) + " instead)";
+        ++i;  // its value
+    }
+    return {};
 }
 
 namespace {

@@ -57,6 +57,15 @@ void prepare_output_dir(const std::string& option, const std::string& dir);
 // through measure::write_png / scene::write_gltf, which use the same writer.
 void write_output(const std::string& path, std::string_view bytes);
 
+// The first option of `argv` (the command line `app` parses) that takes a value and is given none:
+// it is the last argument, or the next is another option ("--scene --time 0.5": "--scene: needs a
+// value (got the option --time instead)"), or it is "--name=" with nothing after the '='. CLI11
+// would blame the next word instead ("The following
+// argument was not expected: 0.5"). Looked up in the subcommand the words name, for every option
+// that takes a value (the table's and each command's own); "" when each has one, or where a word
+// asks for help. An option-like next word is "--" and a letter, or "-" and a letter: "-0.5" is a value.
+std::string missing_value(const CLI::App& app, int argc, const char* const* argv);
+
 // A message as one line of valid UTF-8: control characters and bytes that are not UTF-8 escaped
 // (\n, \xNN), the rest (backslashes too) left as it is: the last guard before stderr, after the
 // names in it went through scene::printable.

@@ -362,6 +362,12 @@ int run(int argc, char** argv) {
         return 2;
     }
 
+    // An option without its value is named, where CLI11 would blame the word after it.
+    if (const std::string missing = tools::missing_value(app, argc, argv); !missing.empty()) {
+        std::fprintf(stderr, "penumbra: error: %s (see penumbra --help)\n", tools::one_line(missing).c_str());
+        return 2;
+    }
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
