@@ -37,6 +37,7 @@
 #include "file_watch.h"
 #include "gl/check.h"
 #include "platform/platform.h"
+#include "render/lab.h"
 #include "measure/image_io.h"
 #include "scene/memory_budget.h"
 
@@ -210,8 +211,10 @@ void load_snippets(examples::CourseApp& app, const std::string& path, const char
     for (const auto& p : problems)
         std::fprintf(stderr, "penumbra-desktop: snippets: %s%s: %s\n", path.c_str(),
                      p.line > 0 ? (":" + std::to_string(p.line)).c_str() : "", p.message.c_str());
+    // A file that writes none of the functions draws the sheet's answer: said, never a match (render/lab.h).
+    const std::string none = render::lab_no_function(text);
     if (problems.empty())
-        std::printf("snippets: %s %s\n", path.c_str(), what);
+        std::printf("snippets: %s %s%s%s\n", path.c_str(), what, none.empty() ? "" : ". ", none.c_str());
     else
         std::printf("snippets: %s does not compile; drawing with %s\n", path.c_str(),
                     app.snippets().empty() ? "the sheet's answer" : "the last good functions");

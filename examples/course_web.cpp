@@ -344,7 +344,8 @@ const char* penumbra_lab_mistakes() {
     return hand(j + "]");
 }
 // The verdict on `text` with the scene at time t (the clocks do not move) at width x height: JSON
-// with compiles, problems, width, height, differingPct, mistake and hint; the three visibility
+// with compiles, problems, width, height, differingPct, mistake, matchPct, verdict (error,
+// no-function, matches, mistake, differs), functions, matches and hint; the three visibility
 // images (RGBA8, top row first) from penumbra_lab_image.
 const char* penumbra_lab_check(const char* text, int width, int height, double t) {
     if (!g || !g->app || !g->app->has_gl() || g->lost) return hand("{\"compiles\":false,\"problems\":[{\"line\":0,\"message\":\"no WebGL context\"}]}");
@@ -364,7 +365,10 @@ const char* penumbra_lab_check(const char* text, int width, int height, double t
     j += ",\"differingPct\":" + json_number(v.differing_pct) + ",\"mistake\":" + json_quote(v.mistake);
     // The share of differing pixels up to which a frame still matches the sheet's answer's (render/lab.h).
     j += ",\"matchPct\":" + json_number(render::kLabMatchPct);
-    j += ",\"matches\":" + json_bool(v.compiles && v.differing_pct <= render::kLabMatchPct);
+    // The verdict as render::lab_verdict decides it (a file writing none of the functions is no match).
+    j += ",\"verdict\":" + json_quote(std::string(render::lab_outcome_name(v.outcome)));
+    j += ",\"functions\":" + json_quote(render::snippet_names(v.defines));
+    j += ",\"matches\":" + json_bool(v.matches());
     j += ",\"hint\":" + json_quote(v.hint) + "}";
     return hand(j);
 }

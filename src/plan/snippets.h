@@ -54,6 +54,16 @@ struct SnippetScan {
     bool defines_fn(SnippetFn f) const;
 };
 SnippetScan scan_snippets(std::string_view text);
+// The functions, space-separated in kAllSnippetFns order ("packDepth unpackDepth"; "" for none):
+// `penumbra grade`'s functions column.
+std::string snippet_names(const std::vector<SnippetFn>& fns);
+
+// `text` with only `f` of the contract's functions: every other contract function it defines is
+// renamed out of the contract (its name and each call of it, outside comments, get the suffix
+// "_notChecked"), so snippet_block takes the sheet's answer for them. A call of one of them from
+// `f` still calls the student's own, renamed. `text` must have passed scan_snippets; the result
+// passes it too unless the file already names something `NAME_notChecked`.
+std::string snippet_only(std::string_view text, SnippetFn f);
 
 // The sheet's answer (02561 W09, "Drawing depth" and "Shadow mapping in the fragment shader") as a
 // snippets file: for Encoding::R8 the depth in the red channel, read back from red; for RGBA the
@@ -80,7 +90,8 @@ std::vector<SnippetProblem> snippet_log_problems(std::string_view log);
 // page and `penumbra grade` render them beside a student's frame and give the hint of the one the
 // student's frame matches.
 struct SnippetMistake {
-    std::string name;  // "no-bias", "8-bit-threshold", "red-only", "detached", "no-texmapscale"
+    std::string name;  // "no-bias", "wrong-way", "bias-wrong-side", "8-bit-threshold", "red-only",
+                       // "unpack-reversed", "detached", "no-texmapscale"
     std::string hint;  // one or two sentences for the student
     std::string text;  // the snippets file that makes it
 };

@@ -127,18 +127,43 @@ LabReference lab_reference(Renderer& r, const scene::Scene& scene, const Setting
     return ref;
 }
 
-void lab_verdict(LabVerdict& v, const LabReference& ref, std::vector<std::uint8_t> student) {
+std::string_view lab_outcome_name(LabOutcome o) {
+    switch (o) {
+        case LabOutcome::Error: return "error";
+        case LabOutcome::NoFunction: return "no-function";
+        case LabOutcome::Matches: return "matches";
+        case LabOutcome::Mistake: return "mistake";
+        case LabOutcome::Differs: return "differs";
+    }
+    return "";
+}
+
+std::string lab_no_function(std::string_view text) {
+    const SnippetScan scan = scan_snippets(text);
+    return scan.problems.empty() && scan.defines.empty() ? std::string(kLabNoFunctionHint) : std::string();
+}
+
+void lab_verdict(LabVerdict& v, const LabReference& ref, std::string_view text, std::vector<std::uint8_t> student) {
+    v.defines = scan_snippets(text).defines;
     v.student = std::move(student);
     v.reference = ref.answer;
     v.differing_pct = differing_pct(v.student, v.reference);
     v.difference = difference(v.student, v.reference);
     v.mistake.clear();
     v.hint.clear();
+    // Before any comparison: a file that writes none of the functions draws the answer's frame.
+    if (const std::string none = lab_no_function(text); !none.empty()) {
+        v.outcome = LabOutcome::NoFunction;
+        v.hint = none;
+        return;
+    }
     if (v.differing_pct <= kLabMatchPct) {
+        v.outcome = LabOutcome::Matches;
         v.hint = v.differing_pct == 0 ? "Matches the sheet's answer: every pixel is the same."
                                       : "Matches the sheet's answer (the few pixels that differ are rounding).";
         return;
     }
+    v.outcome = LabOutcome::Differs;
     double best = 101;
     for (size_t i = 0; i < ref.mistakes.size() && i < ref.frames.size(); ++i) {
         // A mistake that these frames do not show (the offsets under the hard filter) tells nothing.
@@ -148,6 +173,7 @@ void lab_verdict(LabVerdict& v, const LabReference& ref, std::vector<std::uint8_
             best = d;
             v.mistake = ref.mistakes[i].name;
             v.hint = ref.mistakes[i].hint;
+            v.outcome = LabOutcome::Mistake;
         }
     }
     if (v.mistake.empty())
@@ -161,10 +187,13 @@ LabVerdict lab_check(Renderer& r, const scene::Scene& scene, const Settings& s, 
     v.width = in.output.width;
     v.height = in.output.height;
     v.problems = set_snippets(r, scene, s, text, in);
-    if (!v.problems.empty()) return v;
+    if (!v.problems.empty()) {
+        v.defines = scan_snippets(text).defines;  // none where the scan refused it
+        return v;
+    }
     v.compiles = true;
     const LabReference ref = lab_reference(r, scene, s, in);
-    lab_verdict(v, ref, lab_frame(r, scene, s, in, std::string(text)));
+    lab_verdict(v, ref, text, lab_frame(r, scene, s, in, std::string(text)));
     return v;
 }
 

@@ -36,15 +36,37 @@ inline constexpr double kLabMatchPct = 0.1;
 std::vector<SnippetProblem> set_snippets(Renderer& r, const scene::Scene& scene, const Settings& s,
                                          std::string_view text, const FrameInputs& in = {});
 
+// What a verdict says, decided in lab_verdict alone so that grade's CSV and report, the page's
+// panel and the desktop app say the same:
+// - Error: refused by the scan, or not compiled (LabVerdict::problems say why);
+// - NoFunction: the file defines none of the four functions (empty, comments only, or only helpers of
+//   its own). It is never a match: the functions a file leaves out are the sheet's answer's, so its
+//   frame is the answer's own whatever it holds;
+// - Matches: the sheet's answer's frame, up to kLabMatchPct of the pixels;
+// - Mistake: a classic mistake's frame (LabVerdict::mistake names it);
+// - Differs: neither.
+enum class LabOutcome { Error, NoFunction, Matches, Mistake, Differs };
+// "error", "no-function", "matches", "mistake", "differs": grade's verdict column, the page's JSON.
+std::string_view lab_outcome_name(LabOutcome o);
+// The verdict's sentence for a file that defines none of the functions; lab_no_function(text) is
+// it for such a text (that passes the scan), "" for any other: the desktop app says it on loading.
+inline constexpr std::string_view kLabNoFunctionHint =
+    "No function of the sheet written: the file defines none of packDepth, unpackDepth, shadowTest and "
+    "offset_lookup, so the frame is the sheet's answer's own. Write at least one of them.";
+std::string lab_no_function(std::string_view text);
+
 // One lab verdict on the frame of `scene` (at its time), `s` (lab_settings(s) with
 // Aov::Visibility) and `in` (its size: in.output).
 struct LabVerdict {
     bool compiles = false;
     std::vector<SnippetProblem> problems;  // why it does not compile (or is refused)
+    std::vector<SnippetFn> defines;        // the contract's functions the file defines
+    LabOutcome outcome = LabOutcome::Error;
     int width = 0, height = 0;
     double differing_pct = 0;  // pixels whose visibility differs from the sheet's answer's, % of all
     std::string mistake;       // the classic mistake whose frame the student's matches ("" none)
-    std::string hint;          // its hint, or a word on the match
+    std::string hint;          // its hint, or a word on the match (kLabNoFunctionHint for NoFunction)
+    bool matches() const { return outcome == LabOutcome::Matches; }
     // Visibility images, RGBA8 top row first: the student's, the sheet's answer's, and the
     // difference (red: the student's darker, green: lighter, grey: the same).
     std::vector<std::uint8_t> student, reference, difference;
@@ -68,7 +90,8 @@ struct LabReference {
     void append(const LabReference& o);
 };
 LabReference lab_reference(Renderer& r, const scene::Scene& scene, const Settings& s, const FrameInputs& in);
-// compiles, problems, width and height are the caller's; this fills the rest.
-void lab_verdict(LabVerdict& v, const LabReference& ref, std::vector<std::uint8_t> student);
+// compiles, problems, width and height are the caller's; this fills the rest from `text` (the
+// snippets the student's frames were drawn with: which functions it defines) and those frames.
+void lab_verdict(LabVerdict& v, const LabReference& ref, std::string_view text, std::vector<std::uint8_t> student);
 
 }  // namespace penumbra::render

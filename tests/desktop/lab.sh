@@ -2,7 +2,8 @@
 # desktop.lab: penumbra-desktop --snippets FILE on W09P2c. The sheet's answer written out draws the
 # frame of the sheet's answer (the app's lab with no file of its own); a file that does not compile
 # is printed at its line and the window keeps drawing (with the sheet's answer, the last good
-# functions); a saved change is read again while the window runs. Bad input is exit status 2.
+# functions); a file with none of the functions is said to be no match; a saved change is read again
+# while the window runs. Bad input is exit status 2.
 # usage: lab.sh PENUMBRA_DESKTOP OUT_DIR
 set -uo pipefail
 app=$1 out=$2/lab
@@ -17,6 +18,12 @@ run() {  # run NAME ARGS...: 5 frames at t = 0.6, the visibility view, a screens
 run answer --snippets "$data/answer.glsl" || { echo "FAIL answer: $(cat "$out/answer.err")"; fail=1; }
 grep -q "snippets: .*answer.glsl compiled" "$out/answer.log" && echo "ok answer: compiled" ||
   { echo "FAIL answer: not said compiled: $(cat "$out/answer.log")"; fail=1; }
+# A file that writes none of the functions draws the sheet's answer and is said to be no match; the
+# control: the answer's own file is not.
+run empty --snippets "$data/comment_only.glsl" || { echo "FAIL empty: $(cat "$out/empty.err")"; fail=1; }
+if grep -q "snippets: .*comment_only.glsl compiled. No function of the sheet written" "$out/empty.log" &&
+   ! grep -q "No function" "$out/answer.log"; then echo "ok comment only: no function of the sheet written"
+else echo "FAIL comment only: not said: $(cat "$out/empty.log")"; fail=1; fi
 run broken --snippets "$data/broken.glsl" || { echo "FAIL broken: exit non-zero: $(cat "$out/broken.err")"; fail=1; }
 if grep -q "snippets: .*broken.glsl:[45]: " "$out/broken.err" || grep -q "snippets: .*broken.glsl: " "$out/broken.err"; then
   echo "ok broken: $(head -1 "$out/broken.err")"

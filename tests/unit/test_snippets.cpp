@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "plan/snippets.h"
 #include "shadow/encoding.h"
@@ -42,14 +43,64 @@ TEST(Snippets, TheSheetsAnswerAndTheSkeletonDefineAllFourFunctions) {
 TEST(Snippets, EachMistakeIsOneFunctionThatPassesTheScan) {
     const auto rgba = render::snippet_mistakes(shadow::Encoding::RGBA);
     const auto r8 = render::snippet_mistakes(shadow::Encoding::R8);
-    EXPECT_EQ(rgba.size(), 5u);
-    EXPECT_EQ(r8.size(), 3u);  // no bit-shift packing to get wrong
+    EXPECT_EQ(rgba.size(), 8u);
+    EXPECT_EQ(r8.size(), 5u);  // no bit-shift packing to get wrong
     for (const auto& m : rgba) {
         const auto scan = scan_snippets(m.text);
         EXPECT_TRUE(scan.problems.empty()) << m.name;
         EXPECT_EQ(scan.defines.size(), 1u) << m.name;
         EXPECT_FALSE(m.hint.empty());
+        // Each name once: a verdict names one.
+        int same = 0;
+        for (const auto& o : rgba) same += o.name == m.name;
+        EXPECT_EQ(same, 1) << m.name;
     }
+    std::vector<std::string> names;
+    for (const auto& m : rgba) names.push_back(m.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"no-bias", "wrong-way", "bias-wrong-side", "8-bit-threshold", "red-only",
+                                               "unpack-reversed", "detached", "no-texmapscale"}));
+    names.clear();
+    for (const auto& m : r8) names.push_back(m.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"no-bias", "wrong-way", "bias-wrong-side", "detached", "no-texmapscale"}));
+}
+
+TEST(Snippets, NamesTheFunctionsAFileDefinesInTheContractsOrder) {
+    EXPECT_EQ(render::snippet_names({}), "");
+    EXPECT_EQ(render::snippet_names({SnippetFn::ShadowTest, SnippetFn::PackDepth}), "packDepth shadowTest");
+    EXPECT_EQ(render::snippet_names(scan_snippets(render::sheet_answer(shadow::Encoding::RGBA)).defines),
+              "packDepth unpackDepth shadowTest offset_lookup");
+    // What defines none: nothing, comments (a function in one too), a helper of its own.
+    for (const char* none : {"", "// vec4 packDepth(float z) { return vec4(z); }\n", "/* float shadowTest */",
+                             "float half(float x) { return 0.5 * x; }\n"}) {
+        const auto scan = scan_snippets(none);
+        EXPECT_TRUE(scan.problems.empty()) << none;
+        EXPECT_EQ(render::snippet_names(scan.defines), "") << none;
+    }
+}
+
+TEST(Snippets, OneFunctionAloneRenamesTheOthersOutOfTheContract) {
+    const std::string text =
+        "// shadowTest and unpackDepth, and a helper that calls unpackDepth\n"
+        "float unpackDepth(const in vec4 rgbaDepth) { return rgbaDepth.r; }\n"
+        "float twice(vec4 t) { return 2.0 * unpackDepth(t); /* unpackDepth */ }\n"
+        "float shadowTest(float zLight, float depth, float bias) { return zLight > depth + 1.0e-3 ? 0.0 : 1.0; }\n";
+    const std::string only = render::snippet_only(text, SnippetFn::ShadowTest);
+    const auto scan = scan_snippets(only);
+    ASSERT_TRUE(scan.problems.empty()) << scan.problems[0].message << "\n" << only;
+    EXPECT_EQ(scan.defines, std::vector<SnippetFn>{SnippetFn::ShadowTest});
+    // Calls renamed with the function, comments and numbers as they were.
+    EXPECT_NE(only.find("float unpackDepth_notChecked(const in vec4"), std::string::npos) << only;
+    EXPECT_NE(only.find("2.0 * unpackDepth_notChecked(t); /* unpackDepth */"), std::string::npos) << only;
+    EXPECT_NE(only.find("// shadowTest and unpackDepth,"), std::string::npos) << only;
+    EXPECT_NE(only.find("1.0e-3"), std::string::npos) << only;
+    // So the block takes the sheet's answer's unpackDepth.
+    EXPECT_NE(render::snippet_block(only, shadow::Encoding::RGBA).find("dot(rgbaDepth, bitShift)"), std::string::npos);
+    // The other way round: the test renamed, unpackDepth kept.
+    const auto other = scan_snippets(render::snippet_only(text, SnippetFn::UnpackDepth));
+    ASSERT_TRUE(other.problems.empty());
+    EXPECT_EQ(other.defines, std::vector<SnippetFn>{SnippetFn::UnpackDepth});
+    // The control: the file itself defines both.
+    EXPECT_EQ(scan_snippets(text).defines.size(), 2u);
 }
 
 TEST(Snippets, FindsWhichFunctionsAFileDefinesWhateverItsQualifiersAndNames) {

@@ -3,7 +3,8 @@
 // docs/pages.md). Its files are not requested until the "Shader lab" button is pressed; the editor
 // (CodeMirror) shows line numbers and GLSL highlighting and starts on the skeleton; the sheet's
 // answer, put in by its button, is checked as matching the sheet's answer, each classic mistake of
-// the encoding (typed into the editor) gets its hint's name; broken code typed from the keyboard is
+// the encoding (typed into the editor) gets its hint's name; an empty editor, a comment only and a
+// helper only are "no function of the sheet written", never a match; broken code typed from the keyboard is
 // marked at its line (gutter, line, message) and the picture keeps the last good frame, also after
 // a lost and restored context; the code is in the address and in localStorage: a reload, a visit
 // without the address's code and a fresh browser given the link each restore it; the r8 answer
@@ -113,6 +114,19 @@ await runTest('web.lab', async ({ server, browser }) => {
     console.log(`mistake ${m.name}: ${r.verdict.differingPct}% differ, named "${r.verdict.mistake}"`);
     check(r.verdict.compiles && r.shown === 'mistake' && r.mistakeShown === m.name && r.verdictText.includes(m.hint),
           `mistake ${m.name}: ${JSON.stringify(r)}`);
+  }
+
+  // A cleared editor, a comment only, a helper of its own: no function of the sheet written, never
+  // a match. The control is in the frame: each draws the sheet's answer's own frame (0 pixels
+  // differ, the functions left out being the answer's), so without the module's rule
+  // (render::lab_verdict's NoFunction) each would read "matches".
+  for (const [name, text] of [['empty', ''], ['comment only', '// my answer\n/* later */\n'],
+                              ['a helper only', 'float half(float x) {\n    return 0.5 * x;\n}\n']]) {
+    r = await enter(page, text);
+    console.log(`${name}: ${r.verdict.differingPct}% differ, verdict ${r.verdict.verdict}, functions "${r.verdict.functions}"`);
+    check(r.verdict.compiles && !r.verdict.matches && r.verdict.verdict === 'no-function' && r.shown === 'no-function' &&
+          r.verdictText.startsWith('No function of the sheet written') && r.verdict.functions === '' &&
+          r.verdict.differingPct === 0, `${name}: ${JSON.stringify(r)}`);
   }
 
   // Back to the answer, its frame; then broken code typed on line 3: marked there, frame kept.

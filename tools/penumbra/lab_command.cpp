@@ -92,12 +92,31 @@ std::string pct(double v) {
 
 struct Row {
     std::string file;
+    std::string functions;  // the contract's functions it defines, space-separated
     bool compiles = false;
     std::string error;
+    std::string verdict = "error";  // render::lab_outcome_name
     double differing = 0, truth = 0;
     std::string mistake, hint;
     std::string thumb, diff;  // image files, relative to the report
+    // Where the file defines several functions: each one's verdict alone (the file with only that
+    // function, the others the sheet's answer's: render::snippet_only): its name and its verdict.
+    std::vector<std::pair<std::string, std::string>> each;
 };
+
+// One function's verdict alone, in words.
+std::string function_verdict(const render::LabVerdict& v) {
+    switch (v.outcome) {
+        case render::LabOutcome::Matches: return "matches the sheet's answer";
+        case render::LabOutcome::Mistake: return "the classic mistake " + v.mistake;
+        case render::LabOutcome::Differs:
+            return "differs from the sheet's answer (" + pct(v.differing_pct) + " % of the pixels) and matches none "
+                   "of the classic mistakes";
+        case render::LabOutcome::NoFunction:
+        case render::LabOutcome::Error: break;
+    }
+    return v.hint;
+}
 
 }  // namespace
 
@@ -174,6 +193,7 @@ int run_grade(const GradeOptions& o) {
             rows.push_back(row);
             continue;
         }
+        row.functions = render::snippet_names(render::scan_snippets(text).defines);
         const auto problems = render::set_snippets(r, src.at(kGradeTimes[0]), ls, text, in);
         if (!problems.empty()) {
             row.error = snippet_problems_text(row.file, problems);
@@ -190,7 +210,8 @@ int run_grade(const GradeOptions& o) {
         }
         render::LabVerdict v;
         v.compiles = true;
-        render::lab_verdict(v, ref, student);
+        render::lab_verdict(v, ref, text, student);
+        row.verdict = render::lab_outcome_name(v.outcome);
         row.differing = v.differing_pct;
         row.mistake = v.mistake;
         row.hint = v.hint;
@@ -204,13 +225,32 @@ int run_grade(const GradeOptions& o) {
         row.diff = (fs::path(images.filename()) / (base + "_difference.png")).generic_string();
         bench::write_or_throw((images / (base + "_frame.png")).string(), measure::from_rgba(middle, w, h, 1));
         bench::write_or_throw((images / (base + "_difference.png")).string(), measure::from_rgba(diff, w, h, 3));
+        // Each function alone, where there are several: one compile and three frames each.
+        if (v.defines.size() > 1)
+            for (render::SnippetFn f : v.defines) {
+                const std::string name(render::snippet_name(f));
+                const std::string only = render::snippet_only(text, f);
+                if (const auto p = render::set_snippets(r, src.at(kGradeTimes[0]), ls, only, in); !p.empty()) {
+                    row.each.emplace_back(name, "not checked alone: " + p[0].message);
+                    continue;
+                }
+                std::vector<std::uint8_t> frames;
+                for (double t : kGradeTimes) {
+                    const auto img = render::lab_frame(r, src.at(t), ls, in, only);
+                    frames.insert(frames.end(), img.begin(), img.end());
+                }
+                render::LabVerdict fv;
+                fv.compiles = true;
+                render::lab_verdict(fv, ref, only, frames);
+                row.each.emplace_back(name, function_verdict(fv));
+            }
         rows.push_back(row);
     }
 
     // The report, then the CSV: each written whole or not at all.
     std::string page = "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>penumbra grade: " + html(o.dir) +
                        "</title>\n<style>body{font-family:sans-serif;margin:1.5em}td,th{border-bottom:1px solid #ccc;"
-                       "padding:.4em;vertical-align:top;text-align:left}.no{color:#b00}img{image-rendering:pixelated;border:1px solid #999}"
+                       "padding:.4em;vertical-align:top;text-align:left}.no,.verdict-no-function{color:#b00}img{image-rendering:pixelated;border:1px solid #999}"
                        "</style></head><body>\n<h1>Snippets of " + html(o.dir) + "</h1>\n<p>Each file compiled into "
                        "the renderer's shaders (docs/snippets.md) and drawn on the course scene at t = 0.3, 0.6 and 1.2 s, " +
                        std::to_string(w) + "x" + std::to_string(h) + ", encoding " + html(o.encoding) + ", filter " +
@@ -218,20 +258,30 @@ int run_grade(const GradeOptions& o) {
                        "<b>vs truth</b>: mean absolute error of the visibility against the ray-traced hard shadow (the sheet's answer: " +
                        pct(answer_truth) + " %; docs/snippets.md says why it is not 0). "
                        "The images are the frame at t = 0.6 s and its difference from the answer's (red: darker, green: "
-                       "lighter).</p>\n<table><tr><th>file</th><th>compiles</th><th>differing %</th><th>vs truth %</th>"
-                       "<th>frame</th><th>difference</th><th>hint or error</th></tr>\n";
-    std::string csv = "file,compiles,error,differing_pixels_pct,error_vs_truth_pct,mistake,hint\n";
+                       "lighter). A file that defines none of the sheet's functions draws the answer's own frame: it is no "
+                       "match. Where a file defines several, each is also checked alone (the others the sheet's answer's)."
+                       "</p>\n<table><tr><th>file</th><th>functions</th><th>compiles</th><th>differing %</th><th>vs truth %</th>"
+                       "<th>frame</th><th>difference</th><th>verdict, hint or error</th></tr>\n";
+    std::string csv = "file,functions,compiles,error,verdict,differing_pixels_pct,error_vs_truth_pct,mistake,hint\n";
     for (const Row& row : rows) {
-        csv += csv_field(row.file) + "," + (row.compiles ? "yes" : "no") + "," + csv_field(row.error) + "," +
-               (row.compiles ? pct(row.differing) : "") + "," + (row.compiles ? pct(row.truth) : "") + "," +
-               csv_field(row.mistake) + "," + csv_field(row.hint) + "\n";
-        page += "<tr><td>" + html(row.file) + "</td><td" + (row.compiles ? ">yes" : " class=\"no\">no") + "</td><td>" +
-                (row.compiles ? pct(row.differing) : "") + "</td><td>" + (row.compiles ? pct(row.truth) : "") + "</td>";
-        if (row.compiles)
+        csv += csv_field(row.file) + "," + csv_field(row.functions) + "," + (row.compiles ? "yes" : "no") + "," +
+               csv_field(row.error) + "," + row.verdict + "," + (row.compiles ? pct(row.differing) : "") + "," +
+               (row.compiles ? pct(row.truth) : "") + "," + csv_field(row.mistake) + "," + csv_field(row.hint) + "\n";
+        page += "<tr><td>" + html(row.file) + "</td><td>" + html(row.functions) + "</td><td" +
+                (row.compiles ? ">yes" : " class=\"no\">no") + "</td><td>" + (row.compiles ? pct(row.differing) : "") +
+                "</td><td>" + (row.compiles ? pct(row.truth) : "") + "</td>";
+        if (row.compiles) {
             page += "<td><img src=\"" + html(row.thumb) + "\" alt=\"frame\"></td><td><img src=\"" + html(row.diff) +
-                    "\" alt=\"difference\"></td><td>" + (row.mistake.empty() ? "" : "<b>" + html(row.mistake) + "</b>: ") +
-                    html(row.hint) + "</td></tr>\n";
-        else
+                    "\" alt=\"difference\"></td><td class=\"verdict-" + row.verdict + "\">" +
+                    (row.mistake.empty() ? "" : "<b>" + html(row.mistake) + "</b>: ") + html(row.hint);
+            if (!row.each.empty()) {
+                page += "<ul>";
+                for (const auto& [fn, verdict] : row.each)
+                    page += "<li><code>" + html(fn) + "</code> alone: " + html(verdict) + "</li>";
+                page += "</ul>";
+            }
+            page += "</td></tr>\n";
+        } else
             page += "<td></td><td></td><td class=\"no\">" + html(row.error) + "</td></tr>\n";
     }
     page += "</table>\n</body></html>\n";

@@ -306,13 +306,16 @@
   function check(text) {
     const v = runCheck(text);
     ++checks;
-    v.verdict = !v.compiles ? 'error' : v.matches ? 'matches' : v.mistake ? 'mistake' : 'differs';
+    // The module's verdict (render::lab_verdict): error, no-function, matches, mistake or differs.
+    v.verdict = !v.compiles ? 'error' : v.verdict || 'differs';
     verdict = v;
     const out = el['lab-verdict'];
     out.dataset.verdict = v.verdict;
     out.dataset.mistake = v.mistake || '';
     if (v.verdict === 'error') {
       out.textContent = 'Not checked: ' + v.problems.map((p) => p.message).join('; ');
+    } else if (v.verdict === 'no-function') {
+      out.textContent = v.hint || 'No function of the sheet written.';
     } else if (v.verdict === 'matches') {
       out.textContent = v.hint || 'Matches the sheet\'s answer.';
     } else if (v.verdict === 'mistake') {
