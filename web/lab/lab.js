@@ -331,8 +331,8 @@
     return v;
   }
 
-  // Compiles the editor's text into the renderer's programs and keeps it; the check (up to seven
-  // frames drawn and read back: 0.7 s on SwiftShader, the compile 40 ms) follows once the typing
+  // Compiles the editor's text into the renderer's programs and keeps it; the check (up to ten
+  // frames drawn and read back: seven took 0.7 s on SwiftShader, the compile 40 ms) follows once the typing
   // has paused a little longer, so a student who goes on typing is not held up by it.
   function compileNow() {
     clearTimeout(timer);
