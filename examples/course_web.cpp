@@ -35,6 +35,7 @@ struct WebApp {
     std::string last_error;  // of the last failing call or frame
     std::string reported;    // the last frame error printed (each distinct one is printed once)
     double last_t = -1.0;
+    long callbacks = 0;  // of frame(): the browser's animation frames so far
     bool restored = false;      // the context was restored and "restored" is still said
     double restored_at = -1.0;  // the first frame's time after the restore
     int width = 0, height = 0;
@@ -82,6 +83,9 @@ bool frame(const platform::FrameInfo& f) {
     g->last_t = f.time_s;
     g->width = f.width;
     g->height = f.height;
+    // The marble (deferred by main()) once the first frame is on screen: in the second callback,
+    // not the first one, whose frame the browser shows only when it returns.
+    if (g->callbacks++ > 0) g->app->complete_scene();
     draw_frame();
     return true;
 }
@@ -256,6 +260,8 @@ void penumbra_pause(int paused) {
     if (g && g->app) g->app->set_paused(paused != 0);
 }
 long penumbra_frame_count() { return g && g->app ? g->app->frames_drawn() : 0; }
+// 1 once the scene is whole (the marble made after the first frame, main()), else 0.
+int penumbra_scene_complete() { return g && g->app && g->app->scene_complete() ? 1 : 0; }
 // Draws one frame now, outside the animation loop (at the current, e.g. fixed, time). Not timed
 // on the GPU: a test draws many such frames in one JavaScript task, and WebGL makes no query's
 // result available before the task returns (the ring of pending frames would fill).
@@ -267,6 +273,7 @@ int penumbra_render_now(int width, int height) {
     }
     const bool timing = g->app->gpu_timing();
     g->app->set_gpu_timing(false);
+    g->app->complete_scene();  // a frame drawn on demand is the whole scene's
     const bool drawn = draw_frame();
     g->app->set_gpu_timing(timing);
     return drawn ? 1 : 0;
@@ -393,7 +400,9 @@ int main(int argc, char** argv) {
             else std::fprintf(stderr, "penumbra: unknown exercise '%s'\n", argv[i + 1]);
         }
     g = new WebApp;  // lives as long as the page
-    g->app = std::make_unique<examples::CourseApp>(exercise);
+    // The marble's noise waits for the first frame: it is most of the course scene's making, and the
+    // page shows the table in the marble's white until the second frame (docs/payload.md).
+    g->app = std::make_unique<examples::CourseApp>(exercise, true);
     g->app->set_gpu_timing(true);
     g->app->set_keep_plans(true);  // penumbra_tile_lines  // the readout's GPU time per pass, where the context has a timer
     std::string error;

@@ -53,8 +53,8 @@ const Exercise& exercise_named(std::string_view name) {
 const render::AreaStats* area_stats(const render::FramePlan& plan) { return render::area_of(plan); }
 
 // Without its portal: course_scene_for() adds it for the first frame that asks for it.
-CourseApp::CourseApp(std::string_view exercise)
-    : exercise_(&exercise_named(exercise)), course_(scene::make_course_scene(10, false)) {
+CourseApp::CourseApp(std::string_view exercise, bool defer_marble)
+    : exercise_(&exercise_named(exercise)), course_(scene::make_course_scene(10, false, !defer_marble)) {
     scene_camera_ = course_.scene.camera;
     // What any exercise's frames add to the course scene (W09P2b's ground), before a GL object is made.
     for (const Exercise& x : exercise_list())
@@ -64,6 +64,17 @@ CourseApp::CourseApp(std::string_view exercise)
 }
 
 CourseApp::~CourseApp() = default;
+
+bool CourseApp::complete_scene() {
+    if (!scene::complete_marble(course_)) return false;
+    // The texture changed in place: uploaded again where the course scene is the renderer's (a
+    // scene not loaded is uploaded whole, marble and all, by the first frame that draws it).
+    if (renderer_ && renderer_->has_loaded(course_.scene))
+        renderer_->update_image(static_cast<std::size_t>(course_.marble), course_.scene.images[static_cast<std::size_t>(course_.marble)]);
+    return true;
+}
+
+bool CourseApp::scene_complete() const { return scene::marble_complete(course_); }
 
 CourseApp::OwnScene* CourseApp::own_scene() {
     const Exercise& x = *exercise_;

@@ -40,7 +40,13 @@ const render::AreaStats* area_stats(const render::FramePlan& plan);
 class CourseApp final : private Host {
 public:
     // The exercise of that name (exercise_list()); std::invalid_argument for a name not listed.
-    explicit CourseApp(std::string_view exercise);
+    // With `defer_marble` the course scene's table has a placeholder texture until complete_scene()
+    // (the pages: their first frame comes before the marble's noise is made).
+    explicit CourseApp(std::string_view exercise, bool defer_marble = false);
+    // Makes what the constructor deferred (the marble), for the frames from the next one on.
+    // Returns true when it made something; false when the scene was already complete.
+    bool complete_scene();
+    bool scene_complete() const;
     ~CourseApp();
     CourseApp(const CourseApp&) = delete;
     CourseApp& operator=(const CourseApp&) = delete;

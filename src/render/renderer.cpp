@@ -109,19 +109,27 @@ Renderer::Uploaded Renderer::upload(const scene::Scene& scene) {
     for (const auto& m : scene.meshes)
         u.meshes.push_back(device_.upload_mesh(m.positions, m.normals, m.uvs, m.indices, caps_.element_index_uint,
                                                m.name.c_str()));
-    for (const auto& img : scene.images) {
-        gl::TextureDesc d;
-        d.width = img.width;
-        d.height = img.height;
-        d.rgba = img.rgba.data();
-        // GLES2 mipmaps and repeat need power-of-two sizes.
-        const bool pot = power_of_two(img.width) && power_of_two(img.height);
-        d.sampling = pot ? gl::Sampling::LinearMipmap : gl::Sampling::Linear;
-        d.wrap = pot ? gl::Wrap::Repeat : gl::Wrap::Clamp;
-        d.label = "scene image";
-        u.images.emplace_back(d);
-    }
+    for (const auto& img : scene.images) u.images.push_back(texture(img));
     return u;
+}
+
+gl::Texture Renderer::texture(const scene::Image& img) {
+    gl::TextureDesc d;
+    d.width = img.width;
+    d.height = img.height;
+    d.rgba = img.rgba.data();
+    // GLES2 mipmaps and repeat need power-of-two sizes.
+    const bool pot = power_of_two(img.width) && power_of_two(img.height);
+    d.sampling = pot ? gl::Sampling::LinearMipmap : gl::Sampling::Linear;
+    d.wrap = pot ? gl::Wrap::Repeat : gl::Wrap::Clamp;
+    d.label = "scene image";
+    return gl::Texture(d);
+}
+
+bool Renderer::has_loaded(const scene::Scene& scene) const { return !loaded_.empty() && fingerprint(scene) == loaded_; }
+
+void Renderer::update_image(std::size_t index, const scene::Image& image) {
+    if (index < scene_.images.size()) scene_.images[index] = texture(image);
 }
 
 FramePlan Renderer::plan(const scene::Scene& scene, const Settings& s, const FrameInputs& in) const {

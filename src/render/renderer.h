@@ -41,6 +41,11 @@ public:
     // Uploads the scene's meshes and images (and its portal's other scene's). render() does it when the scene's meshes are not the
     // ones uploaded; the animated parts (object matrices, the light) are read at every frame.
     void load(const scene::Scene& scene);
+    // Whether `scene` is the one uploaded (its fingerprint: a few of its vertices).
+    bool has_loaded(const scene::Scene& scene) const;
+    // Uploads image `index` of the loaded scene again, changed in place (the scene's fingerprint
+    // does not see images): the marble that the pages make after their first frame.
+    void update_image(std::size_t index, const scene::Image& image);
 
     // The plan of the next frame, without drawing it.
     FramePlan plan(const scene::Scene& scene, const Settings& s, const FrameInputs& in = {}) const;
@@ -95,6 +100,7 @@ private:
         std::vector<gl::Texture> images;
     };
     Uploaded upload(const scene::Scene& scene);
+    static gl::Texture texture(const scene::Image& img);
     Uploaded scene_, beyond_;
     ResourcePool pool_;
     std::optional<FramePlan> previous_;

@@ -17,6 +17,8 @@ namespace {
 constexpr float kTwoPi = 6.28318530717958647692f;
 constexpr int kOctaves = 5;
 constexpr int kBaseCells = 4;  // lattice cells across the image at the lowest octave
+constexpr float kWhite[3] = {0.93f, 0.92f, 0.90f};
+constexpr float kMeanCloud = 0.98f;  // the cloudiness's mean: 0.94 + 0.08 x a noise of mean 1/2
 
 // Where pixel centre p of a size-pixel image falls on a lattice of n cells (the same along x and y):
 // the two lattice points either side (wrapping) and the faded fraction between them. Made once per
@@ -101,7 +103,7 @@ Image make_marble(int size, std::uint32_t seed) {
         return sum / norm;
     };
 
-    const glm::vec3 white(0.93f, 0.92f, 0.90f);
+    const glm::vec3 white(kWhite[0], kWhite[1], kWhite[2]);
     const glm::vec3 vein(0.42f, 0.47f, 0.56f);  // grey-blue
     for (int y = 0; y < size; ++y) {
         const float v = (static_cast<float>(y) + 0.5f) / static_cast<float>(size);
@@ -128,6 +130,13 @@ Image make_marble(int size, std::uint32_t seed) {
             px[3] = 255;
         }
     }
+    return img;
+}
+
+Image marble_placeholder() {
+    Image img;
+    img.width = img.height = 1;
+    img.rgba = {to_byte(kWhite[0] * kMeanCloud), to_byte(kWhite[1] * kMeanCloud), to_byte(kWhite[2] * kMeanCloud), 255};
     return img;
 }
 

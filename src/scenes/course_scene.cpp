@@ -20,7 +20,19 @@ constexpr double kLightPeriod = 12.0;    // seconds per turn
 constexpr float kJumpHeight = 0.6f;
 constexpr double kJumpPeriod = 1.5;      // seconds per bounce
 constexpr double kTwoPi = 6.283185307179586;
+constexpr int kMarbleSize = 512;
+constexpr std::uint32_t kMarbleSeed = 7;
 }  // namespace
+
+bool marble_complete(const CourseScene& course) {
+    return course.marble < 0 || course.scene.images[static_cast<size_t>(course.marble)].width == kMarbleSize;
+}
+
+bool complete_marble(CourseScene& course) {
+    if (marble_complete(course)) return false;
+    course.scene.images[static_cast<size_t>(course.marble)] = make_marble(kMarbleSize, kMarbleSeed);
+    return true;
+}
 
 glm::vec3 course_light_position(double t) {
     const double a = kTwoPi * t / kLightPeriod;
@@ -37,13 +49,14 @@ double course_teapot_landing(double t) {
     return std::ceil(t / kJumpPeriod - 1e-6) * kJumpPeriod;
 }
 
-CourseScene make_course_scene(int teapot_level, bool portal) {
+CourseScene make_course_scene(int teapot_level, bool portal, bool marble_now) {
     CourseScene c;
     Scene& s = c.scene;
 
     s.meshes.push_back(make_quad(kTableSize, 2.0f));
     s.meshes.push_back(make_teapot(teapot_level));
-    s.images.push_back(make_marble(512, 7));
+    c.marble = static_cast<int>(s.images.size());
+    s.images.push_back(marble_now ? make_marble(kMarbleSize, kMarbleSeed) : marble_placeholder());
 
     Material marble;
     marble.name = "marble";

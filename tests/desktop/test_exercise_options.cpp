@@ -541,3 +541,32 @@ TEST(ExerciseValues, TheJumpSwitchedOffLandsTheTeapot) {
     a.advance(0.2);
     EXPECT_NEAR(a.jump_time(), 1.7, 1e-9) << "and jumps again from there";
 }
+
+// The pages' app defers the marble's noise past the first frame (examples/course_web.cpp): until
+// complete_scene() the table shows a 1 x 1 placeholder; after it, the very marble an app made at
+// once has, byte for byte, so the pages' later frames are the CLI's. The control: an app made at
+// once is complete from the start and has nothing to make.
+TEST(ExerciseOptions, ADeferredMarbleIsTheSameMarbleOnceMade) {
+    const auto marble = [](const CourseApp& app) -> const penumbra::scene::Image& {
+        const auto& s = app.scene();
+        const auto it = std::find_if(s.materials.begin(), s.materials.end(), [](const auto& m) { return m.name == "marble"; });
+        EXPECT_NE(it, s.materials.end());
+        return s.images.at(static_cast<size_t>(it->base_color_texture));
+    };
+    CourseApp at_once("w09p1");
+    EXPECT_TRUE(at_once.scene_complete());
+    EXPECT_FALSE(at_once.complete_scene());
+    EXPECT_EQ(marble(at_once).width, 512);
+
+    CourseApp deferred("w09p1", true);
+    EXPECT_FALSE(deferred.scene_complete());
+    EXPECT_EQ(marble(deferred).width, 1);
+    EXPECT_EQ(marble(deferred).rgba.size(), 4u);
+    EXPECT_NE(marble(deferred).rgba, marble(at_once).rgba);
+    EXPECT_TRUE(deferred.complete_scene());
+    EXPECT_TRUE(deferred.scene_complete());
+    EXPECT_FALSE(deferred.complete_scene());
+    EXPECT_EQ(marble(deferred).width, marble(at_once).width);
+    EXPECT_EQ(marble(deferred).height, marble(at_once).height);
+    EXPECT_TRUE(marble(deferred).rgba == marble(at_once).rgba);
+}

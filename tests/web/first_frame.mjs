@@ -116,8 +116,10 @@ async function loadOnce(browser, url, name) {
     await page.goto(url, { waitUntil: 'commit' });
     await page.waitForFunction(() => window.__firstFrame && window.__firstFrame.frame !== null, null,
                                { timeout: 60000, polling: 50 });
-    // The page's own figure, where it has one (it is polled each animation frame: give it a few).
+    // The page's own figure, where it has one (it is polled each animation frame: give it a few),
+    // and an exercise page's ready (the scene whole: the marble is made after the first frame).
     await page.waitForFunction(pageFigure, null, { timeout: 2000 }).catch(() => {});
+    if (name !== THREE) await page.waitForFunction(() => window.penumbra.readyMs() !== null, null, { timeout: 60000, polling: 50 });
     const r = await page.evaluate(([figureSource, module]) => {
       const figure = eval(figureSource);  // eslint-disable-line no-eval
       const ff = window.__firstFrame;
@@ -130,6 +132,7 @@ async function loadOnce(browser, url, name) {
         jsEnd: js ? js.responseEnd : null, wasmStart: wasm ? wasm.startTime : null,
         wasmEnd: wasm ? wasm.responseEnd : null, domContentLoaded: nav ? nav.domContentLoadedEventEnd : null,
         pageFigure: figure(), width: ff.width, height: ff.height,
+        ready: window.penumbra && window.penumbra.readyMs ? window.penumbra.readyMs() : null,
         three: performance.getEntriesByType('resource').map((e) => new URL(e.name).pathname)
           .filter((p) => p.startsWith('/three/')),
         frameCount: window.penumbra && window.penumbra.frameCount ? window.penumbra.frameCount() : null,
@@ -167,8 +170,10 @@ await runTest('web.first_frame', async ({ server, browser }) => {
     for (const p of rows) {
       const l = await loadOnce(browser, url(p), p);
       check(l.firstFrame > 0, `${p} load ${i}: no first frame time`);
-      for (const k of p === THREE ? ['context'] : ['instantiated', 'context', 'wasmEnd', 'jsEnd'])
+      for (const k of p === THREE ? ['context'] : ['instantiated', 'context', 'wasmEnd', 'jsEnd', 'ready'])
         check(l[k] !== null && l[k] > 0, `${p} load ${i}: no '${k}' time`);
+      // The first frame comes first; the page is ready when its scene is whole, not before it.
+      if (p !== THREE) check(l.ready >= l.firstFrame - 1, `${p} load ${i}: ready at ${l.ready} ms, before its first frame (${l.firstFrame} ms)`);
       loads[p].push(l);
     }
   const fmt = (x) => (x === null ? '-' : x.toFixed(0));
@@ -176,24 +181,25 @@ await runTest('web.first_frame', async ({ server, browser }) => {
               `SwiftShader; canvas ${first.width} x ${first.height}):`);
   console.log(`  ${'page'.padEnd(8)} ${'first'.padStart(6)} ${'js'.padStart(5)} ${'wasm'.padStart(5)} ` +
               `${'inst.'.padStart(6)} ${'ctx'.padStart(5)} ${'f.start'.padStart(7)} ${'draw'.padStart(5)} ` +
-              `${'page fig.'.padStart(9)}   all loads`);
+              `${'page fig.'.padStart(9)} ${'ready'.padStart(6)}   all loads`);
   for (const p of rows) {
     const ls = loads[p];
     const m = (k) => (ls.every((l) => l[k] !== null) ? median(ls.map((l) => l[k])) : null);
     const row = {
       firstFrame: m('firstFrame'), jsEnd: m('jsEnd'), wasmEnd: m('wasmEnd'), instantiated: m('instantiated'),
       context: m('context'), frameStart: m('frameStart'), draw: median(ls.map((l) => l.firstFrame - l.frameStart)),
-      pageFigure: m('pageFigure'), loads: ls.map((l) => +l.firstFrame.toFixed(1)), detail: ls,
+      pageFigure: m('pageFigure'), ready: m('ready'), loads: ls.map((l) => +l.firstFrame.toFixed(1)), detail: ls,
     };
     results[p] = row;
     console.log(`  ${p.padEnd(8)} ${fmt(row.firstFrame).padStart(6)} ${fmt(row.jsEnd).padStart(5)} ` +
                 `${fmt(row.wasmEnd).padStart(5)} ${fmt(row.instantiated).padStart(6)} ${fmt(row.context).padStart(5)} ` +
-                `${fmt(row.frameStart).padStart(7)} ${fmt(row.draw).padStart(5)} ${fmt(row.pageFigure).padStart(9)}` +
+                `${fmt(row.frameStart).padStart(7)} ${fmt(row.draw).padStart(5)} ${fmt(row.pageFigure).padStart(9)} ` +
+                `${fmt(row.ready).padStart(6)}` +
                 `   ${row.loads.map((x) => x.toFixed(0)).join(' ')}`);
   }
   console.log('  (js, wasm: their download ends; inst.: the wasm compiled and instantiated; ctx: main() makes the ' +
               'WebGL context; f.start: the first drawn frame\'s callback starts; draw: that frame\'s own time; ' +
-              'page fig.: window.penumbra.firstFrameMs)');
+              'page fig.: window.penumbra.firstFrameMs; ready: the scene whole, window.penumbra.readyMs)');
   if (withThree) {
     const files = [...new Set(loads[THREE].flatMap((l) => l.three))];
     check(files.length > 0, 'the three.js page fetched nothing from /three/');

@@ -41,6 +41,7 @@ async function measure(page) {
       scrollWidth: document.documentElement.scrollWidth, innerWidth, innerHeight, wide,
       picture: document.getElementById('picture').textContent,
       firstFrame: document.getElementById('first-frame').textContent,
+      ready: document.getElementById('ready').textContent,
     };
   });
 }
@@ -93,6 +94,7 @@ await runTest('web.layout', async ({ server, browser }) => {
       check(m.scrollWidth <= m.innerWidth, `${p} 800x700: the page is ${m.scrollWidth} px wide (${m.wide.join(', ')})`);
       checkStore(p, m, '800x700');
       check(/^\d+ ms$/.test(m.firstFrame), `${p}: the first frame readout says '${m.firstFrame}'`);
+      check(/^\d+ ms$/.test(m.ready), `${p}: the ready readout says '${m.ready}'`);
       const ms = await page.evaluate(() => window.penumbra.firstFrameMs());
       firstFrames.push(`${p} ${Math.round(ms)} ms`);
       await page.screenshot({ path: path.join(OUT, `${p}-800x700.png`) });
