@@ -151,10 +151,11 @@ void lab_verdict(LabVerdict& v, const LabReference& ref, std::string_view text, 
     v.difference = difference(v.student, v.reference);
     v.mistake.clear();
     v.hint.clear();
-    // Before any comparison: a file that writes none of the functions draws the answer's frame.
-    if (const std::string none = lab_no_function(text); !none.empty()) {
+    // Before any comparison: a file that writes none of the functions draws the answer's frame
+    // (its frames were drawn, so the scan took it: no function defined is lab_no_function's case).
+    if (v.defines.empty()) {
         v.outcome = LabOutcome::NoFunction;
-        v.hint = none;
+        v.hint = std::string(kLabNoFunctionHint);
         return;
     }
     if (v.differing_pct <= kLabMatchPct) {
