@@ -286,5 +286,17 @@ expect_error "truth, bad size" truth --size 0x5 --out-dir "$work/t2"
 expect_error "truth, --json without --score" truth --json --out-dir "$work/t2"
 [ ! -e "$work/x.gltf" ] && [ ! -e "$work/x.png" ] && ok || bad "a failed export left a file"
 
+# A quick run with no --out-dir writes under out/, never over the committed results/bench (issue 56).
+# --from-csv rebuilds the table from the run above, so this costs no rendering; the control is the
+# same command with --out-dir results/bench, which must write there (else the check could not fail).
+mkdir -p "$work/cwd/results/bench" && echo committed >"$work/cwd/results/bench/results.md"
+if (cd "$work/cwd" && "$penumbra" bench --quick --from-csv "$work/bench/results.csv" >/dev/null 2>&1); then ok
+else bad "bench --quick --from-csv exited $?"; fi
+[ -s "$work/cwd/out/bench-quick/results.md" ] && ok || bad "bench --quick wrote no out/bench-quick/results.md"
+[ "$(cat "$work/cwd/results/bench/results.md")" = committed ] && [ "$(ls "$work/cwd/results/bench")" = results.md ] && ok \
+  || bad "bench --quick wrote into results/bench: $(ls "$work/cwd/results/bench")"
+(cd "$work/cwd" && "$penumbra" bench --quick --from-csv "$work/bench/results.csv" --out-dir results/bench >/dev/null 2>&1)
+[ "$(cat "$work/cwd/results/bench/results.md")" != committed ] && ok || bad "control: --out-dir results/bench wrote nothing there"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

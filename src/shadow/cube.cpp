@@ -95,7 +95,9 @@ CubeFit fit_cube(const scene::Light& light, const std::vector<scene::Bounds>& re
         if (why) *why = reason;
         return fit;
     };
-    if (light.type != scene::LightType::Point) return fail("the light is not a point light");
+    // A spot light's cube is the same cube around its position; only the faces its cone reaches
+    // are drawn (the visible points below are clipped to the cone).
+    if (light.type == scene::LightType::Directional) return fail("the light is directional");
     fit.tile = tile;
     fit.guard = std::clamp(guard, 0, tile / 4);
     fit.cube_map = cube_map;
@@ -107,11 +109,8 @@ CubeFit fit_cube(const scene::Light& light, const std::vector<scene::Bounds>& re
     // Which faces see a visible receiver: each receiver's visible part (its box clipped to the
     // camera's view, as visible_receiver_points clips it for a point light) tested against each
     // face's pyramid.
-    std::vector<glm::vec3> part;
-    const std::array<HalfSpace, 6> view = clip_volume_half_spaces(camera_view_proj);
-    const std::vector<HalfSpace> hs(view.begin(), view.end());
-    for (const scene::Bounds& b : receivers) {
-        part = clip_box(b, hs);
+    std::vector<char> whole;
+    for (std::vector<glm::vec3>& part : visible_points_each(light, receivers, camera_view_proj, whole)) {
         fit.visible.insert(fit.visible.end(), part.begin(), part.end());
         for (glm::vec3& p : part) p -= L;
         for (int f = 0; f < kCubeFaces; ++f)
@@ -162,7 +161,8 @@ CubeFit fit_cube(const scene::Light& light, const std::vector<scene::Bounds>& re
 bool cube_wanted(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                  const std::vector<scene::Bounds>& casters, std::string& why) {
     if (light.type != scene::LightType::Point) {
-        why = light.type == scene::LightType::Spot ? "one map: a spot light's cone fits one frustum"
+        why = light.type == scene::LightType::Spot ? "one map: a spot light's cone fits one frustum (a cube where the "
+                                                     "map's fit finds it does not)"
                                                    : "one map: the light is not a point light";
         return false;
     }

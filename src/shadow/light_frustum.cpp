@@ -415,6 +415,7 @@ bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec
     LightFrustum& f = out.frustum;
     f.perspective = true;
     f.view = w.view;
+
     // The casters inside the pyramid of the window, up to the farthest visible point: a caster
     // between the light and a visible point lies there.
     float nearest = w.zmin;
@@ -424,6 +425,7 @@ bool fit_tight_perspective(const scene::Light& light, const std::vector<glm::vec
                     {0.0f, -1.0f, -w.yt, 0.0f}, {0.0f, 0.0f, 1.0f, w.zmax}},
                    shadowing, out, nearest, reach);
     if (shadowing && shadowing->fit_window) out.cut = cut_to_casters(w, reach, *shadowing, front_eps);
+    out.capped = w.capped;
 
     f.zfar = 1.02f * w.zmax;
     f.znear = std::max(0.98f * nearest, f.zfar * 1e-4f);

@@ -47,6 +47,9 @@ struct TightFit {
     // they shadow no receiver in view, and whether the window was cut to the drawn casters.
     int culled = 0;
     bool cut = false;
+    // A perspective fit whose window the 75-degree cap cut: some visible receiver points are
+    // outside the map and would count as lit (a wide spot cone, a light low over a long receiver).
+    bool capped = false;
 };
 
 // The vertices of each receiver box clipped to the camera's clip volume (camera_view_proj) and,

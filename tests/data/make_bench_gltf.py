@@ -10,6 +10,10 @@ this script (deterministic output, standard library only; the Builder comes from
   bench_curved.gltf  two spheres and two tori (one standing, one lying) on a ground under a spot light
                      about 40 degrees up: smooth closed surfaces, where self-shadow acne rings the
                      terminator unless the map takes their back faces or the bias follows the slope.
+  wide_cone.gltf     a cable 40 long on posts 1.2 above a long ground, lit across from close by a spot light
+                     with an 80-degree outer cone (a 160-degree cone, issue 56): from 12 to 18 along it on
+                     either side its shadow is 75-80 degrees off the spot's axis, beyond what one
+                     perspective map holds (75 degrees a side) but inside the cone.
   bench_hard.gltf    a fine grille (bars 4 cm wide, 8 cm apart, along the light) 0.8 above the ground,
                      a staircase and a leaning plank, lit by a point light about 20 degrees up: slits a
                      few texels wide at small maps, grazing light on the ground (acne), many contacts
@@ -239,7 +243,24 @@ def curved():
             {"translation": [4.0, 4.0, 2.5], "rotation": look_at_rotation((4.0, 4.0, 2.5), (-0.3, 0.3, -0.3))})
 
 
+def wide_cone():
+    s = Scene()
+    grey, dark = s.material("grey", (0.7, 0.7, 0.7)), s.material("dark", (0.25, 0.25, 0.3))
+    pos, nrm, idx = ground(48.0)
+    s.mesh("ground", ([(x, y, z * 0.25 - 1.0) for x, y, z in pos], nrm, idx), grey)
+    posts = [cylinder(x, 0.0, 0.08, 1.2, segments=12) for x in (-20.0, -10.0, 0.0, 10.0, 20.0)]
+    s.mesh("cable", merge(box(0.0, 1.2, 0.0, 40.0, 0.16, 0.16), *posts), dark)
+    # The spot 0.8 above the cable and 1 in front of it, looking down and across: the cable's
+    # shadow falls 1.5 behind it, and from 12 to 18 along it on either side it is more than 75
+    # degrees off the spot's axis but inside its cone.
+    s.write("wide_cone.gltf", (0.0, 44.0, -30.0), (0.0, 0.0, -1.5),
+            {"name": "spot", "type": "spot", "color": [1.0, 0.95, 0.85], "intensity": 30.0,
+             "spot": {"innerConeAngle": 1.2, "outerConeAngle": math.radians(80.0)}},
+            {"translation": [0.0, 2.0, 1.0], "rotation": look_at_rotation((0.0, 2.0, 1.0), (0.0, 0.0, -1.5))})
+
+
 def main():
+    wide_cone()
     curved()
     easy()
     medium()

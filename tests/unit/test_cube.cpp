@@ -12,9 +12,11 @@
 #include "plan/techniques/reports.h"
 #include "plan/options.h"
 #include "plan/plan.h"
+#include "scene/gltf_loader.h"
 #include "scene/primitives.h"
 #include "shadow/cube.h"
 #include "../cube_passes.h"
+#include "../test_paths.h"
 
 using namespace penumbra;
 
@@ -130,13 +132,35 @@ TEST(CubeFit, EachFaceDrawsTheCastersInItsPyramidAndTheDepthHoldsThem) {
     EXPECT_LT(fit.zfar, 4.3f);
 }
 
-TEST(CubeFit, NeedsAPointLightAndAReceiverInView) {
+// Issue 56: a spot light's cube draws only the faces its cone reaches. Pointing down from the
+// bulb's place with a 30-degree cone, that is -y alone; with an 80-degree cone the walls' faces
+// too, never the ceiling's. The point light at the same place draws all six (the control).
+TEST(CubeFit, ASpotLightDrawsOnlyTheFacesItsConeReaches) {
+    scene::Scene s = room();
+    const auto b = bounds_of(s);
+    const glm::mat4 vp = camera_view_proj(s, s.camera.view);
+    ASSERT_EQ(shadow::fit_cube(s.light, b, b, vp, 256, 2, nullptr).drawn(), 6);
+    s.light.type = scene::LightType::Spot;
+    s.light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    s.light.spot_outer_cone = glm::radians(30.0f);
+    std::string why = "unset";
+    const shadow::CubeFit narrow = shadow::fit_cube(s.light, b, b, vp, 256, 2, &why);
+    EXPECT_EQ(why, "");
+    EXPECT_EQ(narrow.drawn(), 1);
+    EXPECT_TRUE(narrow.faces[3].drawn);
+    s.light.spot_outer_cone = glm::radians(80.0f);
+    const shadow::CubeFit wide = shadow::fit_cube(s.light, b, b, vp, 256, 2, &why);
+    EXPECT_EQ(wide.drawn(), 5);
+    EXPECT_FALSE(wide.faces[2].drawn);  // +y: behind the cone
+}
+
+TEST(CubeFit, NeedsAPointOrSpotLightAndAReceiverInView) {
     scene::Scene s = room();
     const auto b = bounds_of(s);
     std::string why;
     s.light.type = scene::LightType::Directional;
     EXPECT_EQ(shadow::fit_cube(s.light, b, b, camera_view_proj(s, s.camera.view), 256, 2, &why).drawn(), 0);
-    EXPECT_EQ(why, "the light is not a point light");
+    EXPECT_EQ(why, "the light is directional");
     s.light.type = scene::LightType::Point;
     const glm::mat4 away = glm::lookAt(glm::vec3(30.0f, 1.0f, 0.0f), glm::vec3(60.0f, 1.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
     EXPECT_EQ(shadow::fit_cube(s.light, b, b, camera_view_proj(s, away), 256, 2, &why).drawn(), 0);
@@ -254,9 +278,37 @@ TEST_F(CubePlan, ACubeForALightThatIsNotAPointIsOneMapWithANote) {
     s.light.type = scene::LightType::Directional;
     const render::FramePlan p = make();
     EXPECT_FALSE((render::cube_of(p) != nullptr));
-    EXPECT_EQ(render::cascades_why_of(p), "--cascades cube -> one map (the light is not a point light)");
+    EXPECT_EQ(render::cascades_why_of(p), "--cascades cube -> one map (the light is directional)");
     ASSERT_FALSE(p.notes.empty());
     EXPECT_NE(p.notes.back().find("one map instead"), std::string::npos);
+}
+
+// Issue 56: auto gives a spot light whose cone lights receivers beyond one frustum's 75 degrees a
+// side the cube (wide_cone.gltf: an 80-degree cone over a long ground), with the reason; the same
+// scene with a 40-degree cone keeps one map, and so does --cascades 1, with a note that the
+// window is capped.
+TEST(CubeAuto, AWideSpotConeGetsTheCubeANarrowOneKeepsOneMap) {
+    scene::LoadResult r = scene::load_gltf(test::test_data_dir() + "/wide_cone.gltf");
+    ASSERT_TRUE(r.ok) << r.error;
+    scene::Scene& s = r.scene;
+    ASSERT_EQ(s.light.type, scene::LightType::Spot);
+    render::Settings settings;
+    const gl::Caps caps = penumbra::testing::full_caps();
+    const render::FramePlan wide = render::plan(s, settings, caps, render::offscreen(256, 256));
+    ASSERT_NE(render::cube_of(wide), nullptr);
+    EXPECT_EQ(render::cascades_why_of(wide),
+              "auto: a cube: the spot light's cone lights receivers in view beyond one frustum's 75 degrees a side");
+    EXPECT_FALSE(render::cube_of(wide)->faces[2].drawn);  // +y: the cone points down
+    ASSERT_EQ(render::parse_option(settings, "cascades", "1"), "");
+    const render::FramePlan one = render::plan(s, settings, caps, render::offscreen(256, 256));
+    EXPECT_EQ(render::cube_of(one), nullptr);
+    bool noted = false;
+    for (const std::string& n : one.notes) noted = noted || n.find("capped at 75 degrees") != std::string::npos;
+    EXPECT_TRUE(noted);
+    ASSERT_EQ(render::parse_option(settings, "cascades", "auto"), "");
+    s.light.spot_outer_cone = glm::radians(40.0f);
+    const render::FramePlan narrow = render::plan(s, settings, caps, render::offscreen(256, 256));
+    EXPECT_EQ(render::cube_of(narrow), nullptr);
 }
 
 TEST_F(CubePlan, AStillFaceIsSkippedAndAMovedCasterRedrawsItsFacesOnly) {

@@ -340,7 +340,9 @@ int run(int argc, char** argv) {
     auto* sweep_cmd = app.add_subcommand(
         "bias-sweep", "acne and peter-panning against bias, elevation, encoding and precision (results/precision)");
     tools::BiasSweepOptions sweep;
-    sweep_cmd->add_option("--out-dir", sweep.out_dir, "folder for the CSV, the table and the charts");
+    sweep_cmd->add_option("--out-dir", sweep.out_dir,
+                          "folder for the CSV, the table and the charts (default results/precision; with --quick "
+                          "out/precision-quick)");
     sweep_cmd->add_flag("--quick", sweep.quick, "3 elevations and 5 biases, for CI");
     sweep_cmd->add_option("--size", sweep.size, "image width = height (default 256)")->check(CLI::Range(16, 4096));
     sweep_cmd->add_option("--map-size", sweep.map_size, "shadow map size (default 1024)")->check(CLI::Range(16, 8192));
@@ -405,7 +407,11 @@ int run(int argc, char** argv) {
         if (*mipmaps_cmd) return tools::run_mipmaps(mipmaps);
         if (const int rc = tools::run_measure_commands(*measure); rc >= 0) return rc;
 #ifdef PENUMBRA_HAVE_TRUTH
-        if (*sweep_cmd) return tools::run_bias_sweep(sweep);
+        if (*sweep_cmd) {
+            // As with bench --quick: CI's small sweep never overwrites the committed results/precision.
+            if (sweep.quick && sweep_cmd->count("--out-dir") == 0) sweep.out_dir = "out/precision-quick";
+            return tools::run_bias_sweep(sweep);
+        }
         if (*grade_cmd) return tools::run_grade(grade);
 #endif
     } catch (const Failure& f) {

@@ -93,7 +93,8 @@ std::shared_ptr<MeasureCommands> add_measure_commands(CLI::App& app) {
     m->bench_cmd = app.add_subcommand("bench", "the sweep: error against the ray-traced truth, ms/frame and memory of every technique");
     auto& b = m->bench_options;
     m->bench_cmd->add_flag("--quick", b.quick, "small and fast (CI): 128x128, 5 frames, maps 256 and 1024, two scenes");
-    m->bench_cmd->add_option("--out-dir", b.out_dir, "folder for results.csv, results.md, tradeoff.svg/.png (default results/bench)");
+    m->bench_cmd->add_option("--out-dir", b.out_dir, "folder for results.csv, results.md, tradeoff.svg/.png (default results/bench; with --quick "
+                             "out/bench-quick, so a quick run never overwrites the committed figures)");
     m->bench_cmd->add_option("--size", b.size, "WxH of the frames " + bounds(render::option_info("size")) + " (default 512x512)");
     m->bench_cmd->add_option("--frames", b.frames, "timed frames per run, each finished with glFinish " +
                                                        bounds(render::option_info("frames")) + " (default 20)");
@@ -152,6 +153,8 @@ int run_measure_commands(MeasureCommands& m) {
             check_given(*m.bench_cmd, render::option_info("frames"));
             check_given(*m.bench_cmd, rounds_info());
             check_given(*m.bench_cmd, soft_samples_info());
+            // A quick run's timings mean nothing: unless told otherwise it stays out of the committed results/.
+            if (m.bench_options.quick && m.bench_cmd->count("--out-dir") == 0) m.bench_options.out_dir = "out/bench-quick";
             run_bench(m.bench_options);
             return 0;
         }

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "plan/techniques/reports.h"
+#include "plan/techniques/shadow_lookup.h"
 #include "plan/techniques/technique.h"
 #include "shadow/cube.h"
 #include "shadow/pcf.h"
@@ -179,71 +180,6 @@ int cascade_count(PlanContext& c, const ShadowBounds& b) {
     return asked;
 }
 
-// The cascades' uniforms (shadow.glsl, CASCADES): the light's axes (the same view for every
-// cascade), per cascade the scale and offset from the light's eye space to its own map's [0, 1]
-// coordinates, its tile of the atlas and its extents for the slope bias; the slices' far ends and
-// blend bands; the camera's view depth.
-void add_cascade_uniforms(const PlanContext& c, Binding& b, const ResourceDesc& map) {
-    const auto& cascades = cascades_of(c.plan);
-    const float w = static_cast<float>(map.width), h = static_cast<float>(map.height);
-    const float tile = w / 2.0f;
-    glm::vec4 ends(0.0f), bands(0.0f);
-    for (size_t i = 0; i < cascades.size(); ++i) {
-        const shadow::Cascade& k = cascades[i];
-        const std::string at = "[" + std::to_string(i) + "]";
-        // Texture space = clip / 2 + 1/2, and an orthographic clip space is eye space scaled and
-        // offset per axis: P[i][i] and P[3][i].
-        const glm::mat4& P = k.frustum.proj;
-        b.uniforms.push_back({"u_cascade_scale" + at, 0.5f * glm::vec3(P[0][0], P[1][1], P[2][2])});
-        b.uniforms.push_back({"u_cascade_offset" + at, 0.5f * glm::vec3(P[3][0], P[3][1], P[3][2]) + glm::vec3(0.5f)});
-        b.uniforms.push_back({"u_cascade_tile" + at, glm::vec4(static_cast<float>(k.tile_x) / w,
-                                                               static_cast<float>(k.tile_y) / h, tile / w, tile / h)});
-        b.uniforms.push_back({"u_cascade_slope" + at, glm::vec4(1.0f / k.frustum.proj[0][0], 1.0f / k.frustum.proj[1][1],
-                                                                k.frustum.znear, k.frustum.zfar)});
-        ends[static_cast<int>(i)] = k.end;
-        bands[static_cast<int>(i)] = k.band;
-    }
-    // Beyond the last cascade: the last's end (the lookup there says lit outside its window).
-    for (size_t i = cascades.size(); i < 4; ++i) ends[static_cast<int>(i)] = cascades.back().end;
-    b.uniforms.push_back({"u_cascade_light", cascades.front().frustum.view});
-    b.uniforms.push_back({"u_cascade_end", ends});
-    b.uniforms.push_back({"u_cascade_band", bands});
-    const glm::mat4& v = c.plan.camera.view;
-    b.uniforms.push_back({"u_cascade_depth", -glm::vec4(v[0][2], v[1][2], v[2][2], v[3][2])});
-}
-
-// Texels of each cube face's tile beyond its 90 degrees, per side, so that a filter's taps near a
-// face's edge read the depth of the directions there instead of the edge's texel again: none for
-// one tap (it never leaves the face by more than half a texel, and the clamp to the tile holds
-// it); PCF's reach (1.5 texels and the nearest texel's half) for PCF; PCSS's taps reach up to an
-// eighth of the map, so it gets a 32nd of the tile and its widest penumbrae near an edge are
-// clamped. Measured on bulb_room.gltf, PCF 4x4, within 2 pixels of a seam: 1.147 % -> 1.016 %
-// of error at 128 texels, 0.443 % -> 0.382 % at 256 (docs/cube.md).
-int cube_guard(const Settings& s, int size) {
-    switch (s.filter) {
-        case shadow::Filter::Hard: return 0;
-        case shadow::Filter::PCSS: return std::max(4, size / 32);
-        default: return 2;
-    }
-}
-
-// The cube's uniforms (shadow.glsl, CUBE): the light's position, each face's tile (zw 0: not
-// drawn), and the one projection's constants: tangent to texture, and the window depth of a depth
-// d along a face's axis, f / (f - n) - (f n / (f - n)) / d.
-void add_cube_uniforms(const shadow::CubeFit& fit, const scene::Light& light, Binding& b, const ResourceDesc& map) {
-    const float w = static_cast<float>(map.width), h = static_cast<float>(map.height);
-    const float t = static_cast<float>(fit.tile);
-    for (int f = 0; f < shadow::kCubeFaces; ++f) {
-        const shadow::CubeFace& face = fit.faces[static_cast<size_t>(f)];
-        b.uniforms.push_back({"u_cube_tile[" + std::to_string(f) + "]",
-                              face.drawn ? glm::vec4(static_cast<float>(face.tile_x) / w, static_cast<float>(face.tile_y) / h,
-                                                     t / w, t / h)
-                                         : glm::vec4(0.0f)});
-    }
-    const float n = fit.znear, f = fit.zfar;
-    b.uniforms.push_back({"u_cube_light", light.position});
-    b.uniforms.push_back({"u_cube_depth", glm::vec3(0.5f / fit.tangent, f / (f - n), f * n / (f - n))});
-}
 
 class ShadowMapModule : public Module {
 public:
@@ -286,6 +222,21 @@ public:
         // The light's frustum around the receivers the camera sees and the casters that can
         // shadow them; only those casters go into the map.
         const shadow::TightFit fit = fit_to_view(c, s.filter == shadow::Filter::PCSS && c.light.radius > 0.0f);
+        // A spot light whose cone lights receivers in view beyond what one frustum holds (75
+        // degrees a side), or that sits inside the scene's bounds, gets the cube's faces its cone
+        // reaches instead: no receiver in its cone counts as lit for want of a map (issue 56).
+        if (s.cascades == 0 && c.light.type == scene::LightType::Spot && !fit.visible.empty() && (fit.capped || !fit.tight)) {
+            const std::string why = fit.capped ? "auto: a cube: the spot light's cone lights receivers in view beyond "
+                                                 "one frustum's 75 degrees a side"
+                                               : "auto: a cube: the spot light is inside the scene's bounds";
+            if (cubed(c, shadow_bounds(c.scene, s.blend_shadows), size, why)) return;
+        }
+        if (fit.capped)
+            c.plan.notes.push_back(std::string("the light's window is capped at 75 degrees a side: receivers in view beyond it "
+                                               "count as lit") +
+                                   (c.light.type == scene::LightType::Spot && s.cascades != 0
+                                        ? " (--cascades auto gives this spot light a cube)"
+                                        : c.light.type == scene::LightType::Point ? " (--cascades cube holds them)" : ""));
         const shadow::LightFrustum& f = fit.frustum;
         c.plan.put(LightViewReport{f, fit.texel_use});
         std::vector<int> casters;
@@ -310,6 +261,7 @@ public:
                    ", faces " + faces_summary(p) + ", texel use " + percent(fit.texel_use) +
                    (fit.cut ? ", window cut to where the casters' shadows fall" : "") +
                    (fit.tight ? "" : ", fitted around the whole scene") +
+                   (fit.capped ? ", window capped at 75 degrees a side (receivers beyond it count as lit)" : "") +
                    (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
         c.add_pass(std::move(p));
     }
@@ -389,10 +341,13 @@ public:
     // faces of `size`, tiles of one atlas (3 x 2), one pass into each face that sees a visible
     // receiver, each with its own content key (a still face is not drawn again). false: one map
     // (a note says why when the cube was asked for).
-    bool cubed(PlanContext& c, const ShadowBounds& b, int size) const {
+    // `forced`: auto's reason for a spot light's cube, found by the one map's fit.
+    bool cubed(PlanContext& c, const ShadowBounds& b, int size, const std::string& forced = {}) const {
         const Settings& s = c.settings;
-        bool want = s.cascades == Settings::kCube;
-        if (want) {
+        bool want = s.cascades == Settings::kCube || !forced.empty();
+        if (!forced.empty()) {
+            cascades_report(c).why = forced;
+        } else if (want) {
             cascades_report(c).why = "--cascades cube";
         } else if (s.cascades == 0 && c.light.type != scene::LightType::Directional) {
             std::string why;
