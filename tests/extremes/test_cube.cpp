@@ -276,3 +276,46 @@ TEST_F(Cube, ACubeMapFaceHoldsTheAtlasTileTurnedHalfAround) {
 }
 
 }  // namespace
+
+// Issue 56: a spot light with an 80-degree outer cone low over a 40-long cable
+// (tests/data/wide_cone.gltf). From 12 to 18 along the cable on either side its shadow is 75-80
+// degrees off the spot's axis: inside the cone, outside any one frustum the fit allows. At the
+// defaults auto gives the spot the cube's faces its cone reaches; every technique that reads a map
+// then stays within the issue's 0.15 % of the truth, where one map (--cascades 1, the control)
+// misses several percent.
+class WideCone : public test::GlTest {
+protected:
+    scene::Scene scene_ = [] {
+        const scene::LoadResult r = scene::load_gltf(test::test_data_dir() + "/wide_cone.gltf");
+        EXPECT_TRUE(r.ok) << r.error;
+        return r.scene;
+    }();
+    measure::Score score(render::Settings s, render::FramePlan* plan = nullptr) {
+        s.aov = render::Aov::Visibility;
+        render::FramePlan p;
+        const auto vis = visibility_frame(scene_, s, kSize, nullptr, &p);
+        const measure::TruthImage t = test::truth_frame(scene_, p.camera.view_proj, kSize);
+        if (plan) *plan = p;
+        return measure::score(vis, t.lit, t.valid_mask());
+    }
+};
+
+TEST_F(WideCone, EveryMapTechniqueHoldsTheShadowBeyondSeventyFiveDegrees) {
+    render::Settings one;
+    ASSERT_EQ(render::parse_option(one, "cascades", "1"), "");
+    const measure::Score control = score(one);
+    std::printf("one map: %.3f %%\n", control.error_pct);
+    EXPECT_GT(control.error_pct, 1.0) << "one map should lose the shadow beyond its window";
+    const std::vector<std::pair<const char*, const char*>> cases = {
+        {"filter", "hard"}, {"filter", "pcf4x4"}, {"encoding", "depthtex"}, {"encoding", "r8"}, {"filter", "pcss"}};
+    for (const auto& [name, value] : cases) {
+        render::Settings s;
+        ASSERT_EQ(render::parse_option(s, name, value), "");
+        render::FramePlan p;
+        const measure::Score sc = score(s, &p);
+        std::printf("--%s %s: %.3f %% (%d faces)\n", name, value, sc.error_pct,
+                    render::cube_of(p) ? render::cube_of(p)->drawn() : 0);
+        ASSERT_NE(render::cube_of(p), nullptr) << name << " " << value;
+        EXPECT_LE(sc.error_pct, 0.15) << name << " " << value;
+    }
+}
