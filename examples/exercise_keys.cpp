@@ -107,7 +107,9 @@ std::string CourseApp::on_key(int key, bool shift) {
         if (i == n) {  // not among them (a map size off the list): step to the nearest ones
             int above = 0;
             if (k.option == "map-size")
-                while (above < n && std::stoi(values[static_cast<size_t>(above)]) < settings_.map_size) ++above;
+                while (above < n && values[static_cast<size_t>(above)] != "auto" &&
+                       std::stoi(values[static_cast<size_t>(above)]) < settings_.map_size)
+                    ++above;
             i = shift ? above : above - 1;
         }
         for (int step = 0; step < n; ++step) {

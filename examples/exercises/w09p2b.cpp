@@ -43,7 +43,7 @@ int index_of(const std::vector<T>& v, std::string_view name) {
 void draw(Host& host, render::Settings s, render::FrameInputs in) {
     s.aov = render::Aov::Color;
     const Toggles& toggles = host.toggles();
-    int size = std::clamp(host.settings().map_size, 1, host.gl_caps().max_target_size());
+    int size = std::clamp(host.settings().fixed_map_size(), 1, host.gl_caps().max_target_size());
     if (toggles.rtt_copy) {
         // glCopyTexImage2D copies what the window holds: the texture is no larger than the
         // window. The largest power of two that fits (WebGL 1 repeats only those).

@@ -78,13 +78,20 @@ std::vector<Option<Options>> make_table() {
     add(pcf_kernel, [](Options& o, std::string_view v) { o.settings.pcf_kernel = enum_of(v, shadow::kAllPcfKernels); },
         [](const Options& o) { return std::string(shadow::to_string(o.settings.pcf_kernel)); });
 
-    OptionInfo map_size = make_option_info("map-size", P::Technique, T::Integer, "shadow map width = height in texels", "Shadow map size");
+    OptionInfo map_size = make_option_info("map-size", P::Technique, T::Integer,
+                                           "shadow map width = height in texels; auto = matched to the screen: about one "
+                                           "texel a pixel over the receivers in view, a power of two (one map, a cube's "
+                                           "faces; cascades keep 1024)",
+                                           "Shadow map size", {{"auto", "auto: matched to the screen"}});
     map_size.min = 1;
     map_size.max = kMaxMapSize;
     map_size.presets = {{"256", "256 x 256"}, {"512", "512 x 512"}, {"1024", "1024 x 1024"}, {"2048", "2048 x 2048"},
-                        {"4096", "4096 x 4096"}};
-    add(map_size, [](Options& o, std::string_view v) { o.settings.map_size = int_of(v); },
-        [](const Options& o) { return std::to_string(o.settings.map_size); });
+                        {"4096", "4096 x 4096"}, {"auto", "auto: matched to the screen"}};
+    add(map_size,
+        [](Options& o, std::string_view v) { o.settings.map_size = v == "auto" ? Settings::kAutoMapSize : int_of(v); },
+        [](const Options& o) {
+            return o.settings.map_size == Settings::kAutoMapSize ? std::string("auto") : std::to_string(o.settings.map_size);
+        });
 
     OptionInfo cascades = make_option_info("cascades", P::Technique, T::Choice,
                          "cascaded shadow maps for a directional light: the camera's depth range split into N maps "

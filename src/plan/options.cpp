@@ -161,7 +161,8 @@ std::string accepted_values(const OptionInfo& o) {
                 return "a comma list of " + word_list({o.choices.begin() + 1, o.choices.end()}) + ", or " +
                        std::string(o.choices.front().value);
             return word_list(o.choices);
-        case OptionType::Integer: return "a whole number" + range_words(o);
+        case OptionType::Integer:
+            return "a whole number" + range_words(o) + (o.choices.empty() ? std::string() : ", or " + word_list(o.choices));
         case OptionType::Number: return "a number" + range_words(o);
         case OptionType::Size: return "WIDTHxHEIGHT" + (std::isfinite(o.max) ? ", each <= " + number_text(o.max) : std::string());
         case OptionType::Text: return std::string(o.help);
@@ -200,8 +201,11 @@ std::string check_value(const OptionInfo& o, std::string_view value) {
             if (!among()) return opt + "unknown value " + quoted + " (" + word_list(o.choices) + ")";
             return {};
         case OptionType::Integer: {
+            if (among()) return {};  // a word it also takes (--map-size auto)
             int v = 0;
-            if (!parse_int(value, v)) return opt + "not a whole number: " + quoted;
+            if (!parse_int(value, v))
+                return opt + "not a whole number: " + quoted +
+                       (o.choices.empty() ? std::string() : " (or " + word_list(o.choices, "'") + ")");
             if (std::string r = range_problem(o, v); !r.empty()) return opt + r + ", got " + quoted;
             return {};
         }

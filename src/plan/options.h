@@ -48,7 +48,7 @@ struct Options {
 enum class OptionPart { Technique, Job };
 enum class OptionType {
     Choice,        // one of `choices` (with `list`: a comma list of them, each once, or the first alone)
-    Integer,       // a whole number in [min, max]
+    Integer,       // a whole number in [min, max], or one of `choices` where it has any (--map-size auto)
     Number,        // a finite number in [min, max]
     Size,          // WIDTHxHEIGHT, each a whole number in [1, max]
     Text,          // any non-empty text

@@ -118,7 +118,12 @@ struct Settings {
     shadow::Filter filter = shadow::Filter::Hard;
     // PCF 4x4's corners-first early exit, or every tap (the course's kernel); shadow/pcf.h.
     shadow::PcfKernel pcf_kernel = shadow::PcfKernel::EarlyExit;
-    int map_size = 1024;  // with cascades: each cascade's map (the atlas holds them side by side)
+    // Texels a side; with cascades each cascade's map (the atlas holds them side by side), with a
+    // cube each face's. kAutoMapSize: matched to the screen pixels the map serves (shadow/resolution.h).
+    int map_size = 1024;
+    static constexpr int kAutoMapSize = 0;
+    // What a part that takes a fixed size uses under auto (the cascades, Gooch's texture, W09P2b).
+    int fixed_map_size() const { return map_size == kAutoMapSize ? 1024 : map_size; }
     // --cascades: the camera's depth range split into this many shadow maps, 1..4 (1: one map);
     // kCube: a point light's six faces (shadow/cube.h); 0 = auto (one map, cascades or a cube from
     // the scene, the camera and the light: shadow::auto_cascade_count, shadow::cube_wanted).

@@ -350,6 +350,18 @@ void run_sweep(Sweep& w) {
                 s.map_size = m;
                 techniques.push_back({s, technique_label(s)});
             }
+    // --map-size auto (issue 56): each encoding and filter with its map matched to the frame's
+    // pixels; the row's map is the size the plan chose.
+    if (o.references)
+        for (auto e : w.encodings)
+            for (auto f : w.filters) {
+                render::Settings s = w.base.settings;
+                s.technique = render::technique_named("shadowmap");
+                s.encoding = e;
+                s.filter = f;
+                s.map_size = render::Settings::kAutoMapSize;
+                techniques.push_back({s, technique_label(s) + std::string(kAutoSuffix)});
+            }
     for (Planned& b : before_rows(w)) techniques.push_back(std::move(b));
     // Shadow volumes, each way of counting: exact hard shadows at a cost that grows with the
     // silhouettes and the shadows' area on screen rather than with a map.
@@ -444,7 +456,9 @@ void run_sweep(Sweep& w) {
             s.aov = render::Aov::Visibility;
             const render::FramePlan& plan = r.render(still, s, in);
             const render::PlannedResource* map = plan.resource("shadow-map");
-            if (render::technique_module(s.technique).depth_map() && map && map->desc.width != s.map_size) {
+            if (render::technique_module(s.technique).depth_map() && map && s.map_size == render::Settings::kAutoMapSize) {
+                row.map = render::cube_of(plan) ? render::cube_of(plan)->tile : map->desc.width;
+            } else if (render::technique_module(s.technique).depth_map() && map && map->desc.width != s.map_size) {
                 row.map = map->desc.width;
                 w.notes.push_back(spec.label + ": " + row.technique + " map " + std::to_string(s.map_size) + " clamped to " +
                                   std::to_string(map->desc.width));

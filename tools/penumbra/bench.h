@@ -147,6 +147,8 @@ inline bool is_volumes(const std::string& technique) { return technique.rfind(kV
 
 // The technique column's suffix of the runs at the settings before issue 9 (bench.cpp, before_rows).
 inline constexpr const char* kBeforeSuffix = " (before)";
+// A row whose map is --map-size auto's (its map column the size chosen).
+inline constexpr const char* kAutoSuffix = " (map auto)";
 
 // ---- bench.cpp: helpers the sweep and the soft-shadow bench (soft_bench.cpp) share -------------
 

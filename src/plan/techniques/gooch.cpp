@@ -170,7 +170,7 @@ public:
         const float dr = rb.empty() ? f.zfar : std::max(glm::dot(row, glm::vec4(rb.center(), 1.0f)), 1e-3f);
         const float radius_uv = 0.5f * std::min(f.proj[0][0], f.proj[1][1]) *
                                 std::max(spread.x * dr + spread.y + spread.z / dr, 0.0f);
-        const int max = std::min(c.settings.map_size, c.caps.max_target_size());
+        const int max = std::min(c.settings.fixed_map_size(), c.caps.max_target_size());
         int size = max;
         if (radius_uv > 0.0f) {
             size = kMinTexture;

@@ -28,6 +28,12 @@ std::string LightViewReport::json(const LightViewReport& r) {
            ",\"view_proj\":" + json_floats(f.view_proj()) + "}";
 }
 
+std::string MapSizeReport::text(const MapSizeReport& r) { return "map size: " + r.why + "\n"; }
+
+std::string MapSizeReport::json(const MapSizeReport& r) {
+    return "{\"size\":" + std::to_string(r.size) + ",\"why\":" + json_quote(r.why) + "}";
+}
+
 std::string CascadesReport::text(const CascadesReport& r) {
     std::string o;
     if (!r.why.empty()) o += "cascades: " + r.why + "\n";

@@ -37,6 +37,15 @@ struct CascadesReport {
     static std::string json(const CascadesReport& r);
 };
 
+// --map-size auto: the size chosen for one map or each cube face, and why (shadow/resolution.h).
+struct MapSizeReport {
+    static constexpr const char* kKey = "map_size";
+    int size = 0;
+    std::string why;
+    static std::string text(const MapSizeReport& r);
+    static std::string json(const MapSizeReport& r);
+};
+
 // --cascades cube (or auto's choice of it): a point light's six faces, tiles of the shadow map's
 // atlas (or a GL cube map's faces); those drawn have a pass each.
 struct CubeReport {

@@ -10,6 +10,7 @@
 #include "plan/techniques/technique.h"
 #include "shadow/cube.h"
 #include "shadow/pcf.h"
+#include "shadow/resolution.h"
 
 namespace penumbra::render {
 
@@ -21,6 +22,10 @@ constexpr int kShadowUnit = 0;
 // and the whole frame falls into shadow: that is no longer a shadow map.
 constexpr int kMinMap = 16;
 constexpr const char* kMap = "shadow-map";
+// --map-size auto's bounds: a map below 128 texels resolves little; 64 MiB for the whole atlas.
+constexpr int kAutoSmallest = 128;
+constexpr int kAutoLargest = 4096;
+constexpr double kAutoBytes = 64.0 * 1024.0 * 1024.0;
 
 std::string number(double v) {
     char b[32];
@@ -206,7 +211,8 @@ public:
             c.plan.notes.push_back("no shadow casters: no shadow pass");
             return;
         }
-        int size = s.map_size;
+        const bool auto_size = s.map_size == Settings::kAutoMapSize;
+        int size = s.fixed_map_size();
         const int max = c.caps.max_target_size();
         if (size > max) {
             c.plan.notes.push_back("--map-size " + std::to_string(size) + " clamped to " + std::to_string(max) +
@@ -231,6 +237,7 @@ public:
                                                : "auto: a cube: the spot light is inside the scene's bounds";
             if (cubed(c, shadow_bounds(c.scene, s.blend_shadows), size, why)) return;
         }
+        if (auto_size) size = matched_size(c, fit.visible, {&fit.frustum}, 1);
         if (fit.capped)
             c.plan.notes.push_back(std::string("the light's window is capped at 75 degrees a side: receivers in view beyond it "
                                                "count as lit") +
@@ -264,6 +271,24 @@ public:
                    (fit.capped ? ", window capped at 75 degrees a side (receivers beyond it count as lit)" : "") +
                    (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
         c.add_pass(std::move(p));
+    }
+
+    // --map-size auto: texels a side for `tiles` maps of these frusta (one map, a cube's drawn
+    // faces) serving the receivers' points in view, the camera pass's pixels; the plan says why.
+    int matched_size(PlanContext& c, const std::vector<glm::vec3>& visible, const std::vector<const shadow::LightFrustum*>& frusta,
+                     int tiles) const {
+        float use = 0.0f;
+        for (const shadow::LightFrustum* f : frusta) use += shadow::texel_use(*f, visible);
+        const float pixels = shadow::screen_pixels(visible, c.plan.camera.view_proj, c.camera_target.width, c.camera_target.height);
+        // Within the context's largest target (the atlas's width: 3 faces of a cube side by side)
+        // and 64 MiB for the whole atlas at 6 bytes a texel (RGBA8 and a 16-bit depth buffer): one
+        // map at most 2048, a cube's face 1024.
+        const int across = tiles > 1 ? 3 : 1;
+        int largest = std::min(kAutoLargest, c.caps.max_target_size() / across);
+        while (largest > kAutoSmallest && 6.0 * tiles * largest * static_cast<double>(largest) > kAutoBytes) largest /= 2;
+        const shadow::MatchedSize m = shadow::matched_map_size(pixels, use, tiles, kAutoSmallest, largest);
+        c.plan.put(MapSizeReport{m.size, m.why});
+        return m.size;
     }
 
     // --cascades N > 1 with a directional light: N maps, tiles of one atlas (2x1 or 2x2 tiles of
@@ -375,6 +400,16 @@ public:
         std::string why;
         shadow::CubeFit fit = shadow::fit_cube(c.light, b.receivers, b.casters, c.plan.camera.view_proj, size,
                                                cube_guard(s, size), &why, cube_map);
+        if (s.map_size == Settings::kAutoMapSize && fit.drawn() > 0) {
+            // The faces' sizes from their texel use over the visible points, then the cube again
+            // at that size (the guard band, and so each face's field of view, follows the size).
+            std::vector<const shadow::LightFrustum*> drawn;
+            for (const shadow::CubeFace& face : fit.faces)
+                if (face.drawn) drawn.push_back(&face.frustum);
+            size = matched_size(c, fit.visible, drawn, static_cast<int>(drawn.size()));
+            fit = shadow::fit_cube(c.light, b.receivers, b.casters, c.plan.camera.view_proj, size, cube_guard(s, size), &why,
+                                   cube_map);
+        }
         if (fit.drawn() == 0) {
             c.plan.notes.push_back(cascades_report(c).why + ": one map instead, " + why);
             cascades_report(c).why += " -> one map (" + why + ")";

@@ -1,0 +1,51 @@
+// Resolution matching: see resolution.h.
+#include "shadow/resolution.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "shadow/convex.h"
+
+namespace penumbra::shadow {
+
+float screen_pixels(const std::vector<glm::vec3>& points, const glm::mat4& camera_view_proj, int width, int height) {
+    std::vector<glm::vec2> ndc;
+    ndc.reserve(points.size());
+    for (const glm::vec3& p : points) {
+        const glm::vec4 c = camera_view_proj * glm::vec4(p, 1.0f);
+        if (!(c.w > 0.0f)) continue;
+        const glm::vec2 n = glm::vec2(c) / c.w;
+        if (std::isfinite(n.x) && std::isfinite(n.y)) ndc.push_back(n);
+    }
+    const float area = polygon_area(clip_to_rect(convex_hull(std::move(ndc)), glm::vec2(-1.0f), glm::vec2(1.0f)));
+    // NDC's square is 2 x 2: a quarter of its area per pixel of the image.
+    return std::clamp(area / 4.0f, 0.0f, 1.0f) * static_cast<float>(width) * static_cast<float>(height);
+}
+
+MatchedSize matched_map_size(float pixels, float use, int maps, int smallest, int largest) {
+    MatchedSize m;
+    largest = std::max(largest, smallest);
+    char b[200];
+    if (!(pixels >= 1.0f) || !(use > 0.0f)) {
+        // Nothing of the receivers in view: the smallest map holds what little there is.
+        m.size = smallest;
+        std::snprintf(b, sizeof b, "auto %d: no receiver in view", m.size);
+        m.why = b;
+        return m;
+    }
+    // Each of `maps` tiles of n texels: n^2 * use texels over the receivers' pixels.
+    const double wanted = kTexelsPerPixel * std::sqrt(static_cast<double>(pixels) / static_cast<double>(use));
+    m.wanted = static_cast<int>(std::min(wanted, 1e9));
+    int n = smallest;
+    while (n < largest && n < wanted) n *= 2;
+    m.size = std::min(n, largest);
+    const char* bound = m.size == largest && wanted > largest ? ", the largest allowed" : m.size == smallest && wanted < smallest ? ", the smallest allowed" : "";
+    std::snprintf(b, sizeof b, "auto %d%s: the receivers in view cover %.0f pixels and %.1f%% of %s; %g texels a pixel want %d",
+                  m.size, bound, static_cast<double>(pixels), 100.0 * static_cast<double>(use) / std::max(maps, 1),
+                  maps > 1 ? "each face on average" : "the map", static_cast<double>(kTexelsPerPixel), m.wanted);
+    m.why = b;
+    return m;
+}
+
+}  // namespace penumbra::shadow
