@@ -52,7 +52,8 @@ std::vector<std::string> CourseApp::key_values(std::string_view option) const {
     const render::OptionInfo* info = nullptr;
     if (const auto* t = render::find_option(toggle_table(), option)) info = &t->info;
     else info = &render::option_info(option);
-    for (const render::Choice& c : info->choices.empty() ? info->presets : info->choices) out.emplace_back(c.value);
+    const bool presets = info->choices.empty() || info->type == render::OptionType::Integer;  // --map-size auto
+    for (const render::Choice& c : presets ? info->presets : info->choices) out.emplace_back(c.value);
     return out;
 }
 

@@ -156,7 +156,9 @@ std::vector<std::string> offered_values(const Exercise& x, const render::OptionI
         if (c.kind != ControlKind::Select && c.kind != ControlKind::Radio && c.kind != ControlKind::Checkbox) return {};
         if (!c.values.empty()) return {c.values.begin(), c.values.end()};
         std::vector<std::string> out;
-        for (const auto& ch : info.choices.empty() ? info.presets : info.choices) out.emplace_back(ch.value);
+        // An integer's words (--map-size auto) are among its presets.
+        const bool presets = info.choices.empty() || info.type == render::OptionType::Integer;
+        for (const auto& ch : presets ? info.presets : info.choices) out.emplace_back(ch.value);
         return out;
     }
     return {};
@@ -188,7 +190,7 @@ std::string CourseApp::keep_to_the_list(render::Settings& t, std::string_view na
     const std::vector<std::string> listed = offered;
     if (name == "map-size" && renderer_) {
         const int most = renderer_->caps().max_target_size();
-        offered.erase(std::remove_if(offered.begin(), offered.end(), [&](const std::string& x) { return std::stoi(x) > most; }),
+        offered.erase(std::remove_if(offered.begin(), offered.end(), [&](const std::string& x) { return x != "auto" && std::stoi(x) > most; }),
                       offered.end());
         if (offered.empty()) offered = {listed.front()};
     }
@@ -198,7 +200,8 @@ std::string CourseApp::keep_to_the_list(render::Settings& t, std::string_view na
         render::parse_number(x, d);  // whole numbers: the option's value and the exercise's list
         return d;
     };
-    const double want = number(v);
+    // auto, where a list lacks it (W09P2b's texture sizes): the size it stands for elsewhere.
+    const double want = v == "auto" ? static_cast<double>(t.fixed_map_size()) : number(v);
     const auto distance = [&](const std::string& x) { return std::fabs(std::log((number(x) + 1.0) / (want + 1.0))); };
     std::string best = offered.front();
     for (const auto& x : offered)

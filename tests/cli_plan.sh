@@ -87,8 +87,14 @@ faces = [q["target"].get("face") for q in p["passes"] if q["name"].startswith("s
 assert faces and all(f == q for f, q in zip(faces, [x["face"] for x in p["cube"]["faces"] if x["drawn"]])), faces' \
   && echo "ok cube map: one 128 x 128 cube texture, a pass per drawn face into that face" || { echo "FAIL cube map"; fail=1; }
 "$penumbra" plan --scene "$data/terrain_km.gltf" --cascades cube --size 64x64 > cube-sun.txt &&
-  grep -q "note: --cascades cube: one map instead, the light is not a point light" cube-sun.txt \
+  grep -q "note: --cascades cube: one map instead, the light is directional" cube-sun.txt \
   && echo "ok cube with a sun: one map, a note" || { echo "FAIL cube with a directional light"; fail=1; }
+# Issue 56: a spot light's 80-degree cone over a long ground gets the cube's faces it reaches, and
+# --map-size auto says what it chose and why.
+"$penumbra" plan --scene "$data/wide_cone.gltf" --size 64x64 --map-size auto > wide-cone.txt &&
+  grep -q "^cascades: auto: a cube: the spot light's cone lights receivers in view beyond one frustum's 75 degrees a side" wide-cone.txt &&
+  grep -q "^cube: 4 of 6 faces drawn" wide-cone.txt && grep -q "^map size: auto 128, the smallest allowed: " wide-cone.txt \
+  && echo "ok wide cone: a cube of the faces its cone reaches, its size matched" || { echo "FAIL wide cone"; cat wide-cone.txt; fail=1; }
 
 # Shadow volumes: the plan says what they cost and which method each caster got.
 "$penumbra" plan --technique volumes --eye in-shadow --size 64x64 --json > volumes.json &&

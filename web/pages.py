@@ -21,7 +21,8 @@ def esc(s: str) -> str:
 
 def choices_of(option: dict, control: dict) -> list:
     """The (value, label) pairs a select or radio group offers."""
-    pool = option["choices"] or option["presets"]
+    # An integer's words (map-size auto) are among its presets.
+    pool = option["presets"] if option["type"] == "integer" and option["presets"] else option["choices"] or option["presets"]
     labels = {c["value"]: c["label"] for c in pool}
     values = control["values"] or [c["value"] for c in pool]
     # A list option's value ("outline,mirror"): its choices' labels joined.

@@ -477,7 +477,7 @@ TEST(ExerciseValues, AMapSizeOffTheListTakesTheNearestListedWithANote) {
     EXPECT_EQ(a.set_option("map-size", "1500"), "");
     EXPECT_EQ(a.settings().map_size, 2048) << "1500 is nearer 2048 than 1024 on a log scale";
     EXPECT_NE(a.note().find("map-size=1500"), std::string::npos) << a.note();
-    EXPECT_NE(a.note().find("(256, 512, 1024, 2048, 4096); using 2048"), std::string::npos) << a.note();
+    EXPECT_NE(a.note().find("(256, 512, 1024, 2048, 4096, auto); using 2048"), std::string::npos) << a.note();
     EXPECT_EQ(a.set_option("map-size", "60000"), "");
     EXPECT_EQ(a.settings().map_size, 4096) << "the page's largest size";
     EXPECT_NE(a.note().find("using 4096"), std::string::npos) << a.note();
@@ -487,8 +487,15 @@ TEST(ExerciseValues, AMapSizeOffTheListTakesTheNearestListedWithANote) {
     EXPECT_EQ(a.set_option("map-size", "512"), "");
     EXPECT_EQ(a.note(), "");
     EXPECT_EQ(a.settings().map_size, 512);
-    // W09P2b's texture sizes stop at 2048.
+    // auto (issue 56) is offered: kept as it is, no note.
+    EXPECT_EQ(a.set_option("map-size", "auto"), "");
+    EXPECT_EQ(a.note(), "");
+    EXPECT_EQ(a.settings().map_size, penumbra::render::Settings::kAutoMapSize);
+    EXPECT_NE(a.query().find("map-size=auto"), std::string::npos) << a.query();
+    // W09P2b's texture sizes stop at 2048, and auto is not among them: the size it stands for.
     CourseApp b("w09p2b");
+    EXPECT_EQ(b.set_option("map-size", "auto"), "");
+    EXPECT_EQ(b.settings().map_size, 1024) << b.note();
     EXPECT_EQ(b.set_option("map-size", "8192"), "");
     EXPECT_EQ(b.settings().map_size, 2048);
     EXPECT_EQ(b.query().find("8192"), std::string::npos) << b.query();

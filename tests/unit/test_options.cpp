@@ -128,8 +128,9 @@ TEST(Options, BadValuesAreNamedAndLeaveTheOptionsAlone) {
         {"map-size", "-4", "--map-size: must lie in [1, 65536], got '-4'"},
         {"map-size", "65537", "--map-size: must lie in [1, 65536], got '65537'"},
         {"size", "16385x16", "--size: width and height must be at most 16384 (the maximum), got '16385x16'"},
-        {"map-size", "1.5", "--map-size: not a whole number: '1.5'"},
-        {"map-size", "99999999999", "--map-size: not a whole number: '99999999999'"},
+        {"map-size", "1.5", "--map-size: not a whole number: '1.5' (or 'auto')"},
+        {"map-size", "99999999999", "--map-size: not a whole number: '99999999999' (or 'auto')"},
+        {"map-size", "Auto", "--map-size: not a whole number: 'Auto' (or 'auto')"},
         {"time", "nan", "--time: must be a finite number in [-1000000, 1000000], got 'nan'"},
         {"time", "-inf", "--time: must be a finite number in [-1000000, 1000000], got '-inf'"},
         {"time", "1e7", "--time: must lie in [-1000000, 1000000], got '1e7'"},
@@ -180,13 +181,14 @@ TEST(Options, ArgsLabelTheResult) {
 
 TEST(Options, AcceptedValuesAndListsComeFromTheTable) {
     EXPECT_EQ(accepted_values(option_info("encoding")), "r8, rgba, depthtex");
-    EXPECT_EQ(accepted_values(option_info("map-size")), "a whole number in [1, 65536]");
+    EXPECT_EQ(accepted_values(option_info("map-size")), "a whole number in [1, 65536], or auto");
+    EXPECT_EQ(accepted_values(option_info("pcss-taps")).find(", or"), std::string::npos);  // an integer with no words
     EXPECT_EQ(accepted_values(option_info("size")), "WIDTHxHEIGHT, each <= 16384");
     EXPECT_EQ(accepted_values(option_info("bias")), "a number in [0, 1], or auto, sheet");
     std::vector<std::string> out;
     EXPECT_EQ(parse_list(option_info("filter"), "hard,pcf4x4", out), "");
     EXPECT_EQ(out, (std::vector<std::string>{"hard", "pcf4x4"}));
-    EXPECT_EQ(parse_list(option_info("map-size"), "256,x", out), "--map-size: not a whole number: 'x'");
+    EXPECT_EQ(parse_list(option_info("map-size"), "256,x", out), "--map-size: not a whole number: 'x' (or 'auto')");
     EXPECT_EQ(out.size(), 2u) << "nothing added on a problem";
     EXPECT_NE(parse_list(option_info("encoding"), "", out), "");
 }

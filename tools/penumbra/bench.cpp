@@ -161,42 +161,6 @@ Sweep configure(const BenchOptions& in) {
     return w;
 }
 
-// A run of the sweep: its settings and the technique column of its rows.
-struct Planned {
-    render::Settings settings;
-    std::string label;
-};
-
-// The defaults as they were before issue 9 ("Better than three.js on the same frames"): the
-// sheet's constant bias, both faces into the map, the frustum fitted around the whole scene and
-// PCF's full kernel. With the references, and unless --set changes one of these options itself,
-// the sweep also runs rgba hard and rgba pcf4x4 at those of the map sizes 512, 1024 and 2048 it sweeps,
-// labelled "... (before)", so the report can set the defaults against them.
-std::vector<Planned> before_rows(const Sweep& w) {
-    std::vector<Planned> out;
-    const char* const kBefore[][2] = {{"bias", "sheet"}, {"map-faces", "both"}, {"light-fit", "scene"}, {"pcf-kernel", "full"}};
-    if (!w.o.references || std::find(w.encodings.begin(), w.encodings.end(), shadow::Encoding::RGBA) == w.encodings.end())
-        return out;
-    for (const auto& kv : w.o.set)
-        for (const auto& b : kBefore)
-            if (kv.rfind(std::string(b[0]) + "=", 0) == 0) return out;
-    for (auto f : {shadow::Filter::Hard, shadow::Filter::PCF4x4}) {
-        if (std::find(w.filters.begin(), w.filters.end(), f) == w.filters.end()) continue;
-        for (int m : w.o.maps) {
-            if (m != 512 && m != 1024 && m != 2048) continue;
-            render::Settings s = w.base.settings;
-            s.technique = render::technique_named("shadowmap");
-            s.encoding = shadow::Encoding::RGBA;
-            s.filter = f;
-            s.map_size = m;
-            for (const auto& b : kBefore)
-                if (const std::string err = render::parse_option(s, b[0], b[1]); !err.empty()) throw CommandError{err, 1};
-            out.push_back({s, technique_label(s) + std::string(kBeforeSuffix)});
-        }
-    }
-    return out;
-}
-
 void set_volume_stats(Row& row, const render::VolumeStats& v) {
     row.silhouette_edges = v.silhouette_edges;
     row.volume_triangles = v.triangles;
@@ -350,18 +314,7 @@ void run_sweep(Sweep& w) {
                 s.map_size = m;
                 techniques.push_back({s, technique_label(s)});
             }
-    // --map-size auto (issue 56): each encoding and filter with its map matched to the frame's
-    // pixels; the row's map is the size the plan chose.
-    if (o.references)
-        for (auto e : w.encodings)
-            for (auto f : w.filters) {
-                render::Settings s = w.base.settings;
-                s.technique = render::technique_named("shadowmap");
-                s.encoding = e;
-                s.filter = f;
-                s.map_size = render::Settings::kAutoMapSize;
-                techniques.push_back({s, technique_label(s) + std::string(kAutoSuffix)});
-            }
+    for (Planned& a : auto_rows(w)) techniques.push_back(std::move(a));
     for (Planned& b : before_rows(w)) techniques.push_back(std::move(b));
     // Shadow volumes, each way of counting: exact hard shadows at a cost that grows with the
     // silhouettes and the shadows' area on screen rather than with a map.

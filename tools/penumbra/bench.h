@@ -150,6 +150,16 @@ inline constexpr const char* kBeforeSuffix = " (before)";
 // A row whose map is --map-size auto's (its map column the size chosen).
 inline constexpr const char* kAutoSuffix = " (map auto)";
 
+// ---- bench_rows.cpp: the sweep's rows beyond encodings x filters x maps ----------------------------
+
+// A run of the sweep: its settings and the technique column of its rows.
+struct Planned {
+    render::Settings settings;
+    std::string label;
+};
+std::vector<Planned> auto_rows(const Sweep& w);    // --map-size auto, each encoding and filter
+std::vector<Planned> before_rows(const Sweep& w);  // the defaults before issue 9
+
 // ---- bench.cpp: helpers the sweep and the soft-shadow bench (soft_bench.cpp) share -------------
 
 // The technique column: "rgba pcf4x4", "volumes auto", "planar".

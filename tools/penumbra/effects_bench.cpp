@@ -108,10 +108,6 @@ void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in)
     const scene::Scene still = src.at(spec->time);
     r.load(still);
 
-    struct Planned {
-        render::Settings settings;
-        std::string label;
-    };
     std::vector<Planned> techniques;
     {
         render::Settings s = w.base.settings;
