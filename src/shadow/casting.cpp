@@ -99,9 +99,11 @@ bool may_shadow(const scene::Bounds& caster, const std::vector<glm::vec3>& point
 
 std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& light,
                                                       const std::vector<scene::Bounds>& receivers,
-                                                      const glm::mat4& camera_view_proj, std::vector<char>& whole) {
+                                                      const glm::mat4& camera_view_proj, std::vector<char>& whole,
+                                                      const std::vector<glm::vec4>& also) {
     const std::array<HalfSpace, 6> camera = clip_volume_half_spaces(camera_view_proj);
     std::vector<HalfSpace> hs(camera.begin(), camera.end());
+    hs.insert(hs.end(), also.begin(), also.end());
     // A spot light lights nothing outside its outer cone: the four planes through the light that
     // touch the cone (a pyramid holding it), when the cone is under a hemisphere.
     const float theta = light.spot_outer_cone;

@@ -59,10 +59,12 @@ struct TightFit {
 std::vector<glm::vec3> visible_receiver_points(const scene::Light& light, const std::vector<scene::Bounds>& receivers,
                                                const glm::mat4& camera_view_proj);
 // The same, one list per receiver (in the order of `receivers`); a box in view whole gives its
-// eight corners and a 1 in `whole` (clip_box_by).
+// eight corners and a 1 in `whole` (clip_box_by). `also`: further half-spaces to clip by (a cube
+// face's frustum, for what that face serves).
 std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& light,
                                                       const std::vector<scene::Bounds>& receivers,
-                                                      const glm::mat4& camera_view_proj, std::vector<char>& whole);
+                                                      const glm::mat4& camera_view_proj, std::vector<char>& whole,
+                                                      const std::vector<glm::vec4>& also = {});
 // Where the fits aim: the mean of the receivers' visible points, a box in view whole counted as
 // its six faces' 24 corners (in clip_box's order, as the fits counted them before boxes were kept
 // whole: the aim, and so every plan, stays the same to the bit).

@@ -25,7 +25,10 @@ float screen_pixels(const std::vector<glm::vec3>& points, const glm::mat4& camer
 
 MatchedSize matched_map_size(float pixels, float use, int maps, int smallest, int largest) {
     MatchedSize m;
-    largest = std::max(largest, smallest);
+    // Powers of two only: `largest` down to one (a cube's atlas bound, 4096 / 3, is 1365).
+    int p = smallest;
+    while (p * 2 <= largest) p *= 2;
+    largest = p;
     char b[200];
     if (!(pixels >= 1.0f) || !(use > 0.0f)) {
         // Nothing of the receivers in view: the smallest map holds what little there is.

@@ -43,6 +43,8 @@ TEST(Resolution, TwoTexelsAPixelRoundedUpToAPowerOfTwoWithinTheBounds) {
     m = shadow::matched_map_size(4096.0f * 4096.0f, 1.0f, 1, 128, 2048);
     EXPECT_EQ(m.size, 2048);
     EXPECT_NE(m.why.find("the largest allowed"), std::string::npos) << m.why;
+    // A bound that is no power of two (a cube's atlas: 4096 / 3): the power of two below it.
+    EXPECT_EQ(shadow::matched_map_size(4096.0f * 4096.0f, 1.0f, 1, 128, 1365).size, 1024);
     m = shadow::matched_map_size(10.0f, 1.0f, 1, 128, 2048);
     EXPECT_EQ(m.size, 128);
     EXPECT_NE(m.why.find("the smallest allowed"), std::string::npos) << m.why;

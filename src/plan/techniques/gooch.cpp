@@ -152,6 +152,10 @@ public:
         const shadow::TightFit fit = fit_to_view(c, true);
         const shadow::LightFrustum& f = fit.frustum;
         c.plan.put(LightViewReport{f, fit.texel_use});
+        // One texture, one frustum: no cube here (issue 56 left it), so say what is lost.
+        if (fit.capped)
+            c.plan.notes.push_back("--gooch-method texture: the light's window is capped at 75 degrees a side: the ground "
+                                   "beyond it gets no shadow (--gooch-method planes holds it)");
         std::vector<int> casters;
         for (int k : fit.casters) {
             const int i = c.casters[static_cast<size_t>(k)];
