@@ -98,8 +98,8 @@ std::vector<Option<Options>> make_table() {
                          "of --map-size each, side by side in one atlas (near slices get the finer texels); cube = "
                          "a point light's six faces (omnidirectional), each --map-size; auto = from the scene, the "
                          "camera and the light (cascades: one per factor of 8 in the depth range seen; a cube: a "
-                         "point light inside the scene, or a spot light whose cone lights more than one map's 75 "
-                         "degrees a side holds, only the faces its cone reaches); 1 = one map",
+                         "point light inside the scene, or a point or spot light lighting receivers in view beyond one "
+                         "map's 75 degrees a side, a spot's only the faces its cone reaches); 1 = one map",
                          "Cascades",
                          {{"1", "1 (one map)"}, {"2", "2"}, {"3", "3"}, {"4", "4"}, {"cube", "cube (point light)"}, {"auto", "auto"}});
     add(cascades,

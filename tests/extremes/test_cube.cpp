@@ -319,3 +319,18 @@ TEST_F(WideCone, EveryMapTechniqueHoldsTheShadowBeyondSeventyFiveDegrees) {
         EXPECT_LE(sc.error_pct, 0.15) << name << " " << value;
     }
 }
+
+// A point light in the spot's place: the ground it lights runs beside and behind it, which one
+// map (fitted around the whole scene) counts as lit; auto's cube holds it.
+TEST_F(WideCone, APointLightThereGetsTheCubeToo) {
+    scene_.light.type = scene::LightType::Point;
+    render::Settings one;
+    ASSERT_EQ(render::parse_option(one, "cascades", "1"), "");
+    const measure::Score control = score(one);
+    render::FramePlan p;
+    const measure::Score cube = score(render::Settings{}, &p);
+    std::printf("point light: one map %.3f %%, auto %.3f %%\n", control.error_pct, cube.error_pct);
+    EXPECT_GT(control.error_pct, 1.0);
+    ASSERT_NE(render::cube_of(p), nullptr);
+    EXPECT_LE(cube.error_pct, 0.15);
+}

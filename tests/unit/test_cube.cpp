@@ -297,7 +297,7 @@ TEST(CubeAuto, AWideSpotConeGetsTheCubeANarrowOneKeepsOneMap) {
     const render::FramePlan wide = render::plan(s, settings, caps, render::offscreen(256, 256));
     ASSERT_NE(render::cube_of(wide), nullptr);
     EXPECT_EQ(render::cascades_why_of(wide),
-              "auto: a cube: the spot light's cone lights receivers in view beyond one frustum's 75 degrees a side");
+              "auto: a cube: the spot light lights receivers in view beyond one frustum's 75 degrees a side");
     EXPECT_FALSE(render::cube_of(wide)->faces[2].drawn);  // +y: the cone points down
     ASSERT_EQ(render::parse_option(settings, "cascades", "1"), "");
     const render::FramePlan one = render::plan(s, settings, caps, render::offscreen(256, 256));
@@ -309,6 +309,13 @@ TEST(CubeAuto, AWideSpotConeGetsTheCubeANarrowOneKeepsOneMap) {
     s.light.spot_outer_cone = glm::radians(40.0f);
     const render::FramePlan narrow = render::plan(s, settings, caps, render::offscreen(256, 256));
     EXPECT_EQ(render::cube_of(narrow), nullptr);
+    // A point light in the spot's place: outside every box, so not a bulb's cube, but the ground
+    // it lights in view runs beside and behind it: the cube, with its reason.
+    s.light.type = scene::LightType::Point;
+    const render::FramePlan point = render::plan(s, settings, caps, render::offscreen(256, 256));
+    ASSERT_NE(render::cube_of(point), nullptr);
+    EXPECT_EQ(render::cascades_why_of(point), "auto: a cube: the point light lights receivers in view that no one frustum "
+                                              "holds (beside or behind it, or around it)");
 }
 
 TEST_F(CubePlan, AStillFaceIsSkippedAndAMovedCasterRedrawsItsFacesOnly) {

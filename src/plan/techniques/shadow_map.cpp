@@ -5,13 +5,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "plan/techniques/map_size.h"
 #include "plan/techniques/reports.h"
 #include "plan/techniques/shadow_lookup.h"
 #include "plan/techniques/technique.h"
-#include "shadow/convex.h"
 #include "shadow/cube.h"
 #include "shadow/pcf.h"
-#include "shadow/resolution.h"
 
 namespace penumbra::render {
 
@@ -23,10 +22,6 @@ constexpr int kShadowUnit = 0;
 // and the whole frame falls into shadow: that is no longer a shadow map.
 constexpr int kMinMap = 16;
 constexpr const char* kMap = "shadow-map";
-// --map-size auto's bounds: a map below 128 texels resolves little; 64 MiB for the whole atlas.
-constexpr int kAutoSmallest = 128;
-constexpr int kAutoLargest = 4096;
-constexpr double kAutoBytes = 64.0 * 1024.0 * 1024.0;
 
 std::string number(double v) {
     char b[32];
@@ -229,22 +224,24 @@ public:
         // The light's frustum around the receivers the camera sees and the casters that can
         // shadow them; only those casters go into the map.
         const shadow::TightFit fit = fit_to_view(c, s.filter == shadow::Filter::PCSS && c.light.radius > 0.0f);
-        // A spot light whose cone lights receivers in view beyond what one frustum holds (75
-        // degrees a side), or that sits inside the scene's bounds, gets the cube's faces its cone
-        // reaches instead: no receiver in its cone counts as lit for want of a map (issue 56).
-        if (s.cascades == 0 && c.light.type == scene::LightType::Spot && !fit.visible.empty() && (fit.capped || !fit.tight)) {
-            const std::string why = fit.capped ? "auto: a cube: the spot light's cone lights receivers in view beyond "
-                                                 "one frustum's 75 degrees a side"
-                                               : "auto: a cube: the spot light is inside the scene's bounds";
+        // A point or spot light that lights receivers in view beyond what one frustum holds (75
+        // degrees a side, or beside and behind the light) gets the cube instead, a spot light only
+        // the faces its cone reaches: no receiver counts as lit for want of a map (issue 56).
+        if (s.cascades == 0 && c.light.type != scene::LightType::Directional && !fit.visible.empty() &&
+            (fit.capped || !fit.tight)) {
+            const std::string light = c.light.type == scene::LightType::Spot ? "spot" : "point";
+            const std::string why = "auto: a cube: the " + light + " light lights receivers in view " +
+                                    (fit.capped ? "beyond one frustum's 75 degrees a side"
+                                                : "that no one frustum holds (beside or behind it, or around it)");
             if (cubed(c, shadow_bounds(c.scene, s.blend_shadows), size, why)) return;
         }
-        if (auto_size) size = matched_size(c, fit.visible, fit.frustum);
+        if (auto_size) size = auto_map_size(c, fit.visible, fit.frustum);
         if (fit.capped)
             c.plan.notes.push_back(std::string("the light's window is capped at 75 degrees a side: receivers in view beyond it "
                                                "count as lit") +
-                                   (c.light.type == scene::LightType::Spot && s.cascades != 0
-                                        ? " (--cascades auto gives this spot light a cube)"
-                                        : c.light.type == scene::LightType::Point ? " (--cascades cube holds them)" : ""));
+                                   (c.light.type != scene::LightType::Directional && s.cascades != 0
+                                        ? " (--cascades auto gives this light a cube)"
+                                        : ""));
         const shadow::LightFrustum& f = fit.frustum;
         c.plan.put(LightViewReport{f, fit.texel_use});
         std::vector<int> casters;
@@ -272,52 +269,6 @@ public:
                    (fit.capped ? ", window capped at 75 degrees a side (receivers beyond it count as lit)" : "") +
                    (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
         c.add_pass(std::move(p));
-    }
-
-    // --map-size auto: texels a side for one map of frustum `f` serving the receivers' points in
-    // view, the camera pass's pixels; the plan says why.
-    int matched_size(PlanContext& c, const std::vector<glm::vec3>& visible, const shadow::LightFrustum& f) const {
-        const float pixels = shadow::screen_pixels(visible, c.plan.camera.view_proj, c.camera_target.width, c.camera_target.height);
-        const shadow::MatchedSize m =
-            shadow::matched_map_size(pixels, shadow::texel_use(f, visible), 1, kAutoSmallest, auto_largest(c, 1));
-        c.plan.put(MapSizeReport{m.size, m.why});
-        return m.size;
-    }
-    // The same for a cube: each drawn face matched to the receivers it serves (those in view
-    // inside its frustum), the largest size any face asks for. A face that sees the ground at a
-    // grazing angle covers few of its texels with many pixels; a mean over the faces would
-    // under-sample it (wide_cone.gltf: 0.276 % of error with faces of 512, 0.057 % with 1024).
-    int matched_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& fit) const {
-        shadow::MatchedSize best;
-        int face_index = -1;
-        std::vector<char> whole;
-        for (int i = 0; i < shadow::kCubeFaces; ++i) {
-            const shadow::CubeFace& face = fit.faces[static_cast<size_t>(i)];
-            if (!face.drawn) continue;
-            const std::array<glm::vec4, 6> planes = shadow::clip_volume_half_spaces(face.frustum.view_proj());
-            std::vector<glm::vec3> served;
-            for (std::vector<glm::vec3>& part : shadow::visible_points_each(c.light, b.receivers, c.plan.camera.view_proj, whole,
-                                                                            {planes.begin(), planes.end()}))
-                served.insert(served.end(), part.begin(), part.end());
-            const float pixels =
-                shadow::screen_pixels(served, c.plan.camera.view_proj, c.camera_target.width, c.camera_target.height);
-            const shadow::MatchedSize m = shadow::matched_map_size(pixels, shadow::texel_use(face.frustum, served), 1,
-                                                                   kAutoSmallest, auto_largest(c, shadow::kCubeFaces));
-            if (face_index < 0 || m.wanted > best.wanted) best = m, face_index = i;
-        }
-        best.why += std::string(" (face ") + shadow::cube_face_name(face_index) + ", the most of the " +
-                    std::to_string(fit.drawn()) + " drawn)";
-        c.plan.put(MapSizeReport{best.size, best.why});
-        return best.size;
-    }
-    // Within the context's largest target (a cube's atlas is 3 faces wide) and 64 MiB for the
-    // whole atlas at 6 bytes a texel (RGBA8 and a 16-bit depth buffer): one map at most 2048, a
-    // cube's faces 1024.
-    static int auto_largest(const PlanContext& c, int tiles) {
-        const int across = tiles > 1 ? 3 : 1;
-        int largest = std::min(kAutoLargest, c.caps.max_target_size() / across);
-        while (largest > kAutoSmallest && 6.0 * tiles * largest * static_cast<double>(largest) > kAutoBytes) largest /= 2;
-        return largest;
     }
 
     // --cascades N > 1 with a directional light: N maps, tiles of one atlas (2x1 or 2x2 tiles of
@@ -432,7 +383,7 @@ public:
         if (s.map_size == Settings::kAutoMapSize && fit.drawn() > 0) {
             // The faces' size from what each serves, then the cube again at that size (the guard
             // band, and so each face's field of view, follows the size).
-            size = matched_size(c, b, fit);
+            size = auto_map_size(c, b, fit);
             fit = shadow::fit_cube(c.light, b.receivers, b.casters, c.plan.camera.view_proj, size, cube_guard(s, size), &why,
                                    cube_map);
         }

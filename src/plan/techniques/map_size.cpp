@@ -1,0 +1,66 @@
+// --map-size auto in the plan: the shadow map's, or a cube's faces', size from the pixels they
+// serve (the maths: shadow/resolution.h), and the line `penumbra plan` prints for it.
+#include "plan/techniques/map_size.h"
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+#include "plan/techniques/reports.h"
+#include "shadow/convex.h"
+#include "shadow/resolution.h"
+
+namespace penumbra::render {
+
+namespace {
+
+// A map below 128 texels resolves little.
+constexpr int kAutoSmallest = 128;
+constexpr int kAutoLargest = 4096;
+constexpr double kAutoBytes = 64.0 * 1024.0 * 1024.0;
+
+// Within the context's largest target (a cube's atlas is 3 faces wide) and 64 MiB for the
+// whole atlas at 6 bytes a texel (RGBA8 and a 16-bit depth buffer): one map at most 2048, a
+// cube's faces 1024.
+int auto_largest(const PlanContext& c, int tiles) {
+    const int across = tiles > 1 ? 3 : 1;
+    int largest = std::min(kAutoLargest, c.caps.max_target_size() / across);
+    while (largest > kAutoSmallest && 6.0 * tiles * largest * static_cast<double>(largest) > kAutoBytes) largest /= 2;
+    return largest;
+}
+
+}  // namespace
+
+int auto_map_size(PlanContext& c, const std::vector<glm::vec3>& visible, const shadow::LightFrustum& f) {
+    const float pixels = shadow::screen_pixels(visible, c.plan.camera.view_proj, c.camera_target.width, c.camera_target.height);
+    const shadow::MatchedSize m =
+        shadow::matched_map_size(pixels, shadow::texel_use(f, visible), 1, kAutoSmallest, auto_largest(c, 1));
+    c.plan.put(MapSizeReport{m.size, m.why});
+    return m.size;
+}
+
+int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& fit) {
+    shadow::MatchedSize best;
+    int face_index = -1;
+    std::vector<char> whole;
+    for (int i = 0; i < shadow::kCubeFaces; ++i) {
+        const shadow::CubeFace& face = fit.faces[static_cast<size_t>(i)];
+        if (!face.drawn) continue;
+        const std::array<glm::vec4, 6> planes = shadow::clip_volume_half_spaces(face.frustum.view_proj());
+        std::vector<glm::vec3> served;
+        for (std::vector<glm::vec3>& part : shadow::visible_points_each(c.light, b.receivers, c.plan.camera.view_proj, whole,
+                                                                        {planes.begin(), planes.end()}))
+            served.insert(served.end(), part.begin(), part.end());
+        const float pixels =
+            shadow::screen_pixels(served, c.plan.camera.view_proj, c.camera_target.width, c.camera_target.height);
+        const shadow::MatchedSize m = shadow::matched_map_size(pixels, shadow::texel_use(face.frustum, served), 1,
+                                                               kAutoSmallest, auto_largest(c, shadow::kCubeFaces));
+        if (face_index < 0 || m.wanted > best.wanted) best = m, face_index = i;
+    }
+    best.why += std::string(" (face ") + shadow::cube_face_name(face_index) + ", the most of the " +
+                std::to_string(fit.drawn()) + " drawn)";
+    c.plan.put(MapSizeReport{best.size, best.why});
+    return best.size;
+}
+
+}  // namespace penumbra::render
