@@ -438,8 +438,11 @@ std::vector<Variant> all_variants() {
         for (auto e : shadow::kAllEncodings)
             for (auto f : {shadow::Filter::Hard, shadow::Filter::PCF4x4, shadow::Filter::PCSS})
                 for (bool mediump : {false, true})
-                    for (int bits = 0; bits < 5; ++bits) {
+                    for (int bits = 0; bits < 9; ++bits) {
                         if (n > shadow::kMaxCascades + 1 && e == shadow::Encoding::DepthTex) continue;
+                        // The cube of a spot light, and of a point or spot light over cut-outs,
+                        // translucent and double-sided objects (auto's cube since issue 56).
+                        if (bits >= 5 && n != shadow::kMaxCascades + 1) continue;
                         LitFeatures c;
                         c.shadow_map = c.bias_auto = true;
                         c.encoding = e;
@@ -453,6 +456,11 @@ std::vector<Variant> all_variants() {
                         c.visibility_aov = bits == 2;
                         c.cascades_aov = bits == 3;
                         if (bits == 4) c.gbuffer = Gbuffer::Read;
+                        c.spot = bits == 5;
+                        c.textured = c.textured || bits == 6 || bits == 7;
+                        c.alpha_test = bits == 6 || bits == 7;
+                        c.double_sided = bits == 7;
+                        c.alpha_blend = bits == 8;
                         out.push_back(lit_variant(c));
                     }
     // PCSS's tap counts, each once (the loops' bounds).

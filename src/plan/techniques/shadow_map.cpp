@@ -227,8 +227,9 @@ public:
         // A point or spot light that lights receivers in view beyond what one frustum holds (75
         // degrees a side, or beside and behind the light) gets the cube instead, a spot light only
         // the faces its cone reaches: no receiver counts as lit for want of a map (issue 56).
+        // (--light-fit scene fits around everything by choice: that one map stays.)
         if (s.cascades == 0 && c.light.type != scene::LightType::Directional && !fit.visible.empty() &&
-            (fit.capped || !fit.tight)) {
+            s.light_fit != LightFit::Scene && (fit.capped || !fit.tight)) {
             const std::string light = c.light.type == scene::LightType::Spot ? "spot" : "point";
             const std::string why = "auto: a cube: the " + light + " light lights receivers in view " +
                                     (fit.capped ? "beyond one frustum's 75 degrees a side"
