@@ -493,8 +493,9 @@ glm::vec4 light_vector(const scene::Light& light) {
                                                         : glm::vec4(light.position, 1.0f);
 }
 
-float texel_use(const LightFrustum& f, const std::vector<glm::vec3>& points) {
-    const glm::mat4 vp = f.view_proj();
+float texel_use(const LightFrustum& f, const std::vector<glm::vec3>& points) { return hull_share(f.view_proj(), points); }
+
+float hull_share(const glm::mat4& vp, const std::vector<glm::vec3>& points) {
     std::vector<glm::vec2> ndc;
     ndc.reserve(points.size());
     for (const glm::vec3& p : points) {

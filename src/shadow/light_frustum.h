@@ -77,6 +77,10 @@ glm::vec4 light_vector(const scene::Light& light);
 // The share of the map of frustum `f` covered by the convex hull of `points` (see TightFit);
 // points at or behind a perspective light's eye plane are left out.
 float texel_use(const LightFrustum& f, const std::vector<glm::vec3>& points);
+// The share of clip space's square (0..1) covered by the convex hull of `points` projected through
+// `view_proj`, clipped to [-1,1]^2; points at or behind its eye plane left out. texel_use's, and
+// the screen's share the receivers cover (shadow/resolution.h).
+float hull_share(const glm::mat4& view_proj, const std::vector<glm::vec3>& points);
 
 // Fit the light's projection to what matters: the visible receiver points, looked at from the
 // light (point, spot) towards their centroid or along the light (directional), with an asymmetric

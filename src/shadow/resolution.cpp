@@ -5,22 +5,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "shadow/convex.h"
+#include "shadow/light_frustum.h"
 
 namespace penumbra::shadow {
 
 float screen_pixels(const std::vector<glm::vec3>& points, const glm::mat4& camera_view_proj, int width, int height) {
-    std::vector<glm::vec2> ndc;
-    ndc.reserve(points.size());
-    for (const glm::vec3& p : points) {
-        const glm::vec4 c = camera_view_proj * glm::vec4(p, 1.0f);
-        if (!(c.w > 0.0f)) continue;
-        const glm::vec2 n = glm::vec2(c) / c.w;
-        if (std::isfinite(n.x) && std::isfinite(n.y)) ndc.push_back(n);
-    }
-    const float area = polygon_area(clip_to_rect(convex_hull(std::move(ndc)), glm::vec2(-1.0f), glm::vec2(1.0f)));
-    // NDC's square is 2 x 2: a quarter of its area per pixel of the image.
-    return std::clamp(area / 4.0f, 0.0f, 1.0f) * static_cast<float>(width) * static_cast<float>(height);
+    return hull_share(camera_view_proj, points) * static_cast<float>(width) * static_cast<float>(height);
 }
 
 MatchedSize matched_map_size(float pixels, float use, int maps, int smallest, int largest) {

@@ -303,18 +303,22 @@ void run_sweep(Sweep& w) {
     w.load_before = load_average();
     const BenchOptions& o = w.o;
 
+    // Each encoding and filter at each map size and, with the references, at --map-size auto
+    // (issue 56: labelled "... (map auto)", the row's map the size the plan chose).
+    std::vector<int> sizes = o.maps;
+    if (o.references) sizes.push_back(render::Settings::kAutoMapSize);
     std::vector<Planned> techniques;
     for (auto e : w.encodings)
         for (auto f : w.filters)
-            for (int m : o.maps) {
+            for (int m : sizes) {
                 render::Settings s = w.base.settings;
                 s.technique = render::technique_named("shadowmap");
                 s.encoding = e;
                 s.filter = f;
                 s.map_size = m;
-                techniques.push_back({s, technique_label(s)});
+                const bool auto_size = m == render::Settings::kAutoMapSize;
+                techniques.push_back({s, technique_label(s) + (auto_size ? kAutoSuffix : "")});
             }
-    for (Planned& a : auto_rows(w)) techniques.push_back(std::move(a));
     for (Planned& b : before_rows(w)) techniques.push_back(std::move(b));
     // Shadow volumes, each way of counting: exact hard shadows at a cost that grows with the
     // silhouettes and the shadows' area on screen rather than with a map.

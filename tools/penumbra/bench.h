@@ -157,7 +157,6 @@ struct Planned {
     render::Settings settings;
     std::string label;
 };
-std::vector<Planned> auto_rows(const Sweep& w);    // --map-size auto, each encoding and filter
 std::vector<Planned> before_rows(const Sweep& w);  // the defaults before issue 9
 
 // ---- bench.cpp: helpers the sweep and the soft-shadow bench (soft_bench.cpp) share -------------

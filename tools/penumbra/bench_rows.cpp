@@ -1,5 +1,5 @@
-// penumbra bench's extra rows beside the sweep's encodings x filters x maps: --map-size auto's, and
-// the defaults as they were before issue 9.
+// penumbra bench's extra rows beside the sweep's encodings x filters x maps: the defaults as they
+// were before issue 9.
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -7,23 +7,6 @@
 #include "bench.h"
 
 namespace penumbra::tools::bench {
-
-// --map-size auto (issue 56): with the references, each encoding and filter swept with its map
-// matched to the frame's pixels, labelled "... (map auto)"; the row's map is the size the plan chose.
-std::vector<Planned> auto_rows(const Sweep& w) {
-    std::vector<Planned> out;
-    if (!w.o.references) return out;
-    for (auto e : w.encodings)
-        for (auto f : w.filters) {
-            render::Settings s = w.base.settings;
-            s.technique = render::technique_named("shadowmap");
-            s.encoding = e;
-            s.filter = f;
-            s.map_size = render::Settings::kAutoMapSize;
-            out.push_back({s, technique_label(s) + std::string(kAutoSuffix)});
-        }
-    return out;
-}
 
 // The defaults as they were before issue 9 ("Better than three.js on the same frames"): the
 // sheet's constant bias, both faces into the map, the frustum fitted around the whole scene and

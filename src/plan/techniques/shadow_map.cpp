@@ -382,11 +382,13 @@ public:
         shadow::CubeFit fit = shadow::fit_cube(c.light, b.receivers, b.casters, c.plan.camera.view_proj, size,
                                                cube_guard(s, size), &why, cube_map);
         if (s.map_size == Settings::kAutoMapSize && fit.drawn() > 0) {
-            // The faces' size from what each serves, then the cube again at that size (the guard
-            // band, and so each face's field of view, follows the size).
+            // The faces' size from what each serves, then the cube again at that size where it
+            // differs (the guard band, and so each face's field of view, follows the size).
+            const int first = size;
             size = auto_map_size(c, b, fit);
-            fit = shadow::fit_cube(c.light, b.receivers, b.casters, c.plan.camera.view_proj, size, cube_guard(s, size), &why,
-                                   cube_map);
+            if (size != first)
+                fit = shadow::fit_cube(c.light, b.receivers, b.casters, c.plan.camera.view_proj, size, cube_guard(s, size),
+                                       &why, cube_map);
         }
         if (fit.drawn() == 0) {
             c.plan.notes.push_back(cascades_report(c).why + ": one map instead, " + why);
