@@ -437,6 +437,15 @@ std::vector<Option<Options>> make_table() {
     frames.max = kMaxFrames;
     add(frames, [](Options& o, std::string_view v) { o.job.frames = int_of(v); },
         [](const Options& o) { return std::to_string(o.job.frames); });
+
+    OptionInfo budget = make_option_info("budget-ms", P::Job, T::Number,
+                                         "0: off; else the most accurate shadow map whose frames fit N ms here, "
+                                         "chosen frame by frame from their measured times (encoding, filter, map size)",
+                                         "Time budget (ms)");
+    budget.min = 0.0;
+    budget.max = kMaxBudgetMs;
+    add(budget, [](Options& o, std::string_view v) { o.job.budget_ms = number_of(v); },
+        [](const Options& o) { return format_number(o.job.budget_ms); });
     return t;
 }
 

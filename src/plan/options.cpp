@@ -19,7 +19,7 @@ namespace penumbra::render {
 
 bool Job::operator==(const Job& o) const {
     return scene == o.scene && time == o.time && width == o.width && height == o.height && out == o.out &&
-           frames == o.frames && eye_in_shadow == o.eye_in_shadow;
+           frames == o.frames && budget_ms == o.budget_ms && eye_in_shadow == o.eye_in_shadow;
 }
 
 // ---- parsing ----------------------------------------------------------------------------------
@@ -94,8 +94,13 @@ bool parse_size(std::string_view v, int& w, int& h) {
     return x != std::string_view::npos && parse_int(v.substr(0, x), w) && parse_int(v.substr(x + 1), h);
 }
 
+// The shortest form that reads back as the same double: "0.6", not %.17g's "0.59999999999999998".
 std::string format_number(double v) {
     char buf[32];
+    for (int precision = 1; precision < 17; ++precision) {
+        std::snprintf(buf, sizeof buf, "%.*g", precision, v);
+        if (std::strtod(buf, nullptr) == v) return buf;
+    }
     std::snprintf(buf, sizeof buf, "%.17g", v);
     return buf;
 }
@@ -295,7 +300,8 @@ namespace {
 std::string args_of(const std::vector<std::pair<std::string, std::string>>& pairs) {
     std::string out;
     for (const auto& [k, v] : pairs) {
-        if (k == "out" && v.empty()) continue;
+        // No file and no budget, the defaults, say nothing (a logged command line stays as it was).
+        if ((k == "out" && v.empty()) || (k == "budget-ms" && v == "0")) continue;
         out += (out.empty() ? "--" : " --") + k + " " + scene::printable(v);  // a log's one line
     }
     return out;

@@ -22,6 +22,7 @@ namespace penumbra::render {
 inline constexpr int kMaxImageSide = 16384;    // --size: each side (llvmpipe's and most GPUs' maximum)
 inline constexpr int kMaxFrames = 10000;       // --frames (render, plan, bench)
 inline constexpr double kMaxTime = 1e6;        // --time: seconds, either sign (about 11 days)
+inline constexpr double kMaxBudgetMs = 1e4;    // --budget-ms: 10 s a frame
 inline constexpr int kMaxMapSize = 65536;      // --map-size (the context clamps it further, with a note)
 inline constexpr int kMaxSoftSamples = 16384;  // --soft-samples of truth and bench (area-light rays per pixel)
 inline constexpr double kMaxLightRadius = 1e6; // --light-radius
@@ -34,6 +35,9 @@ struct Job {
     int height = 512;
     std::string out;  // PNG path; empty: write nothing
     int frames = 1;
+    // --budget-ms: the most accurate shadow-map settings whose frames fit this many ms, chosen from
+    // the frames' measured times (plan/budget.h); 0: off, the settings as given.
+    double budget_ms = 0.0;
     bool eye_in_shadow = false;  // --eye in-shadow: scene::place_eye_in_shadow
     bool operator==(const Job& o) const;
 };

@@ -19,6 +19,7 @@
 #include <map>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,7 @@
 #ifdef PENUMBRA_HAVE_TRUTH
 #include "bias_sweep.h"
 #endif
+#include "budget_frames.h"
 #include "cli_options.h"
 #include "options_doc.h"
 #include "egl_device.h"
@@ -93,6 +95,13 @@ void load_snippets(render::Renderer& r, const scene::Scene& scene, const render:
         throw Failure{tools::snippet_problems_text(path, problems), 2};
 }
 
+// --budget-ms: what was chosen and why (stdout); -v: each change (stderr).
+void print_budget(const render::BudgetController& b, bool verbose) {
+    if (verbose)
+        for (const auto& line : b.log()) std::cerr << "budget: " << line << "\n";
+    std::printf("%s\n", b.why().c_str());
+}
+
 int run_render(const render::Options& given, bool verbose, bool still, const std::vector<std::string>& allow_outside,
                const std::string& snippets) {
     std::string text;
@@ -110,15 +119,29 @@ int run_render(const render::Options& given, bool verbose, bool still, const std
     if (const std::string problem = r.check(src.at(job.time), o.settings, in); !problem.empty()) throw Failure{problem, 2};
     load_snippets(r, src.at(job.time), o, snippets, text, in);
 
+    std::string refusal;
+    std::optional<render::BudgetController> budget = tools::make_budget(o, r, refusal);
+    if (!refusal.empty()) throw Failure{refusal, 2};
+    if (budget) {
+        if (const std::string problem = r.check(src.at(job.time), budget->settings(), in); !problem.empty())
+            throw Failure{problem, 2};
+        // One frame asked for: the budget settles over moving frames first, then the frame at --time.
+        if (job.frames == 1)
+            tools::budget_frames(r, *budget, in, tools::kBudgetSettleFrames, [&](int i) -> const scene::Scene& {
+                return src.at(job.time + (still ? 0.0 : static_cast<double>(i) / 60.0));
+            });
+    }
+
     std::vector<double> ms;
     r.gpu_timer().enable(verbose);  // -v: each pass's GPU time too, read after the last frame
     for (int i = 0; i < job.frames; ++i) {
         const double t = job.time + (still ? 0.0 : static_cast<double>(i) / 60.0);
         const auto start = std::chrono::steady_clock::now();
-        const render::FramePlan& plan = r.render(src.at(t), o.settings, in);
+        const render::FramePlan& plan = r.render(src.at(t), budget ? budget->settings() : o.settings, in);
         r.finish();
         const auto end = std::chrono::steady_clock::now();
         ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+        if (budget && i + 1 < job.frames) budget->observe(ms.back());
         if (i == 0)
             for (const auto& n : plan.notes) std::cerr << "penumbra: note: " << n << "\n";
         if (verbose && (i == 0 || i == job.frames - 1))
@@ -132,6 +155,7 @@ int run_render(const render::Options& given, bool verbose, bool still, const std
         std::printf("%d frames, median %.3f ms/frame (min %.3f, max %.3f), each finished with glFinish; %s\n",
                     job.frames, median, sorted.front(), sorted.back(), render::to_args(o).c_str());
     }
+    if (budget) print_budget(*budget, verbose);
     if (verbose) {
         const auto gpu = r.gpu_timer().take(true);
         std::printf("%s", gl::describe(gl::summarize(gpu), r.gpu_timer().available(), r.gpu_timer().discarded()).c_str());
@@ -157,8 +181,20 @@ int run_plan(const render::Options& given, bool json, const std::vector<std::str
     const render::FrameInputs in = render::offscreen(job.width, job.height);
     if (const std::string problem = r.check(src.at(job.time), o.settings, in); !problem.empty()) throw Failure{problem, 2};
     load_snippets(r, src.at(job.time), o, snippets, text, in);
-    for (int i = 0; i + 1 < job.frames; ++i) r.render(src.at(job.time + static_cast<double>(i) / 60.0), o.settings, in);
-    const render::FramePlan plan = r.plan(src.at(job.time + static_cast<double>(job.frames - 1) / 60.0), o.settings, in);
+    std::string refusal;
+    std::optional<render::BudgetController> budget = tools::make_budget(o, r, refusal);
+    if (!refusal.empty()) throw Failure{refusal, 2};
+    const auto at = [&](int i) -> const scene::Scene& { return src.at(job.time + static_cast<double>(i) / 60.0); };
+    render::Settings s = o.settings;
+    if (budget) {
+        // The frames before the planned one are the budget's measurements (at least the settling run's).
+        tools::budget_frames(r, *budget, in, std::max(job.frames - 1, tools::kBudgetSettleFrames), at);
+        s = budget->settings();
+    } else {
+        for (int i = 0; i + 1 < job.frames; ++i) r.render(at(i), s, in);
+    }
+    render::FramePlan plan = r.plan(at(job.frames - 1), s, in);
+    if (budget) plan.notes.insert(plan.notes.begin(), budget->why());
     std::printf("%s%s", json ? plan.to_json().c_str() : plan.to_text().c_str(), json ? "\n" : "");
     return 0;
 }
