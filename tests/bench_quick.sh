@@ -24,7 +24,17 @@ python3 - "$work/bench" <<'PY' && ok || bad "bench outputs are not well-formed"
 import csv, struct, sys, xml.etree.ElementTree as ET, zlib
 d = sys.argv[1]
 every = list(csv.DictReader(open(d + "/results.csv")))
-assert {r["section"] for r in every} == {"sweep", "silhouette", "effects", "lights"}, {r["section"] for r in every}
+assert {r["section"] for r in every} == {"sweep", "silhouette", "effects", "lights", "budget"}, {r["section"] for r in every}
+# --budget-ms 4 and 16 on course@0.60: a hard-filtered map of a power-of-two size the controller
+# settled on, its error scored, the settings naming the budget; a larger budget never a smaller map
+bud = sorted((r for r in every if r["section"] == "budget"), key=lambda r: float(r["budget_ms"]))
+assert [float(r["budget_ms"]) for r in bud] == [4.0, 16.0], bud
+for r in bud:
+    assert r["scene"] == "course@0.60" and r["filter"] == "hard" and r["encoding"] in ("depthtex", "rgba"), r
+    m = int(r["map_size"]); assert 128 <= m <= 4096 and m & (m - 1) == 0, r
+    assert "--budget-ms %g" % float(r["budget_ms"]) in r["settings"] and "--map-size %d" % m in r["settings"], r
+    assert 0.0 <= float(r["error_pct"]) <= 100.0 and int(r["valid_pixels"]) > 1000 and float(r["ms_moving"]) > 0.0, r
+assert int(bud[0]["map_size"]) <= int(bud[1]["map_size"]), bud
 rows = [r for r in every if r["section"] == "sweep"]
 sil = [r for r in every if r["section"] == "silhouette"]
 # 2 scenes x (3 encodings x 3 filters x (2 maps + map auto) + rgba hard and pcf4x4 at map 1024 as before issue 9
@@ -122,6 +132,7 @@ assert "## The defaults against the settings before issue 9" in md and "| rgba h
 assert "## The stencil effects and the post passes on course@0.60" in md and "| volumes auto | outline,mirror,portal | none |" in md
 assert "| rgba hard | none | shadow-blur:6 | - |" in md
 assert "## Forward against deferred shading on course@0.60" in md and "| 64 |" in md
+assert "## The time budget (--budget-ms)" in md and "| budget ms | chosen | map |" in md
 lsvg = ET.parse(d + "/lights.svg").getroot()
 assert "deferred" in [t.text for t in lsvg.iter("{http://www.w3.org/2000/svg}text")]
 assert open(d + "/lights.png", "rb").read()[:8] == b"\x89PNG\r\n\x1a\n"
@@ -146,6 +157,8 @@ if "$penumbra" bench --from-csv "$work/bench/results.csv" --out-dir "$work/again
    grep -q "^| rgba hard | mirror |" "$work/again/results.md" &&
    cmp -s <(sed -n '/^## Forward against deferred/,/^$/p' "$work/bench/results.md") \
           <(sed -n '/^## Forward against deferred/,/^$/p' "$work/again/results.md") &&
+   cmp -s <(sed -n '/^## The time budget/,/^$/p' "$work/bench/results.md") \
+          <(sed -n '/^## The time budget/,/^$/p' "$work/again/results.md") &&
    cmp -s <(sed -n '/^| segments/,/^$/p' "$work/bench/results.md" | awk -F'|' 'NF > 4 {print $2 $3 $(NF-3) $(NF-2) $(NF-1)}') \
           <(sed -n '/^| segments/,/^$/p' "$work/again/results.md" | awk -F'|' 'NF > 4 {print $2 $3 $(NF-3) $(NF-2) $(NF-1)}'); then ok
 else bad "bench --from-csv lost the volumes' or the effects' tables: $(cat "$work/again.err")"; fi
@@ -167,7 +180,9 @@ if "GPU timer no" in caps:
     print("GPU timer: not available"); sys.exit(0)
 assert "GPU timer yes" in caps, caps
 assert "| technique | map | ms/frame moving | GPU ms moving | ms/frame still | GPU ms still | GPU ms per pass (moving) |" in md
-for r in rows:
+# The budget's rows are the wall times its controller saw (budget_bench.cpp): no GPU columns.
+assert all(r["gpu_ms_moving"] == "" for r in rows if r["section"] == "budget")
+for r in (r for r in rows if r["section"] != "budget"):
     assert float(r["gpu_ms_moving"]) >= 0.0 and float(r["gpu_ms_still"]) >= 0.0, r
     names = [p.split(": ")[0] for p in r["gpu_ms_per_pass"].split("; ")]
     assert all(names) and all(float(p.split(": ")[1]) >= 0.0 for p in r["gpu_ms_per_pass"].split("; ")), r

@@ -499,6 +499,7 @@ void run_sweep(Sweep& w) {
     silhouette_sweep(w, r, in);
     effects_sweep(w, r, in);
     lights_sweep(w, r, in);
+    budget_sweep(w, r, in);
     w.load_after = load_average();
 }
 

@@ -103,11 +103,14 @@ struct Row {
     // the context has no timer (or the rows were read from a CSV without them).
     double gpu_moving = -1.0, gpu_still = -1.0;
     std::string gpu_passes;
+    // The budget section's rows: the --budget-ms they ran under.
+    double budget_ms = 0.0;
 };
 
 inline constexpr const char* kSilhouetteSection = "silhouette";
 inline constexpr const char* kEffectsSection = "effects";
 inline constexpr const char* kLightsSection = "lights";
+inline constexpr const char* kBudgetSection = "budget";
 // The silhouette sweep's spheres: slices around, half as many stacks.
 inline constexpr int kSphereSegments[] = {8, 16, 32, 64, 128};
 
@@ -126,6 +129,7 @@ struct Sweep {
     std::vector<Row> effects;     // the effects' rows (section kEffectsSection)
     std::string effects_frame;    // the scene frame they were measured on ("course@0.60")
     std::vector<Row> lights;      // forward against deferred (section kLightsSection)
+    std::vector<Row> budget;      // --budget-ms (section kBudgetSection)
     std::vector<std::string> notes;
     std::string command_line;
     std::string from_csv;  // rows read back from this file instead of measured
@@ -281,6 +285,17 @@ void lights_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in);
 // N lights at which deferred becomes cheaper than forward, interpolated in log N between the two
 // rows that bracket it; < 0 when it does not happen in the rows.
 double lights_crossing(const Sweep& w);
+
+// ---- budget_bench.cpp: --budget-ms -----------------------------------------------------------------
+
+// --budget-ms 2, 4, 8, 16, 32 (quick: 4, 16) on the first course frame, moving: the settings each
+// settled on, their time and error against the hard truth, into w.budget.
+void budget_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in);
+// The sweep's row on the same frame with the least error among those whose moving time fits the
+// row's budget; null when none does.
+const Row* best_fixed(const Sweep& w, const Row& budget_row);
+// results.md's table: each budget's choice beside best_fixed's. Empty without its rows.
+std::string budget_table(const Sweep& w);
 
 // ---- soft_bench.cpp: penumbra bench --soft ------------------------------------------------------
 

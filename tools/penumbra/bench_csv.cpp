@@ -18,12 +18,13 @@ std::string to_csv(const Sweep& w) {
       << ",ms_moving,ms_still,ms_shadow_pass,ms_camera_pass,frames,redrawn_moving,redrawn_still,shadow_map_bytes,texel_use_pct,"
          "silhouette_edges,volume_triangles,fill_per_pixel,zpass_casters,zfail_casters,section,segments,"
          "effects,effect_error_pct,effect_false_shadow_pct,effect_false_lit_pct,effect_valid_pixels,not_modelled_pixels,"
-         "post,shading,lights,settings,gpu_ms_moving,gpu_ms_still,gpu_ms_per_pass\n";
+         "post,shading,lights,settings,gpu_ms_moving,gpu_ms_still,gpu_ms_per_pass,budget_ms\n";
     std::vector<const Row*> rows;
     for (const Row& r : w.rows) rows.push_back(&r);
     for (const Row& r : w.silhouette) rows.push_back(&r);
     for (const Row& r : w.effects) rows.push_back(&r);
     for (const Row& r : w.lights) rows.push_back(&r);
+    for (const Row& r : w.budget) rows.push_back(&r);
     for (const Row* rp : rows) {
         const Row& r = *rp;
         const bool vol = r.silhouette_edges >= 0;
@@ -46,7 +47,8 @@ std::string to_csv(const Sweep& w) {
         if (r.section == kLightsSection) o << r.shading << "," << r.lights << ",";
         else o << ",,";
         o << "\"" << r.settings << "\"," << (r.gpu_moving >= 0.0 ? fixed(r.gpu_moving, 3) : "") << ","
-          << (r.gpu_still >= 0.0 ? fixed(r.gpu_still, 3) : "") << ",\"" << r.gpu_passes << "\"\n";
+          << (r.gpu_still >= 0.0 ? fixed(r.gpu_still, 3) : "") << ",\"" << r.gpu_passes << "\","
+          << (r.section == kBudgetSection ? fixed(r.budget_ms, 3) : "") << "\n";
     }
     return o.str();
 }
@@ -157,6 +159,12 @@ void read_csv(Sweep& w, const std::string& path) {
             r.shading = get("shading");
             r.lights = static_cast<int>(num("lights", 0));
             w.lights.push_back(r);
+            continue;
+        }
+        if (get("section") == kBudgetSection) {
+            r.section = kBudgetSection;
+            r.budget_ms = num("budget_ms", 0.0);
+            w.budget.push_back(r);
             continue;
         }
         if (get("section") == kEffectsSection) {

@@ -427,6 +427,7 @@ std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& fro
     o << silhouette_table(w);
     o << effects_table(w);
     o << lights_table(w);
+    o << budget_table(w);
     if (!w.notes.empty()) {
         o << "\n## Notes\n\n";
         for (const auto& n : w.notes) o << "- " << n << "\n";

@@ -1,0 +1,116 @@
+// penumbra bench's budget section (issue 56): --budget-ms at 2, 4, 8, 16 and 32 ms on the first
+// course frame of the sweep's scenes, the course animated 1/60 s a frame (moving: the map redrawn
+// every frame). Each row: what the controller settled on, the median of the second half of its
+// frames (the first half is its settling), and the settled settings' error against the hard truth
+// of the frame itself. The table puts beside each the best fixed setting of the sweep's rows on
+// the same frame whose measured time fits the same budget.
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench.h"
+#include "budget_frames.h"
+#include "gl/check.h"
+#include "measure/metrics.h"
+#include "plan/budget.h"
+
+namespace penumbra::tools::bench {
+
+namespace {
+
+constexpr double kBudgets[] = {2, 4, 8, 16, 32};
+constexpr double kQuickBudgets[] = {4, 16};
+constexpr int kFrames = 160;      // per budget; the median of the last half
+constexpr int kQuickFrames = 40;
+
+}  // namespace
+
+void budget_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) {
+    const BenchOptions& o = w.o;
+    const SceneSpec* spec = course_frame(w, "the budget section is");
+    if (!spec) return;
+    const auto t0 = Clock::now();
+    scene::SceneSource src = open_scene(spec->name, scene::Eye::Scene, o.allow_outside);
+    const scene::Scene still = src.at(spec->time);
+    r.load(still);
+    measure::TruthOptions to;
+    to.width = w.width;
+    to.height = w.height;
+    to.view_proj = renderer_view_proj(still, w.width, w.height);
+    const measure::TruthImage truth = measure::RayTracer(still).render(to);
+    const auto valid = truth.valid_mask();
+
+    const int frames = o.quick ? kQuickFrames : kFrames;
+    const std::vector<double> budgets = o.quick ? std::vector<double>(std::begin(kQuickBudgets), std::end(kQuickBudgets))
+                                                : std::vector<double>(std::begin(kBudgets), std::end(kBudgets));
+    render::Settings base = w.base.settings;
+    base.technique = render::technique_named("shadowmap");
+    for (double budget : budgets) {
+        render::BudgetController b(budget, base, r.caps().depth_texture, r.caps().max_target_size());
+        if (const std::string problem = r.check(still, b.settings(), in); !problem.empty()) {
+            w.notes.push_back(spec->label + ": --budget-ms skipped: " + problem);
+            return;
+        }
+        const std::vector<double> ms = budget_frames(r, b, in, frames, [&](int i) -> const scene::Scene& {
+            return src.at(spec->time + static_cast<double>(i + 1) / 60.0);
+        });
+        Row row;
+        row.section = kBudgetSection;
+        row.budget_ms = budget;
+        row.scene = spec->label;
+        row.time = spec->time;
+        render::Settings s = b.settings();
+        set_technique(row, s, technique_label(s));
+        render::Options labelled = w.base;
+        labelled.job.budget_ms = budget;
+        row.settings = row_args(labelled, *spec, s);
+        row.ms_moving = measure::median(std::vector<double>(ms.begin() + frames / 2, ms.end()));
+        row.frames = frames - frames / 2;
+        s.aov = render::Aov::Visibility;
+        r.render(still, s, in);
+        row.score = measure::score(red_channel(r.read_image()), truth.lit, valid, nullptr);
+        std::fprintf(stderr, "budget %5.1f ms: %s map %d, %.2f ms/frame, error %.3f %%; %s\n", budget, row.technique.c_str(),
+                     row.map, row.ms_moving, row.score.error_pct, b.why().c_str());
+        w.budget.push_back(row);
+    }
+    gl::check_errors("the budget section");
+    std::fprintf(stderr, "budget section: %zu budgets x %d frames in %s\n", budgets.size(), frames,
+                 duration_str(seconds_since(t0)).c_str());
+}
+
+const Row* best_fixed(const Sweep& w, const Row& budget_row) {
+    const Row* best = nullptr;
+    for (const Row& r : w.rows)
+        if (r.scene == budget_row.scene && r.score.valid > 0 && r.ms_moving > 0.0 && r.ms_moving <= budget_row.budget_ms &&
+            (!best || r.score.error_pct < best->score.error_pct))
+            best = &r;
+    return best;
+}
+
+std::string budget_table(const Sweep& w) {
+    if (w.budget.empty()) return "";
+    std::ostringstream o;
+    o << "\n## The time budget (--budget-ms)\n\n"
+      << "`--budget-ms N` on " << w.budget.front().scene << " at " << w.width << "x" << w.height << ", moving (the course "
+      << "animated 1/60 s a frame): the settings it settled on, the median ms of the second half of its " << 2 * w.budget.front().frames
+      << " frames (wall time after glFinish) and their error against the hard truth of the frame. Beside it, the most "
+         "accurate row of the sweep on the same frame whose moving time fits the same budget (its ms as the sweep measured "
+         "it, in this run).\n\n"
+      << "| budget ms | chosen | map | ms/frame | / budget | error % | best fixed that fits | its ms | its error % | error / best's |\n"
+      << "|---:|---|---:|---:|---:|---:|---|---:|---:|---:|\n";
+    for (const Row& r : w.budget) {
+        const Row* b = best_fixed(w, r);
+        o << "| " << fixed(r.budget_ms, 0) << " | " << r.technique << " | " << r.map << " | " << fixed(r.ms_moving, 2) << " | "
+          << fixed(r.ms_moving / r.budget_ms, 2) << " | " << fixed(r.score.error_pct, 3) << " | ";
+        if (b)
+            o << key_label({b->technique, b->map}) << " | " << fixed(b->ms_moving, 2) << " | " << fixed(b->score.error_pct, 3) << " | "
+              << (b->score.error_pct > 0.0 ? fixed(r.score.error_pct / b->score.error_pct, 2) : "-") << " |\n";
+        else
+            o << "none fits | - | - | - |\n";
+    }
+    return o.str();
+}
+
+}  // namespace penumbra::tools::bench
