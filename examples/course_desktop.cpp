@@ -103,6 +103,8 @@ void print_help() {
     line(std::string(technique.name), render::accepted_values(technique), "soft: " + std::string(technique.help));
     const render::OptionInfo& eye = render::option_info("eye");  // a job option the exercises take
     line(std::string(eye.name), render::accepted_values(eye), eye.help);
+    const render::OptionInfo& budget = render::option_info("budget-ms");  // render's --budget-ms, with --no-vsync
+    line(std::string(budget.name), "MS", std::string(budget.help) + " (with --no-vsync: vsync paces the frames)");
     line("camera", "X,Y,Z,YAW,PITCH",
          "cascades, bulb: where the fly camera stands (metres) and looks (degrees: yaw right of north, pitch up)");
     std::printf(
@@ -330,6 +332,11 @@ int main(int argc, char** argv) {
             char figures[96];
             std::snprintf(figures, sizeof figures, " | %.2f ms/frame", app.median_ms());
             title = controls + figures;
+            if (const render::BudgetController* b = app.budget()) {  // budget-ms: what it chose
+                std::snprintf(figures, sizeof figures, " | budget: %s %s %d", shadow::to_string(b->settings().encoding).data(),
+                              shadow::to_string(b->settings().filter).data(), b->settings().map_size);
+                title += figures;
+            }
             if (const auto& area = app.area()) {  // Heckbert-Herf's progress (soft shadows)
                 std::snprintf(figures, sizeof figures, " | light samples %d of %d", area->done, area->total);
                 title += figures;
@@ -363,6 +370,11 @@ int main(int argc, char** argv) {
     std::printf("%ld frames, median %.3f ms/frame (draw + wait, last %zu frames); %s\n", app.frames_drawn(),
                 app.median_ms(), static_cast<size_t>(std::min(60L, app.frames_drawn())), app.query().c_str());
     if (const auto& area = app.area()) std::printf("light samples %d of %d\n", area->done, area->total);
+    if (const render::BudgetController* b = app.budget()) {
+        if (args.verbose)
+            for (const auto& line : b->log()) std::printf("budget: %s\n", line.c_str());
+        std::printf("%s\n", b->why().c_str());
+    }
     if (args.print_title) std::printf("title: %s\n", title.c_str());
     if (args.verbose) std::printf("%s", app.last_plan().c_str());
     return status;

@@ -19,8 +19,8 @@ namespace penumbra::examples {
 
 namespace {
 
-// The job options the exercises take: time (both clocks, paused) and the eye.
-bool exercise_job_option(std::string_view name) { return name == "time" || name == "eye"; }
+// The job options the exercises take: time (both clocks, paused), the eye and the time budget.
+bool exercise_job_option(std::string_view name) { return name == "time" || name == "eye" || name == "budget-ms"; }
 
 // Settings the pages and the desktop never take: the exercise picks the scene and the technique
 // (unless it offers a control for it), the canvas or the window its size, and nothing is written
@@ -140,6 +140,7 @@ void CourseApp::set_exercise(std::string_view name) {
     exercise_ = &next;
     own_scene();
     apply_defaults();
+    budget_.reset();  // another scene: its times start afresh
 }
 
 // ---- options --------------------------------------------------------------------------------
@@ -231,6 +232,15 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
         eye_in_shadow_ = t.job.eye_in_shadow;
         return {};
     }
+    if (name == "budget-ms") {
+        render::Options t;
+        if (std::string err = render::parse_option(t, name, value); !err.empty()) return without_dashes(err);
+        if (t.job.budget_ms > 0.0)
+            if (std::string why = render::budget_refusal(exercise_settings()); !why.empty()) return without_dashes(why);
+        budget_ms_ = t.job.budget_ms;
+        budget_.reset();  // made at the next frame, on this context
+        return {};
+    }
     if (name == "camera") {
         OwnScene* o = own_scene();
         if (!o) {
@@ -276,12 +286,14 @@ std::vector<std::pair<std::string, std::string>> CourseApp::options() const {
     if (eye_in_shadow_ && std::find(shown.begin(), shown.end(), "eye") == shown.end()) out.emplace_back("eye", value_of("eye"));
     if (camera_moved()) out.emplace_back("camera", fly_value(camera()));
     if (clock_.paused && clock_.together()) out.emplace_back("time", format_number(clock_.light));
+    if (budget_ms_ > 0.0) out.emplace_back("budget-ms", value_of("budget-ms"));
     return out;
 }
 
 std::string CourseApp::value_of(std::string_view name) const {
     if (const auto* t = render::find_option(toggle_table(), name)) return t->print(toggles_);
     if (name == "camera") return fly_value(camera());
+    if (name == "budget-ms") return format_number(budget_ms_);
     if (name == "eye") {
         render::Options o;
         o.job.eye_in_shadow = eye_in_shadow_;
@@ -315,7 +327,10 @@ void CourseApp::create_gl(const platform::Platform& context) {
 }
 
 // The objects died with the context; deleting their names on a lost context does nothing.
-void CourseApp::drop_gl() { renderer_.reset(); }
+void CourseApp::drop_gl() {
+    renderer_.reset();
+    budget_.reset();  // the times measured on the old context say nothing about the next
+}
 
 const gl::Caps* CourseApp::caps() const { return renderer_ ? &renderer_->caps() : nullptr; }
 bool CourseApp::gpu_timer_available() const { return renderer_ && renderer_->caps().timer_query; }
@@ -351,7 +366,9 @@ void CourseApp::render_plan(const scene::Scene& sc, const render::Settings& s, c
 }
 
 render::Settings CourseApp::frame_settings() const {
-    const render::Settings s = exercise_settings();
+    render::Settings s = exercise_settings();
+    // The budget's choice before the lab's: the lab keeps its own packing (render::lab_settings).
+    if (budget_ && render::budget_refusal(s).empty()) s = budget_->apply(s);
     if (lab_ && !own_scene()) {
         const render::Settings lab = render::lab_settings(s);
         if (render::lab_refusal(lab).empty()) return lab;
@@ -438,6 +455,8 @@ render::FrameInputs CourseApp::light_view(render::Output output, bool ortho, con
 
 void CourseApp::draw(int width, int height) {
     if (!renderer_) throw std::runtime_error("no GL context");
+    if (budget_ms_ > 0.0 && !budget_)
+        budget_.emplace(budget_ms_, exercise_settings(), renderer_->caps().depth_texture, renderer_->caps().max_target_size());
     const auto start = std::chrono::steady_clock::now();
     scene::animate_course(course_, clock_.light, clock_.jump);
     // The eye: the scene's camera, or (where the light now is) inside the teapot's shadow.
@@ -462,7 +481,9 @@ void CourseApp::draw(int width, int height) {
     // finish() returns at once in Chromium (it only flushes); reading one pixel back waits for the
     // rendering everywhere.
     renderer_->read_window(0, 0, 1, 1);
-    timing_.add(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    timing_.add(ms);
+    if (budget_) budget_->observe(ms);
     // The GPU times that have arrived (a few frames old), without waiting.
     timing_.add_gpu(timer.take(false));
 }

@@ -25,6 +25,7 @@
 #include "frame_timing.h"
 #include "gl/caps.h"
 #include "gl/timer.h"
+#include "plan/budget.h"
 #include "plan/frames/area_light.h"
 #include "plan/plan.h"
 #include "plan/settings.h"
@@ -113,6 +114,11 @@ public:
     std::vector<std::uint8_t> read_pixels(int width, int height);
     // Median ms/frame over the last 60 frames (draw + wait), 0 before the first.
     double median_ms() const { return timing_.median_ms(); }
+    // budget-ms=N (render's --budget-ms, plan/budget.h): the frames' map size, encoding and filter
+    // chosen from these frames' times; 0 (the default) off. The controller is made at the first
+    // frame on a context (its caps) and again after a context restore or another exercise. Null
+    // while off, before that frame, or where the exercise's technique has no map.
+    const render::BudgetController* budget() const { return budget_ ? &*budget_ : nullptr; }
     // GPU time per pass (gl/timer.h, where the context has EXT_disjoint_timer_query): off until
     // switched on; on, each frame's plans are timed as one frame (a second plan's passes named
     // "texture: camera", "map view: light-depth view"), read back without waiting a few frames later, and
@@ -230,6 +236,8 @@ private:
     std::optional<render::AreaStats> area_;  // the last frame's light samples
     bool lab_ = false;
     std::string snippets_;
+    double budget_ms_ = 0.0;
+    std::optional<render::BudgetController> budget_;
 };
 
 }  // namespace penumbra::examples
