@@ -95,11 +95,14 @@ bool parse_size(std::string_view v, int& w, int& h) {
 }
 
 // The shortest form that reads back as the same double: "0.6", not %.17g's "0.59999999999999998".
+// Read back by read_number, as the option is (in the pages, JavaScript's Number(): strtod would add
+// libc's parser to every page).
 std::string format_number(double v) {
     char buf[32];
     for (int precision = 1; precision < 17; ++precision) {
         std::snprintf(buf, sizeof buf, "%.*g", precision, v);
-        if (std::strtod(buf, nullptr) == v) return buf;
+        double back = 0.0;
+        if (read_number(buf, back) && back == v) return buf;
     }
     std::snprintf(buf, sizeof buf, "%.17g", v);
     return buf;
