@@ -198,6 +198,13 @@ const char* penumbra_state() {
     else
         j += ",\"area\":null";
     j += ",\"ms\":" + json_number(a.median_ms());
+    // budget-ms: what the controller chose and why (null while off or before its first frame).
+    if (const render::BudgetController* b = a.budget())
+        j += ",\"budget\":{\"mapSize\":" + std::to_string(b->settings().map_size) + ",\"encoding\":" +
+             json_quote(std::string(shadow::to_string(b->settings().encoding))) + ",\"filter\":" +
+             json_quote(std::string(shadow::to_string(b->settings().filter))) + ",\"why\":" + json_quote(b->why()) + "}";
+    else
+        j += ",\"budget\":null";
     // Each pass's GPU time (EXT_disjoint_timer_query), median of the last frames the timer read
     // back: null where the context has no timer.
     if (a.gpu_timer_available()) {

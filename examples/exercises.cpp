@@ -286,7 +286,8 @@ std::vector<std::pair<std::string, std::string>> CourseApp::options() const {
     if (eye_in_shadow_ && std::find(shown.begin(), shown.end(), "eye") == shown.end()) out.emplace_back("eye", value_of("eye"));
     if (camera_moved()) out.emplace_back("camera", fly_value(camera()));
     if (clock_.paused && clock_.together()) out.emplace_back("time", format_number(clock_.light));
-    if (budget_ms_ > 0.0) out.emplace_back("budget-ms", value_of("budget-ms"));
+    if (budget_ms_ > 0.0 && std::find(shown.begin(), shown.end(), "budget-ms") == shown.end())
+        out.emplace_back("budget-ms", value_of("budget-ms"));
     return out;
 }
 

@@ -32,6 +32,7 @@
   const canvas = document.getElementById('canvas');
   const statusEl = document.getElementById('status');
   const msEl = document.getElementById('ms');
+  const budgetRow = document.getElementById('budget-row'), budgetEl = document.getElementById('budget');
   const gpuEl = document.getElementById('gpu');
   const noteEl = document.getElementById('note');
   const firstEl = document.getElementById('first-frame');
@@ -364,6 +365,10 @@
     // What the frame had to change for this canvas (W09P2b: a copy no larger than the canvas).
     if (frameNoteEl.textContent !== s.frameNote) frameNoteEl.textContent = s.frameNote;
     frameNoteEl.hidden = !s.frameNote;
+    // budget-ms: the settings chosen, their time and the next map's.
+    budgetRow.hidden = !s.budget;
+    const budget = s.budget ? s.budget.why : '–';
+    if (budgetEl.textContent !== budget) budgetEl.textContent = budget;
     if (samplesRow) {
       samplesRow.hidden = !s.area;
       samplesEl.textContent = samplesText(s) || '–';

@@ -37,7 +37,10 @@ Exercise w09p2c() {
          "The teapot on the table, shadowed by a shadow map, with the shadow map in the corner",
          "Choose the sheet's bias with 8-bit red: dark rings of acne appear on the teapot. Then tick PCF and "
          "watch the shadow's edge soften.",
-         {light, jump, {"encoding", "Shadow map", K::Select},
+         {light, jump,
+          {"budget-ms", "Speed", K::Select, {}, "Faster or more accurate",
+           "the map size, encoding and filter chosen from the frames' times (the settings below set aside)"},
+          {"encoding", "Shadow map", K::Select},
           {"filter", "Shadow map", K::Checkbox, {"pcf4x4", "hard"}, "4x4 PCF (percentage-closer filtering)",
            "16 lookups, texmapscale = 1/size apart: a softer edge"},
           {"bias", "Shadow map", K::Number, {}, {}, "added to the depth before the comparison"},

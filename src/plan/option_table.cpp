@@ -440,10 +440,14 @@ std::vector<Option<Options>> make_table() {
 
     OptionInfo budget = make_option_info("budget-ms", P::Job, T::Number,
                                          "0: off; else the most accurate shadow map whose frames fit N ms here, "
-                                         "chosen frame by frame from their measured times (encoding, filter, map size)",
+                                         "chosen frame by frame from their measured times (encoding, filter, map size; "
+                                         "shadow volumes at the top where they can draw the scene)",
                                          "Time budget (ms)");
     budget.min = 0.0;
     budget.max = kMaxBudgetMs;
+    // The pages' "faster / more accurate" select: a frame rate's worth each.
+    budget.presets = {{"0", "off: the settings below"}, {"4", "4 ms: fastest"}, {"8", "8 ms"},
+                      {"16", "16 ms (60 frames a second)"}, {"33", "33 ms (30 frames a second): most accurate"}};
     add(budget, [](Options& o, std::string_view v) { o.job.budget_ms = number_of(v); },
         [](const Options& o) { return format_number(o.job.budget_ms); });
     return t;

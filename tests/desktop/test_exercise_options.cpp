@@ -18,8 +18,8 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
     EXPECT_EQ(CourseApp("w09p2a").query(), "light=on&jump=on&projection=persp");
     EXPECT_EQ(CourseApp("w09p2b").query(), "light=on&jump=on&fbo-view=light&rtt=fbo&map-size=1024");
     EXPECT_EQ(CourseApp("w09p2c").query(),
-              "light=on&jump=on&encoding=rgba&filter=hard&bias=auto&map-faces=auto&precision=highp&map-size=1024&aov=color&"
-              "map-view=on");
+              "light=on&jump=on&budget-ms=0&encoding=rgba&filter=hard&bias=auto&map-faces=auto&precision=highp&map-size=1024&"
+              "aov=color&map-view=on");
     EXPECT_EQ(CourseApp("volumes").query(),
               "light=on&jump=on&volume-method=auto&show-volumes=off&eye=scene&aov=color");
     // The soft exercise starts still (a frame can converge), with a light of radius 0.3 and PCSS.
@@ -154,6 +154,28 @@ TEST(ExerciseOptions, TheEyeMovesIntoTheShadowAndIsKept) {
     EXPECT_NE(b.query().find("eye=in-shadow"), std::string::npos) << b.query();
     EXPECT_NE(b.set_option("out", "x.png"), "");  // the other job options stay the exercise's
     EXPECT_NE(b.set_option("frames", "3"), "");
+}
+
+TEST(ExerciseOptions, TheBudgetIsAnOptionTheQueryKeeps) {
+    // W09P2c shows a control for it: the query always says it (off: 0).
+    CourseApp a("w09p2c");
+    EXPECT_NE(a.query().find("budget-ms=0&"), std::string::npos) << a.query();
+    ASSERT_EQ(a.set_option("budget-ms", "8"), "");
+    EXPECT_NE(a.query().find("budget-ms=8&"), std::string::npos) << a.query();
+    EXPECT_EQ(a.budget(), nullptr);  // made at the first frame on a context (its caps)
+    EXPECT_EQ(a.set_option("budget-ms", "-1").rfind("budget-ms: ", 0), 0u) << a.set_option("budget-ms", "-1");
+    EXPECT_NE(a.query().find("budget-ms=8&"), std::string::npos) << "a bad value changes nothing: " << a.query();
+    ASSERT_EQ(a.set_option("budget-ms", "0"), "");
+    EXPECT_NE(a.query().find("budget-ms=0&"), std::string::npos) << a.query();
+    // Elsewhere (no control) it is kept in the query while on, as another setting changed.
+    CourseApp c("cascades");
+    EXPECT_EQ(c.query().find("budget-ms"), std::string::npos) << c.query();
+    ASSERT_EQ(c.set_option("budget-ms", "16"), "");
+    EXPECT_NE(c.query().find("budget-ms=16"), std::string::npos) << c.query();
+    // Shadow volumes have no map for it to choose.
+    CourseApp v("volumes");
+    EXPECT_NE(v.set_option("budget-ms", "8").find("--technique volumes has none"), std::string::npos) << v.set_option("budget-ms", "8");
+    EXPECT_EQ(v.query().find("budget-ms"), std::string::npos) << v.query();
 }
 
 TEST(ExerciseOptions, VolumeKeys) {
@@ -438,8 +460,9 @@ TEST(ExerciseList, EveryControlNamesAnOptionAndOffersValidValues) {
             if (const auto* t = render::find_option(examples::toggle_table(), c.option)) info = &t->info;
             else if (const auto* r = render::find_option(render::option_table(), c.option)) info = &r->info;
             ASSERT_NE(info, nullptr) << x.name << ": " << c.option;
-            // A page sets no job option but the eye (the exercises place it: CourseApp::set_option).
-            if (c.option != "eye") {
+            // A page sets no job option but the eye (the exercises place it: CourseApp::set_option)
+            // and the time budget.
+            if (c.option != "eye" && c.option != "budget-ms") {
                 EXPECT_EQ(info->part, render::OptionPart::Technique) << c.option << ": a page sets no job option";
             }
             for (std::string_view v : c.values) EXPECT_EQ(render::check_value(*info, v), "") << c.option << "=" << v;
