@@ -15,17 +15,23 @@ bad() { echo "FAIL $1"; fail=1; }
 "$penumbra" render --size 64x64 --frames 30 --budget-ms 0.001 > tight.out 2> tight.err || bad "tight: exit $?: $(cat tight.err)"
 grep -Eq '^budget 0\.00 ms: (depthtex|rgba) hard, map 128, measured [0-9.]+ ms; over the budget at the smallest map$' tight.out &&
   ok "a budget nothing meets: map 128" || bad "tight: $(cat tight.out)"
-# A second a frame: every map fits, the controller climbs to the largest (from 512, 10 frames a step).
-"$penumbra" render --size 64x64 --frames 60 --budget-ms 1000 -v > wide.out 2> wide.err || bad "wide: exit $?: $(cat wide.err)"
-grep -Eq '^budget 1000\.00 ms: (depthtex|rgba) hard, map (4096|2048), measured [0-9.]+ ms; the largest map' wide.out &&
-  ok "a budget everything meets: the largest map" || bad "wide: $(cat wide.out)"
-grep -q '^budget: frame [0-9]*: map 512 -> 1024' wide.err && ok "-v: each change" || bad "wide -v: $(cat wide.err)"
+# A second a frame: every rung fits, the controller climbs (from 512, 10 frames a step) past the
+# largest map to shadow volumes, the top rung where they can draw the scene (the course).
+"$penumbra" render --size 64x64 --frames 90 --budget-ms 1000 -v > wide.out 2> wide.err || bad "wide: exit $?: $(cat wide.err)"
+grep -Eq '^budget 1000\.00 ms: shadow volumes, measured [0-9.]+ ms; the most accurate \(exact hard shadows\)$' wide.out &&
+  ok "a budget everything meets: shadow volumes" || bad "wide: $(cat wide.out)"
+grep -q '^budget: frame [0-9]*: map 512 -> map 1024' wide.err && grep -q '^budget: frame [0-9]*: map 4096 -> shadow volumes' wide.err &&
+  ok "-v: each change" || bad "wide -v: $(cat wide.err)"
+# With a soft filter there is no volumes rung: the largest map.
+"$penumbra" render --size 64x64 --frames 90 --budget-ms 1000 --filter pcss --light-radius 0.05 > soft.out 2> soft.err &&
+  grep -Eq '^budget 1000\.00 ms: (depthtex|rgba) pcss, map 4096, measured [0-9.]+ ms; the largest map' soft.out &&
+  ok "a soft filter: the largest map" || bad "soft: $(cat soft.out soft.err)"
 # The control: without the option, no budget line and the given map.
 "$penumbra" render --size 64x64 --frames 3 > none.out 2>&1 && ! grep -q '^budget' none.out &&
   ok "no --budget-ms: no budget" || bad "none: $(cat none.out)"
 # One frame asked for: it settles first, then writes the frame.
 "$penumbra" render --size 64x64 --budget-ms 1000 --out one.png > one.out 2> one.err && [ -s one.png ] &&
-  grep -q '^budget 1000\.00 ms: .*the largest map' one.out && ok "one frame: settled, then written" ||
+  grep -q '^budget 1000\.00 ms: shadow volumes, .*the most accurate' one.out && ok "one frame: settled, then written" ||
   bad "one: $(cat one.out one.err)"
 # plan: the note says what was chosen, and the plan's map is that size.
 "$penumbra" plan --size 64x64 --budget-ms 0.001 --json > plan.json 2> plan.err || bad "plan: exit $?: $(cat plan.err)"

@@ -8,7 +8,9 @@
 // one, else RGBA packing, which score the same; the hard test for a point light, the user's soft
 // filter for a light with a radius). Against the ray-traced truth a larger map is the larger
 // share of the accuracy a budget can buy (docs/resolution.md), so the rungs are ordered by cost
-// and by accuracy at once.
+// and by accuracy at once. Where the caller can draw them, shadow volumes (exact hard shadows)
+// are the top rung, tried past a map that did not fit: their cost follows their silhouettes and
+// shadowed area, not a map's size.
 //
 // The model: each rung's cost relative to the next, from what the bench measured (llvmpipe, median
 // over its 8 scene frames at 512x512, moving), replaced by the ratio the frames measure once both
@@ -40,9 +42,13 @@ public:
     static constexpr int kStartSkip = 12;        // frames not measured at the start
     static constexpr double kRelearn = 0.2;      // a rung's time this far from when a ratio was learned: relearn it
 
+    static constexpr int kVolumes = 0;           // the shadow volumes' rung (map_size())
+
     // `base`: the user's settings (a shadow-map technique); `depth_texture`: the context has one;
-    // `largest`: the largest map side the context renders (clamped to kLargestMap).
-    BudgetController(double budget_ms, const Settings& base, bool depth_texture, int largest);
+    // `largest`: the largest map side the context renders (clamped to kLargestMap); `volumes`:
+    // shadow volumes can draw this scene here (linked, and Renderer::check has no objection), so
+    // they are the top rung (not with a soft filter).
+    BudgetController(double budget_ms, const Settings& base, bool depth_texture, int largest, bool volumes = false);
 
     // The settings of the next frame: the base's with the choice applied.
     const Settings& settings() const { return settings_; }
@@ -55,7 +61,7 @@ public:
     double budget_ms() const { return budget_; }
     int rung() const { return rung_; }
     int rungs() const { return static_cast<int>(sizes_.size()); }
-    int map_size(int rung) const { return sizes_[static_cast<size_t>(rung)]; }
+    int map_size(int rung) const { return sizes_[static_cast<size_t>(rung)]; }  // kVolumes: shadow volumes
     // The time of the current rung (median of its recent frames; < 0: not yet measured).
     double measured_ms() const;
     // The predicted time of `rung`, from the current rung's time and the ratios between (< 0: the
@@ -72,11 +78,14 @@ public:
 
 private:
     void move_to(int rung, const std::string& reason);
+    int next_up() const;  // the rung an up-move would try (rung_ at the top)
+    void learn_volumes(double now);
     double ratio(int from, int to) const;  // predicted time(to) / time(from), adjacent or not
 
     double budget_ = 0.0;
     Settings settings_;
     bool depth_texture_ = false;
+    Technique technique_{};            // the base's (a map's) for the map rungs
     std::vector<int> sizes_;
     std::vector<double> last_ms_;      // each rung's last measured time (< 0: never run)
     std::vector<double> learned_up_;   // time(k + 1) / time(k) as measured back to back (< 0: not yet)
@@ -84,6 +93,7 @@ private:
     std::vector<long> blocked_until_;  // frame number before which the rung is not taken going up
     std::vector<int> block_;           // the next block's length
     std::vector<bool> was_over_;       // the rung was left for being over the budget
+    double volumes_scale_ = -1.0;      // the volumes' measured ratio over the model's (< 0: not measured)
     std::vector<double> window_;       // the current rung's recent times
     int rung_ = 0;
     int previous_ = -1;                // the rung run just before this one

@@ -48,7 +48,7 @@ void budget_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) 
     render::Settings base = w.base.settings;
     base.technique = render::technique_named("shadowmap");
     for (double budget : budgets) {
-        render::BudgetController b(budget, base, r.caps().depth_texture, r.caps().max_target_size());
+        render::BudgetController b = budget_for(budget, base, r, still, in);
         if (const std::string problem = r.check(still, b.settings(), in); !problem.empty()) {
             w.notes.push_back(spec->label + ": --budget-ms skipped: " + problem);
             return;
@@ -102,7 +102,8 @@ std::string budget_table(const Sweep& w) {
       << "|---:|---|---:|---:|---:|---:|---|---:|---:|---:|\n";
     for (const Row& r : w.budget) {
         const Row* b = best_fixed(w, r);
-        o << "| " << fixed(r.budget_ms, 0) << " | " << r.technique << " | " << r.map << " | " << fixed(r.ms_moving, 2) << " | "
+        o << "| " << fixed(r.budget_ms, 0) << " | " << r.technique << " | " << (r.map ? std::to_string(r.map) : "-") << " | "
+          << fixed(r.ms_moving, 2) << " | "
           << fixed(r.ms_moving / r.budget_ms, 2) << " | " << fixed(r.score.error_pct, 3) << " | ";
         if (b)
             o << key_label({b->technique, b->map}) << " | " << fixed(b->ms_moving, 2) << " | " << fixed(b->score.error_pct, 3) << " | "

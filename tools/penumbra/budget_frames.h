@@ -10,23 +10,36 @@
 
 #include "plan/budget.h"
 #include "plan/options.h"
+#include "plan/techniques/technique.h"
 #include "render/renderer.h"
 
 namespace penumbra::tools {
 
 // Frames a budget settles over when the command renders one frame (render, plan without --frames):
-// at most two steps up at 10 frames each and a blocked probe, with room to spare.
-inline constexpr int kBudgetSettleFrames = 60;
+// the 12 at the start it does not measure, then the whole ladder from 512 (four steps up to 4096
+// and shadow volumes, 10 or 11 frames each), with room to spare.
+inline constexpr int kBudgetSettleFrames = 90;
 
-// The controller for `o`'s --budget-ms on this renderer's context; none when the option is 0.
-// A technique without a map is bad input (the returned text, else "").
-inline std::optional<render::BudgetController> make_budget(const render::Options& o, const render::Renderer& r,
+// The controller for settings `s` and a budget of `budget_ms` on this renderer's context, with
+// shadow volumes as its top rung where they can draw `scene` with those settings.
+inline render::BudgetController budget_for(double budget_ms, const render::Settings& s, render::Renderer& r,
+                                           const scene::Scene& scene, const render::FrameInputs& in) {
+    render::Settings volumes = s;
+    volumes.technique = render::Technique::Volumes;
+    const bool can = render::technique_linked(render::Technique::Volumes) && r.check(scene, volumes, in).empty();
+    return render::BudgetController(budget_ms, s, r.caps().depth_texture, r.caps().max_target_size(), can);
+}
+
+// The controller for `o`'s --budget-ms; none when the option is 0. A technique without a map is
+// bad input (the returned text, else "").
+inline std::optional<render::BudgetController> make_budget(const render::Options& o, render::Renderer& r,
+                                                           const scene::Scene& scene, const render::FrameInputs& in,
                                                            std::string& refusal) {
     refusal.clear();
     if (o.job.budget_ms <= 0.0) return std::nullopt;
     refusal = render::budget_refusal(o.settings);
     if (!refusal.empty()) return std::nullopt;
-    return render::BudgetController(o.job.budget_ms, o.settings, r.caps().depth_texture, r.caps().max_target_size());
+    return budget_for(o.job.budget_ms, o.settings, r, scene, in);
 }
 
 // Renders `frames` frames of scene_at(i) with b's settings, each finished and timed, and observed;

@@ -120,7 +120,7 @@ int run_render(const render::Options& given, bool verbose, bool still, const std
     load_snippets(r, src.at(job.time), o, snippets, text, in);
 
     std::string refusal;
-    std::optional<render::BudgetController> budget = tools::make_budget(o, r, refusal);
+    std::optional<render::BudgetController> budget = tools::make_budget(o, r, src.at(job.time), in, refusal);
     if (!refusal.empty()) throw Failure{refusal, 2};
     if (budget) {
         if (const std::string problem = r.check(src.at(job.time), budget->settings(), in); !problem.empty())
@@ -182,7 +182,7 @@ int run_plan(const render::Options& given, bool json, const std::vector<std::str
     if (const std::string problem = r.check(src.at(job.time), o.settings, in); !problem.empty()) throw Failure{problem, 2};
     load_snippets(r, src.at(job.time), o, snippets, text, in);
     std::string refusal;
-    std::optional<render::BudgetController> budget = tools::make_budget(o, r, refusal);
+    std::optional<render::BudgetController> budget = tools::make_budget(o, r, src.at(job.time), in, refusal);
     if (!refusal.empty()) throw Failure{refusal, 2};
     const auto at = [&](int i) -> const scene::Scene& { return src.at(job.time + static_cast<double>(i) / 60.0); };
     render::Settings s = o.settings;
