@@ -28,8 +28,15 @@ assert {r["section"] for r in every} == {"sweep", "silhouette", "effects", "ligh
 # --budget-ms 4 and 16 on course@0.60: a hard-filtered map of a power-of-two size the controller
 # settled on, or shadow volumes (its top rung), its error scored, the settings naming the budget;
 # a larger budget never lower on the ladder
-bud = sorted((r for r in every if r["section"] == "budget"), key=lambda r: float(r["budget_ms"]))
+bud = sorted((r for r in every if r["section"] == "budget" and float(r["budget_ms"]) > 0), key=lambda r: float(r["budget_ms"]))
 assert [float(r["budget_ms"]) for r in bud] == [4.0, 16.0], bud
+# and every rung of its ladder as a fixed setting over the same frames (budget_ms 0): the maps 128
+# to 4096 and shadow volumes, each timed and scored once
+ladder = [r for r in every if r["section"] == "budget" and float(r["budget_ms"]) == 0]
+assert sorted(int(r["map_size"]) for r in ladder if r["technique"] != "volumes auto") == [128, 256, 512, 1024, 2048, 4096], ladder
+assert [r["technique"] for r in ladder].count("volumes auto") == 1, ladder
+for r in ladder:
+    assert "--budget-ms" not in r["settings"] and float(r["ms_moving"]) > 0.0 and 0.0 <= float(r["error_pct"]) <= 100.0, r
 rung = lambda r: 1 << 20 if r["technique"] == "volumes auto" else int(r["map_size"])
 for r in bud:
     assert r["scene"] == "course@0.60" and "--budget-ms %g" % float(r["budget_ms"]) in r["settings"], r
@@ -138,6 +145,7 @@ assert "## The stencil effects and the post passes on course@0.60" in md and "| 
 assert "| rgba hard | none | shadow-blur:6 | - |" in md
 assert "## Forward against deferred shading on course@0.60" in md and "| 64 |" in md
 assert "## The time budget (--budget-ms)" in md and "| budget ms | chosen | map |" in md
+assert "The ladder's rungs over the same frames:" in md
 lsvg = ET.parse(d + "/lights.svg").getroot()
 assert "deferred" in [t.text for t in lsvg.iter("{http://www.w3.org/2000/svg}text")]
 assert open(d + "/lights.png", "rb").read()[:8] == b"\x89PNG\r\n\x1a\n"

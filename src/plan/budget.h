@@ -12,16 +12,18 @@
 // are the top rung, tried past a map that did not fit: their cost follows their silhouettes and
 // shadowed area, not a map's size.
 //
-// The model: each rung's cost relative to the next, from what the bench measured (llvmpipe, median
-// over its 8 scene frames at 512x512, moving), replaced by the ratio the frames measure once both
-// rungs have been run. Hysteresis: a rung is left downwards only when the median of its recent
-// frames exceeds the budget by kDownMargin; the next one up is taken only after kHoldFrames at
-// the current one, when predicted within kUpMargin of the budget, and not while it is blocked. A
-// rung left for being over the budget is blocked for a time that doubles each time, so the choice
-// cannot flicker between two rungs.
+// The model: each rung's cost relative to the next, from what the bench measured (llvmpipe, the
+// course at 512x512, moving), replaced by the ratio the frames measure once both rungs have been
+// run. Hysteresis: a rung is left downwards only when the median of its recent frames exceeds the
+// budget by kDownMargin; the next one up is taken only after kHoldFrames at the current one, when
+// predicted within kUpMargin of the budget (or kProbeMargin, for a rung over the budget fewer than
+// kMaxOvers times), and not while it is blocked. A rung left for being over the budget is blocked
+// for a time that doubles each time and, after kMaxOvers, tried only on a prediction that fits, so
+// the choice cannot flicker between two rungs.
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "plan/settings.h"
@@ -36,7 +38,9 @@ public:
     static constexpr int kWindow = 5;            // the frames whose median is the rung's time
     static constexpr int kMinSamples = 3;        // before a rung's time is trusted
     static constexpr double kUpMargin = 0.9;     // up when predicted at most 0.9 x the budget
-    static constexpr double kProbeMargin = 1.3;  // or, never measured, up to 1.3 x (the model's ratio may be pessimistic)
+    static constexpr double kProbeMargin = 1.5;  // or, over fewer than kMaxOvers times, up to 1.5 x (the model may be pessimistic)
+    static constexpr int kRecentFrames = 30;     // an up-move this recent is undone to where it came from
+    static constexpr int kMaxOvers = 2;          // overs after which a rung is tried only on a fitting prediction
     static constexpr double kDownMargin = 1.05;  // down when measured over 1.05 x the budget
     static constexpr int kFirstBlock = 30;       // frames a rung left for its time stays blocked, doubling
     static constexpr int kStartSkip = 12;        // frames not measured at the start
@@ -54,7 +58,9 @@ public:
     const Settings& settings() const { return settings_; }
     // `s` with the current choice (encoding, filter, map size) put in: for a caller whose other
     // settings change from frame to frame (the pages' and the desktop's controls).
-    Settings apply(Settings s) const;
+    Settings apply(Settings s) const { return at_rung(rung_, std::move(s)); }
+    // `s` with rung `rung`'s choice put in (the bench times every rung as a fixed setting).
+    Settings at_rung(int rung, Settings s) const;
     // The frame rendered with settings() took `ms`; true when the next frame's settings differ.
     bool observe(double ms);
 
@@ -92,7 +98,7 @@ private:
     std::vector<double> learned_base_; // time(k) when learned_up_[k] was
     std::vector<long> blocked_until_;  // frame number before which the rung is not taken going up
     std::vector<int> block_;           // the next block's length
-    std::vector<bool> was_over_;       // the rung was left for being over the budget
+    std::vector<int> over_count_;      // times the rung was left for being over the budget
     double volumes_scale_ = -1.0;      // the volumes' measured ratio over the model's (< 0: not measured)
     std::vector<double> window_;       // the current rung's recent times
     int rung_ = 0;

@@ -103,7 +103,7 @@ struct Row {
     // the context has no timer (or the rows were read from a CSV without them).
     double gpu_moving = -1.0, gpu_still = -1.0;
     std::string gpu_passes;
-    // The budget section's rows: the --budget-ms they ran under.
+    // The budget section's rows: the --budget-ms they ran under (0: a rung of its ladder, fixed).
     double budget_ms = 0.0;
 };
 
@@ -289,11 +289,14 @@ double lights_crossing(const Sweep& w);
 // ---- budget_bench.cpp: --budget-ms -----------------------------------------------------------------
 
 // --budget-ms 2, 4, 8, 16, 32 (quick: 4, 16) on the first course frame, moving: the settings each
-// settled on, their time and error against the hard truth, into w.budget.
+// settled on, their time and error against the hard truth, into w.budget; and each rung of the
+// ladder as a fixed setting over the same frames (budget_ms 0).
 void budget_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in);
-// The sweep's row on the same frame with the least error among those whose moving time fits the
-// row's budget; null when none does.
+// The fixed rung (budget_ms 0) with the least error among those whose time fits the row's budget;
+// null when none does.
 const Row* best_fixed(const Sweep& w, const Row& budget_row);
+// The same among the sweep's rows on the same frame (timed over the sweep's own frames).
+const Row* best_of_sweep(const Sweep& w, const Row& budget_row);
 // results.md's table: each budget's choice beside best_fixed's. Empty without its rows.
 std::string budget_table(const Sweep& w);
 

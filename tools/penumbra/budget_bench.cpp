@@ -2,8 +2,9 @@
 // course frame of the sweep's scenes, the course animated 1/60 s a frame (moving: the map redrawn
 // every frame). Each row: what the controller settled on, the median of the second half of its
 // frames (the first half is its settling), and the settled settings' error against the hard truth
-// of the frame itself. The table puts beside each the best fixed setting of the sweep's rows on
-// the same frame whose measured time fits the same budget.
+// of the frame itself. Every rung of the ladder is timed too as a fixed setting over the same
+// frames (budget_ms 0); the table puts beside each budget the best of them that fits it, and the
+// best row of the sweep (timed over its own frames) that does.
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
@@ -47,15 +48,38 @@ void budget_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) 
                                                 : std::vector<double>(std::begin(kBudgets), std::end(kBudgets));
     render::Settings base = w.base.settings;
     base.technique = render::technique_named("shadowmap");
+    const auto moving_at = [&](int i) -> const scene::Scene& { return src.at(spec->time + static_cast<double>(i + 1) / 60.0); };
+    const auto score_still = [&](render::Settings s) {
+        s.aov = render::Aov::Visibility;
+        r.render(still, s, in);
+        return measure::score(red_channel(r.read_image()), truth.lit, valid, nullptr);
+    };
+    // Every rung of the ladder as a fixed setting over the same frames, timed as the budget's rows
+    // are (the median of the second half): what a budget could have had, on the frames it ran.
+    {
+        const render::BudgetController ladder = budget_for(1.0, base, r, still, in);
+        for (int k = 0; k < ladder.rungs(); ++k) {
+            const render::Settings s = ladder.at_rung(k, base);
+            if (!r.check(still, s, in).empty()) continue;
+            Row row;
+            row.section = kBudgetSection;
+            row.scene = spec->label;
+            row.time = spec->time;
+            set_technique(row, s, technique_label(s));
+            row.settings = row_args(w.base, *spec, s);
+            row.ms_moving = time_frames(r, s, in, frames / 2, frames - frames / 2, moving_at).median_ms;
+            row.frames = frames - frames / 2;
+            row.score = score_still(s);
+            w.budget.push_back(row);
+        }
+    }
     for (double budget : budgets) {
         render::BudgetController b = budget_for(budget, base, r, still, in);
         if (const std::string problem = r.check(still, b.settings(), in); !problem.empty()) {
             w.notes.push_back(spec->label + ": --budget-ms skipped: " + problem);
             return;
         }
-        const std::vector<double> ms = budget_frames(r, b, in, frames, [&](int i) -> const scene::Scene& {
-            return src.at(spec->time + static_cast<double>(i + 1) / 60.0);
-        });
+        const std::vector<double> ms = budget_frames(r, b, in, frames, moving_at);
         Row row;
         row.section = kBudgetSection;
         row.budget_ms = budget;
@@ -68,9 +92,7 @@ void budget_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) 
         row.settings = row_args(labelled, *spec, s);
         row.ms_moving = measure::median(std::vector<double>(ms.begin() + frames / 2, ms.end()));
         row.frames = frames - frames / 2;
-        s.aov = render::Aov::Visibility;
-        r.render(still, s, in);
-        row.score = measure::score(red_channel(r.read_image()), truth.lit, valid, nullptr);
+        row.score = score_still(s);
         std::fprintf(stderr, "budget %5.1f ms: %s map %d, %.2f ms/frame, error %.3f %%; %s\n", budget, row.technique.c_str(),
                      row.map, row.ms_moving, row.score.error_pct, b.why().c_str());
         w.budget.push_back(row);
@@ -82,6 +104,15 @@ void budget_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) 
 
 const Row* best_fixed(const Sweep& w, const Row& budget_row) {
     const Row* best = nullptr;
+    for (const Row& r : w.budget)
+        if (r.budget_ms == 0.0 && r.scene == budget_row.scene && r.ms_moving > 0.0 && r.ms_moving <= budget_row.budget_ms &&
+            (!best || r.score.error_pct < best->score.error_pct))
+            best = &r;
+    return best;
+}
+
+const Row* best_of_sweep(const Sweep& w, const Row& budget_row) {
+    const Row* best = nullptr;
     for (const Row& r : w.rows)
         if (r.scene == budget_row.scene && r.score.valid > 0 && r.ms_moving > 0.0 && r.ms_moving <= budget_row.budget_ms &&
             (!best || r.score.error_pct < best->score.error_pct))
@@ -90,27 +121,38 @@ const Row* best_fixed(const Sweep& w, const Row& budget_row) {
 }
 
 std::string budget_table(const Sweep& w) {
-    if (w.budget.empty()) return "";
+    const Row* first = nullptr;
+    for (const Row& r : w.budget)
+        if (r.budget_ms > 0.0 && !first) first = &r;
+    if (!first) return "";
+    const auto map_of = [](const Row& r) { return r.map ? std::to_string(r.map) : std::string("-"); };
     std::ostringstream o;
     o << "\n## The time budget (--budget-ms)\n\n"
-      << "`--budget-ms N` on " << w.budget.front().scene << " at " << w.width << "x" << w.height << ", moving (the course "
-      << "animated 1/60 s a frame): the settings it settled on, the median ms of the second half of its " << 2 * w.budget.front().frames
+      << "`--budget-ms N` on " << first->scene << " at " << w.width << "x" << w.height << ", moving (the course "
+      << "animated 1/60 s a frame): the settings it settled on, the median ms of the second half of its " << 2 * first->frames
       << " frames (wall time after glFinish) and their error against the hard truth of the frame. Beside it, the most "
-         "accurate row of the sweep on the same frame whose moving time fits the same budget (its ms as the sweep measured "
-         "it, in this run).\n\n"
-      << "| budget ms | chosen | map | ms/frame | / budget | error % | best fixed that fits | its ms | its error % | error / best's |\n"
-      << "|---:|---|---:|---:|---:|---:|---|---:|---:|---:|\n";
+         "accurate rung of its ladder as a fixed setting whose time over the same frames (timed the same way, in this run) "
+         "fits the same budget, and the most accurate row of the sweep (its own frames) that fits it.\n\n"
+      << "| budget ms | chosen | map | ms/frame | / budget | error % | best fixed rung that fits | its ms | its error % | "
+         "error / its | best of the sweep that fits | its ms | its error % |\n"
+      << "|---:|---|---:|---:|---:|---:|---|---:|---:|---:|---|---:|---:|\n";
     for (const Row& r : w.budget) {
-        const Row* b = best_fixed(w, r);
-        o << "| " << fixed(r.budget_ms, 0) << " | " << r.technique << " | " << (r.map ? std::to_string(r.map) : "-") << " | "
-          << fixed(r.ms_moving, 2) << " | "
+        if (r.budget_ms == 0.0) continue;
+        o << "| " << fixed(r.budget_ms, 0) << " | " << r.technique << " | " << map_of(r) << " | " << fixed(r.ms_moving, 2) << " | "
           << fixed(r.ms_moving / r.budget_ms, 2) << " | " << fixed(r.score.error_pct, 3) << " | ";
-        if (b)
-            o << key_label({b->technique, b->map}) << " | " << fixed(b->ms_moving, 2) << " | " << fixed(b->score.error_pct, 3) << " | "
-              << (b->score.error_pct > 0.0 ? fixed(r.score.error_pct / b->score.error_pct, 2) : "-") << " |\n";
+        if (const Row* b = best_fixed(w, r))
+            o << b->technique << " " << map_of(*b) << " | " << fixed(b->ms_moving, 2) << " | " << fixed(b->score.error_pct, 3) << " | "
+              << (b->score.error_pct > 0.0 ? fixed(r.score.error_pct / b->score.error_pct, 2) : "-") << " | ";
         else
-            o << "none fits | - | - | - |\n";
+            o << "none fits | - | - | - | ";
+        if (const Row* b = best_of_sweep(w, r))
+            o << key_label({b->technique, b->map}) << " | " << fixed(b->ms_moving, 2) << " | " << fixed(b->score.error_pct, 3) << " |\n";
+        else
+            o << "none fits | - | - |\n";
     }
+    o << "\nThe ladder's rungs over the same frames:\n\n| rung | ms/frame | error % |\n|---|---:|---:|\n";
+    for (const Row& r : w.budget)
+        if (r.budget_ms == 0.0) o << "| " << r.technique << " " << map_of(r) << " | " << fixed(r.ms_moving, 2) << " | " << fixed(r.score.error_pct, 3) << " |\n";
     return o.str();
 }
 

@@ -25,8 +25,8 @@ inline constexpr int kBudgetSettleFrames = 90;
 inline render::BudgetController budget_for(double budget_ms, const render::Settings& s, render::Renderer& r,
                                            const scene::Scene& scene, const render::FrameInputs& in) {
     render::Settings volumes = s;
-    volumes.technique = render::Technique::Volumes;
-    const bool can = render::technique_linked(render::Technique::Volumes) && r.check(scene, volumes, in).empty();
+    volumes.technique = render::technique_named("volumes");
+    const bool can = render::technique_linked(volumes.technique) && r.check(scene, volumes, in).empty();
     return render::BudgetController(budget_ms, s, r.caps().depth_texture, r.caps().max_target_size(), can);
 }
 
