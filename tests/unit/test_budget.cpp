@@ -52,7 +52,9 @@ BudgetController controller(double budget, bool depth_texture = true, int larges
 
 TEST(Budget, SettlesOnTheLargestMapThatFits) {
     // Costs: 128 4.06, 256 4.25, 512 5, 1024 8, 2048 20, 4096 68 ms.
-    for (const auto& [budget, want] : std::vector<std::pair<double, int>>{{6.0, 512}, {10.0, 1024}, {22.0, 2048}, {80.0, 4096}}) {
+    for (const auto& bw : std::vector<std::pair<double, int>>{{6.0, 512}, {10.0, 1024}, {22.0, 2048}, {80.0, 4096}}) {
+        const double budget = bw.first;
+        const int want = bw.second;  // a plain variable: C++17 lambdas cannot capture a structured binding
         BudgetController b = controller(budget);
         const Frames r = run(b, 300, [](int size, int) { return llvmpipe_like(size); });
         EXPECT_EQ(b.settings().map_size, want) << "budget " << budget << ": " << b.why();
