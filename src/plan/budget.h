@@ -75,7 +75,7 @@ public:
     double predicted_ms(int rung) const;
     // One line: the budget, the settings chosen, their time, and why not the next one up.
     std::string why() const;
-    // The changes so far ("frame 14: map 512 -> 1024 (predicted 6.1 ms)"), for -v.
+    // The changes so far ("frame 15: map 512 -> map 1024 (measured 7.90 ms, predicted 9.90 ms)"), for -v.
     const std::vector<std::string>& log() const { return log_; }
 
     // The model: the cost of a frame with a map of side `size` over the unshadowed frame, as the
