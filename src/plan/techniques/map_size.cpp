@@ -35,7 +35,7 @@ int auto_map_size(PlanContext& c, const std::vector<glm::vec3>& visible, const s
     const float pixels = shadow::screen_pixels(visible, c.plan.camera.view_proj, c.camera_target.width, c.camera_target.height);
     const shadow::MatchedSize m =
         shadow::matched_map_size(pixels, shadow::texel_use(f, visible), 1, kAutoSmallest, auto_largest(c, 1));
-    c.plan.put(MapSizeReport{m.size, m.why});
+    c.plan.put(MapSizeReport{m.size, m.wanted, m.why});
     return m.size;
 }
 
@@ -59,7 +59,7 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& 
     }
     best.why += std::string(" (face ") + shadow::cube_face_name(face_index) + ", the most of the " +
                 std::to_string(fit.drawn()) + " drawn)";
-    c.plan.put(MapSizeReport{best.size, best.why});
+    c.plan.put(MapSizeReport{best.size, best.wanted, best.why});
     return best.size;
 }
 

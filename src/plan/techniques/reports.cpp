@@ -31,7 +31,7 @@ std::string LightViewReport::json(const LightViewReport& r) {
 std::string MapSizeReport::text(const MapSizeReport& r) { return "map size: " + r.why + "\n"; }
 
 std::string MapSizeReport::json(const MapSizeReport& r) {
-    return "{\"size\":" + std::to_string(r.size) + ",\"why\":" + json_quote(r.why) + "}";
+    return "{\"size\":" + std::to_string(r.size) + ",\"wanted\":" + std::to_string(r.wanted) + ",\"why\":" + json_quote(r.why) + "}";
 }
 
 std::string CascadesReport::text(const CascadesReport& r) {

@@ -41,6 +41,7 @@ struct CascadesReport {
 struct MapSizeReport {
     static constexpr const char* kKey = "map_size";
     int size = 0;
+    int wanted = 0;  // the texels a side two texels a pixel want (MatchedSize::wanted; 0: nothing in view)
     std::string why;
     static std::string text(const MapSizeReport& r);
     static std::string json(const MapSizeReport& r);
