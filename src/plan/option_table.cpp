@@ -450,6 +450,16 @@ std::vector<Option<Options>> make_table() {
                       {"16", "16 ms (60 frames a second)"}, {"33", "33 ms (30 frames a second): most accurate"}};
     add(budget, [](Options& o, std::string_view v) { o.job.budget_ms = number_of(v); },
         [](const Options& o) { return format_number(o.job.budget_ms); });
+
+    OptionInfo max_error = make_option_info("max-error", P::Job, T::Number,
+                                            "0: off; else the least work predicted to keep the frame within P % of the "
+                                            "hard truth (map size, or shadow volumes), from its shadow edges and the "
+                                            "texels a pixel each map gives them (render, plan, bench)",
+                                            "Error target (%)");
+    max_error.min = 0.0;
+    max_error.max = kMaxErrorPct;
+    add(max_error, [](Options& o, std::string_view v) { o.job.max_error = number_of(v); },
+        [](const Options& o) { return format_number(o.job.max_error); });
     return t;
 }
 

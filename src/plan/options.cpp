@@ -19,7 +19,7 @@ namespace penumbra::render {
 
 bool Job::operator==(const Job& o) const {
     return scene == o.scene && time == o.time && width == o.width && height == o.height && out == o.out &&
-           frames == o.frames && budget_ms == o.budget_ms && eye_in_shadow == o.eye_in_shadow;
+           frames == o.frames && budget_ms == o.budget_ms && max_error == o.max_error && eye_in_shadow == o.eye_in_shadow;
 }
 
 // ---- parsing ----------------------------------------------------------------------------------
@@ -303,8 +303,8 @@ namespace {
 std::string args_of(const std::vector<std::pair<std::string, std::string>>& pairs) {
     std::string out;
     for (const auto& [k, v] : pairs) {
-        // No file and no budget, the defaults, say nothing (a logged command line stays as it was).
-        if ((k == "out" && v.empty()) || (k == "budget-ms" && v == "0")) continue;
+        // No file, no budget and no error target, the defaults, say nothing (a logged command line stays as it was).
+        if ((k == "out" && v.empty()) || ((k == "budget-ms" || k == "max-error") && v == "0")) continue;
         out += (out.empty() ? "--" : " --") + k + " " + scene::printable(v);  // a log's one line
     }
     return out;

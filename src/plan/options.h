@@ -23,6 +23,7 @@ inline constexpr int kMaxImageSide = 16384;    // --size: each side (llvmpipe's 
 inline constexpr int kMaxFrames = 10000;       // --frames (render, plan, bench)
 inline constexpr double kMaxTime = 1e6;        // --time: seconds, either sign (about 11 days)
 inline constexpr double kMaxBudgetMs = 1e4;    // --budget-ms: 10 s a frame
+inline constexpr double kMaxErrorPct = 100.0;  // --max-error: % of the image
 inline constexpr int kMaxMapSize = 65536;      // --map-size (the context clamps it further, with a note)
 inline constexpr int kMaxSoftSamples = 16384;  // --soft-samples of truth and bench (area-light rays per pixel)
 inline constexpr double kMaxLightRadius = 1e6; // --light-radius
@@ -38,6 +39,9 @@ struct Job {
     // --budget-ms: the most accurate shadow-map settings whose frames fit this many ms, chosen from
     // the frames' measured times (plan/budget.h); 0: off, the settings as given.
     double budget_ms = 0.0;
+    // --max-error: the least work predicted to keep the frame within this % of the hard truth
+    // (tools/penumbra/max_error.h); 0: off.
+    double max_error = 0.0;
     bool eye_in_shadow = false;  // --eye in-shadow: scene::place_eye_in_shadow
     bool operator==(const Job& o) const;
 };

@@ -53,7 +53,7 @@ TEST(Options, TheTechniquePartAndTheJobPartSplit) {
     std::vector<std::string> technique, job;
     for (const auto& o : option_table())
         (o.info.part == OptionPart::Technique ? technique : job).emplace_back(o.info.name);
-    EXPECT_EQ(job, (std::vector<std::string>{"scene", "time", "size", "eye", "out", "frames", "budget-ms"}));
+    EXPECT_EQ(job, (std::vector<std::string>{"scene", "time", "size", "eye", "out", "frames", "budget-ms", "max-error"}));
     EXPECT_EQ(technique.size(), to_pairs(Settings{}).size());
     Settings s;
     EXPECT_EQ(parse_option(s, "encoding", "r8"), "");

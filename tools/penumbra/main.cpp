@@ -32,6 +32,7 @@
 #include "bias_sweep.h"
 #endif
 #include "budget_frames.h"
+#include "max_error.h"
 #include "cli_options.h"
 #include "options_doc.h"
 #include "egl_device.h"
@@ -102,6 +103,15 @@ void print_budget(const render::BudgetController& b, bool verbose) {
     std::printf("%s\n", b.why().c_str());
 }
 
+// --max-error: what was chosen and why (stdout); -v: every rung's prediction (stderr).
+void print_error_choice(const tools::ErrorChoice& c, bool verbose) {
+    if (verbose)
+        for (const tools::ErrorRung& g : c.rungs)
+            std::fprintf(stderr, "max-error: %-15s predicted %.3f %% (model cost %.2fx the unshadowed frame)\n",
+                         g.map ? ("map " + std::to_string(g.map)).c_str() : "shadow volumes", g.predicted_pct, g.cost);
+    std::printf("%s\n", c.why.c_str());
+}
+
 int run_render(const render::Options& given, bool verbose, bool still, const std::vector<std::string>& allow_outside,
                const std::string& snippets) {
     std::string text;
@@ -131,13 +141,19 @@ int run_render(const render::Options& given, bool verbose, bool still, const std
                 return src.at(job.time + (still ? 0.0 : static_cast<double>(i) / 60.0));
             });
     }
+    // --max-error: chosen once, on the frame at --time.
+    const std::optional<tools::ErrorChoice> target = tools::make_error_choice(o, r, src.at(job.time), in, refusal);
+    if (!refusal.empty()) throw Failure{refusal, 2};
+    const render::Settings chosen = budget ? budget->settings() : target ? target->settings() : o.settings;
+    if (target)
+        if (const std::string problem = r.check(src.at(job.time), chosen, in); !problem.empty()) throw Failure{problem, 2};
 
     std::vector<double> ms;
     r.gpu_timer().enable(verbose);  // -v: each pass's GPU time too, read after the last frame
     for (int i = 0; i < job.frames; ++i) {
         const double t = job.time + (still ? 0.0 : static_cast<double>(i) / 60.0);
         const auto start = std::chrono::steady_clock::now();
-        const render::FramePlan& plan = r.render(src.at(t), budget ? budget->settings() : o.settings, in);
+        const render::FramePlan& plan = r.render(src.at(t), budget ? budget->settings() : chosen, in);
         r.finish();
         const auto end = std::chrono::steady_clock::now();
         ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
@@ -156,6 +172,7 @@ int run_render(const render::Options& given, bool verbose, bool still, const std
                     job.frames, median, sorted.front(), sorted.back(), render::to_args(o).c_str());
     }
     if (budget) print_budget(*budget, verbose);
+    if (target) print_error_choice(*target, verbose);
     if (verbose) {
         const auto gpu = r.gpu_timer().take(true);
         std::printf("%s", gl::describe(gl::summarize(gpu), r.gpu_timer().available(), r.gpu_timer().discarded()).c_str());
@@ -190,11 +207,16 @@ int run_plan(const render::Options& given, bool json, const std::vector<std::str
         // The frames before the planned one are the budget's measurements (at least the settling run's).
         tools::budget_frames(r, *budget, in, std::max(job.frames - 1, tools::kBudgetSettleFrames), at);
         s = budget->settings();
-    } else {
-        for (int i = 0; i + 1 < job.frames; ++i) r.render(at(i), s, in);
     }
+    // --max-error: chosen on the planned frame.
+    const std::optional<tools::ErrorChoice> target = tools::make_error_choice(o, r, at(job.frames - 1), in, refusal);
+    if (!refusal.empty()) throw Failure{refusal, 2};
+    if (target) s = target->settings();
+    if (!budget)
+        for (int i = 0; i + 1 < job.frames; ++i) r.render(at(i), s, in);
     render::FramePlan plan = r.plan(at(job.frames - 1), s, in);
     if (budget) plan.notes.insert(plan.notes.begin(), budget->why());
+    if (target) plan.notes.insert(plan.notes.begin(), target->why);
     std::printf("%s%s", json ? plan.to_json().c_str() : plan.to_text().c_str(), json ? "\n" : "");
     return 0;
 }
