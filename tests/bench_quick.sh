@@ -24,7 +24,25 @@ python3 - "$work/bench" <<'PY' && ok || bad "bench outputs are not well-formed"
 import csv, struct, sys, xml.etree.ElementTree as ET, zlib
 d = sys.argv[1]
 every = list(csv.DictReader(open(d + "/results.csv")))
-assert {r["section"] for r in every} == {"sweep", "silhouette", "effects", "lights", "budget"}, {r["section"] for r in every}
+assert {r["section"] for r in every} == {"sweep", "silhouette", "effects", "lights", "budget", "max-error"}, {r["section"] for r in every}
+# --max-error 0.1 on each scene frame: every rung of the ladder predicted, scored and timed, the
+# same shadow-edge count on each of a frame's rungs; the choice one of them, the cheapest in the
+# model's order predicted within 0.1 % where any is, its settings naming the target
+err = [r for r in every if r["section"] == "max-error"]
+for scene in ("course@0.60", "bench_easy"):
+    rungs = [r for r in err if r["scene"] == scene and float(r["max_error_pct"]) == 0]
+    assert sorted(int(r["map_size"]) for r in rungs if r["technique"] != "volumes auto") == [128, 256, 512, 1024, 2048, 4096], rungs
+    assert len({r["edge_pixels"] for r in rungs}) == 1 and int(rungs[0]["edge_pixels"]) > 0, rungs
+    for r in rungs:
+        assert float(r["predicted_pct"]) > 0.0 and 0.0 <= float(r["error_pct"]) <= 100.0 and float(r["ms_moving"]) > 0.0, r
+    # a larger map is predicted no worse
+    maps = sorted((r for r in rungs if r["technique"] != "volumes auto"), key=lambda r: int(r["map_size"]))
+    assert all(float(a["predicted_pct"]) >= float(b["predicted_pct"]) for a, b in zip(maps, maps[1:])), maps
+    [chosen] = [r for r in err if r["scene"] == scene and float(r["max_error_pct"]) > 0]
+    assert float(chosen["max_error_pct"]) == 0.1 and "--max-error 0.1" in chosen["settings"], chosen
+    assert (chosen["technique"], chosen["map_size"]) in {(r["technique"], r["map_size"]) for r in rungs}, chosen
+    within = [r for r in rungs if float(r["predicted_pct"]) <= 0.1]
+    if within: assert float(chosen["predicted_pct"]) <= 0.1, chosen
 # --budget-ms 4 and 16 on course@0.60: a hard-filtered map of a power-of-two size the controller
 # settled on, or shadow volumes (its top rung), its error scored, the settings naming the budget;
 # a larger budget never lower on the ladder
@@ -146,6 +164,8 @@ assert "| rgba hard | none | shadow-blur:6 | - |" in md
 assert "## Forward against deferred shading on course@0.60" in md and "| 64 |" in md
 assert "## The time budget (--budget-ms)" in md and "| budget ms | chosen | map |" in md
 assert "The ladder's rungs over the same frames:" in md
+assert "## The error target (--max-error)" in md and "| scene | target % | chosen | map | predicted % |" in md
+assert "The model rung by rung" in md and "Measured over predicted, over" in md
 lsvg = ET.parse(d + "/lights.svg").getroot()
 assert "deferred" in [t.text for t in lsvg.iter("{http://www.w3.org/2000/svg}text")]
 assert open(d + "/lights.png", "rb").read()[:8] == b"\x89PNG\r\n\x1a\n"
@@ -172,6 +192,9 @@ if "$penumbra" bench --from-csv "$work/bench/results.csv" --out-dir "$work/again
           <(sed -n '/^## Forward against deferred/,/^$/p' "$work/again/results.md") &&
    cmp -s <(sed -n '/^## The time budget/,/^$/p' "$work/bench/results.md") \
           <(sed -n '/^## The time budget/,/^$/p' "$work/again/results.md") &&
+   cmp -s <(sed -n '/^| scene | target %/,/^$/p' "$work/bench/results.md") \
+          <(sed -n '/^| scene | target %/,/^$/p' "$work/again/results.md") &&
+   grep -q '^| scene | target %' "$work/again/results.md" &&
    cmp -s <(sed -n '/^| segments/,/^$/p' "$work/bench/results.md" | awk -F'|' 'NF > 4 {print $2 $3 $(NF-3) $(NF-2) $(NF-1)}') \
           <(sed -n '/^| segments/,/^$/p' "$work/again/results.md" | awk -F'|' 'NF > 4 {print $2 $3 $(NF-3) $(NF-2) $(NF-1)}'); then ok
 else bad "bench --from-csv lost the volumes' or the effects' tables: $(cat "$work/again.err")"; fi
@@ -193,9 +216,10 @@ if "GPU timer no" in caps:
     print("GPU timer: not available"); sys.exit(0)
 assert "GPU timer yes" in caps, caps
 assert "| technique | map | ms/frame moving | GPU ms moving | ms/frame still | GPU ms still | GPU ms per pass (moving) |" in md
-# The budget's rows are the wall times its controller saw (budget_bench.cpp): no GPU columns.
-assert all(r["gpu_ms_moving"] == "" for r in rows if r["section"] == "budget")
-for r in (r for r in rows if r["section"] != "budget"):
+# The budget's rows are the wall times its controller saw (budget_bench.cpp), the error target's
+# rungs short wall-time runs beside their predictions (error_bench.cpp): no GPU columns.
+assert all(r["gpu_ms_moving"] == "" for r in rows if r["section"] in ("budget", "max-error"))
+for r in (r for r in rows if r["section"] not in ("budget", "max-error")):
     assert float(r["gpu_ms_moving"]) >= 0.0 and float(r["gpu_ms_still"]) >= 0.0, r
     names = [p.split(": ")[0] for p in r["gpu_ms_per_pass"].split("; ")]
     assert all(names) and all(float(p.split(": ")[1]) >= 0.0 for p in r["gpu_ms_per_pass"].split("; ")), r

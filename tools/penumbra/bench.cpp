@@ -500,6 +500,7 @@ void run_sweep(Sweep& w) {
     effects_sweep(w, r, in);
     lights_sweep(w, r, in);
     budget_sweep(w, r, in);
+    error_sweep(w, r, in);
     w.load_after = load_average();
 }
 

@@ -105,12 +105,18 @@ struct Row {
     std::string gpu_passes;
     // The budget section's rows: the --budget-ms they ran under (0: a rung of its ladder, fixed).
     double budget_ms = 0.0;
+    // The error-target section's rows: the --max-error they chose for (0: a rung of the ladder),
+    // the model's prediction (%) and the frame's shadow-edge pixels it was made from.
+    double max_error = 0.0;
+    double predicted_pct = -1.0;
+    long edge_pixels = -1;
 };
 
 inline constexpr const char* kSilhouetteSection = "silhouette";
 inline constexpr const char* kEffectsSection = "effects";
 inline constexpr const char* kLightsSection = "lights";
 inline constexpr const char* kBudgetSection = "budget";
+inline constexpr const char* kErrorSection = "max-error";
 // The silhouette sweep's spheres: slices around, half as many stacks.
 inline constexpr int kSphereSegments[] = {8, 16, 32, 64, 128};
 
@@ -130,6 +136,7 @@ struct Sweep {
     std::string effects_frame;    // the scene frame they were measured on ("course@0.60")
     std::vector<Row> lights;      // forward against deferred (section kLightsSection)
     std::vector<Row> budget;      // --budget-ms (section kBudgetSection)
+    std::vector<Row> errors;      // --max-error (section kErrorSection)
     std::vector<std::string> notes;
     std::string command_line;
     std::string from_csv;  // rows read back from this file instead of measured
@@ -299,6 +306,18 @@ const Row* best_fixed(const Sweep& w, const Row& budget_row);
 const Row* best_of_sweep(const Sweep& w, const Row& budget_row);
 // results.md's table: each budget's choice beside best_fixed's. Empty without its rows.
 std::string budget_table(const Sweep& w);
+
+// ---- error_bench.cpp: --max-error ----------------------------------------------------------------
+
+// --max-error 0.2, 0.1, 0.05, 0.025 (quick: 0.1) on every scene frame: each rung of the ladder
+// with its predicted and measured error and its time (max_error 0), then the rung chosen for each
+// target, into w.errors.
+void error_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in);
+// The rung (max_error 0) of the row's scene with the least measured time among those whose
+// measured error keeps within the row's target; null when none does.
+const Row* cheapest_within(const Sweep& w, const Row& target_row);
+// results.md's tables: each target's choice beside cheapest_within's, and the model rung by rung.
+std::string error_table(const Sweep& w);
 
 // ---- soft_bench.cpp: penumbra bench --soft ------------------------------------------------------
 

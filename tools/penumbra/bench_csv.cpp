@@ -18,13 +18,14 @@ std::string to_csv(const Sweep& w) {
       << ",ms_moving,ms_still,ms_shadow_pass,ms_camera_pass,frames,redrawn_moving,redrawn_still,shadow_map_bytes,texel_use_pct,"
          "silhouette_edges,volume_triangles,fill_per_pixel,zpass_casters,zfail_casters,section,segments,"
          "effects,effect_error_pct,effect_false_shadow_pct,effect_false_lit_pct,effect_valid_pixels,not_modelled_pixels,"
-         "post,shading,lights,settings,gpu_ms_moving,gpu_ms_still,gpu_ms_per_pass,budget_ms\n";
+         "post,shading,lights,settings,gpu_ms_moving,gpu_ms_still,gpu_ms_per_pass,budget_ms,max_error_pct,predicted_pct,edge_pixels\n";
     std::vector<const Row*> rows;
     for (const Row& r : w.rows) rows.push_back(&r);
     for (const Row& r : w.silhouette) rows.push_back(&r);
     for (const Row& r : w.effects) rows.push_back(&r);
     for (const Row& r : w.lights) rows.push_back(&r);
     for (const Row& r : w.budget) rows.push_back(&r);
+    for (const Row& r : w.errors) rows.push_back(&r);
     for (const Row* rp : rows) {
         const Row& r = *rp;
         const bool vol = r.silhouette_edges >= 0;
@@ -48,7 +49,11 @@ std::string to_csv(const Sweep& w) {
         else o << ",,";
         o << "\"" << r.settings << "\"," << (r.gpu_moving >= 0.0 ? fixed(r.gpu_moving, 3) : "") << ","
           << (r.gpu_still >= 0.0 ? fixed(r.gpu_still, 3) : "") << ",\"" << r.gpu_passes << "\","
-          << (r.section == kBudgetSection ? fixed(r.budget_ms, 3) : "") << "\n";
+          << (r.section == kBudgetSection ? fixed(r.budget_ms, 3) : "") << ",";
+        if (r.section == kErrorSection)
+            o << fixed(r.max_error, 3) << "," << fixed(r.predicted_pct, 4) << "," << r.edge_pixels << "\n";
+        else
+            o << ",,\n";
     }
     return o.str();
 }
@@ -165,6 +170,14 @@ void read_csv(Sweep& w, const std::string& path) {
             r.section = kBudgetSection;
             r.budget_ms = num("budget_ms", 0.0);
             w.budget.push_back(r);
+            continue;
+        }
+        if (get("section") == kErrorSection) {
+            r.section = kErrorSection;
+            r.max_error = num("max_error_pct", 0.0);
+            r.predicted_pct = num("predicted_pct", -1.0);
+            r.edge_pixels = static_cast<long>(num("edge_pixels", -1.0));
+            w.errors.push_back(r);
             continue;
         }
         if (get("section") == kEffectsSection) {

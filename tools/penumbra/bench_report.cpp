@@ -428,6 +428,7 @@ std::string markdown(const Sweep& w, double elapsed, const std::vector<Key>& fro
     o << effects_table(w);
     o << lights_table(w);
     o << budget_table(w);
+    o << error_table(w);
     if (!w.notes.empty()) {
         o << "\n## Notes\n\n";
         for (const auto& n : w.notes) o << "- " << n << "\n";
