@@ -11,6 +11,7 @@
 # usage: cli_max_error.sh PENUMBRA WORKDIR
 set -uo pipefail
 penumbra=$1 work=$2
+data=$(cd "$(dirname "$0")/data" && pwd)
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 fail=0
 ok() { echo "ok $1"; }
@@ -25,6 +26,12 @@ grep -Eq '^max-error 100\.000 %: (depthtex|rgba) hard 128, predicted [0-9.]+ %: 
 grep -Eq '^max-error 0\.001 %: shadow volumes, predicted [0-9.]+ %: .*nothing is predicted within it, this is the most accurate$' tight.out &&
   ok "a target nothing meets: the most accurate" || bad "tight: $(cat tight.out)"
 [ "$(grep -c '^max-error: ' tight.err)" -eq 7 ] && ok "-v: every rung's prediction" || bad "tight -v: $(cat tight.err)"
+# An alpha-tested caster: shadow volumes would shadow its whole quad, so the ladder has none and
+# the most accurate is the largest map (the course above, the control, has them).
+"$penumbra" render --size 128x128 --scene "$data/alpha_cutouts.gltf" --max-error 0.001 > cut.out 2> cut.err ||
+  bad "cut: exit $?: $(cat cut.err)"
+grep -Eq '^max-error 0\.001 %: (depthtex|rgba) hard [0-9]+, .*this is the most accurate$' cut.out &&
+  ok "alpha-tested casters: no volumes rung" || bad "cut: $(cat cut.out)"
 # The control: without the option, no line.
 "$penumbra" render --size 64x64 > none.out 2>&1 && ! grep -q '^max-error' none.out && ok "no --max-error: no line" ||
   bad "none: $(cat none.out)"
