@@ -336,6 +336,10 @@ int main(int argc, char** argv) {
                 std::snprintf(figures, sizeof figures, " | budget: %s %s %d", shadow::to_string(b->settings().encoding).data(),
                               shadow::to_string(b->settings().filter).data(), b->settings().map_size);
                 title += figures;
+                if (app.budget_predicted_error() >= 0.0) {  // the model's, against the truth
+                    std::snprintf(figures, sizeof figures, ", predicted error %.3f %%", app.budget_predicted_error());
+                    title += figures;
+                }
             }
             if (const auto& area = app.area()) {  // Heckbert-Herf's progress (soft shadows)
                 std::snprintf(figures, sizeof figures, " | light samples %d of %d", area->done, area->total);
@@ -374,6 +378,9 @@ int main(int argc, char** argv) {
         if (args.verbose)
             for (const auto& line : b->log()) std::printf("budget: %s\n", line.c_str());
         std::printf("%s\n", b->why().c_str());
+        if (app.budget_predicted_error() >= 0.0)
+            std::printf("predicted error %.3f %% of the truth (the frame's shadow edges, plan/error_model.h)\n",
+                        app.budget_predicted_error());
     }
     if (args.print_title) std::printf("title: %s\n", title.c_str());
     if (args.verbose) std::printf("%s", app.last_plan().c_str());

@@ -202,7 +202,8 @@ const char* penumbra_state() {
     if (const render::BudgetController* b = a.budget())
         j += ",\"budget\":{\"mapSize\":" + std::to_string(b->settings().map_size) + ",\"encoding\":" +
              json_quote(std::string(shadow::to_string(b->settings().encoding))) + ",\"filter\":" +
-             json_quote(std::string(shadow::to_string(b->settings().filter))) + ",\"why\":" + json_quote(b->why()) + "}";
+             json_quote(std::string(shadow::to_string(b->settings().filter))) + ",\"why\":" + json_quote(b->why()) +
+             ",\"predictedErrorPct\":" + (a.budget_predicted_error() >= 0.0 ? json_number(a.budget_predicted_error()) : "null") + "}";
     else
         j += ",\"budget\":null";
     // Each pass's GPU time (EXT_disjoint_timer_query), median of the last frames the timer read

@@ -11,6 +11,7 @@
 #include "plan/json.h"
 #include "plan/options.h"
 #include "plan/techniques/technique.h"
+#include "render/frame_edges.h"
 #include "scene/eye.h"
 #include "scenes/portal_scene.h"
 #include "shadow/encoding.h"
@@ -141,6 +142,7 @@ void CourseApp::set_exercise(std::string_view name) {
     own_scene();
     apply_defaults();
     budget_.reset();  // another scene: its times start afresh
+    budget_error_rung_ = -1;
 }
 
 // ---- options --------------------------------------------------------------------------------
@@ -239,6 +241,7 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
             if (std::string why = render::budget_refusal(exercise_settings()); !why.empty()) return without_dashes(why);
         budget_ms_ = t.job.budget_ms;
         budget_.reset();  // made at the next frame, on this context
+        budget_error_rung_ = -1;
         return {};
     }
     if (name == "camera") {
@@ -331,6 +334,7 @@ void CourseApp::create_gl(const platform::Platform& context) {
 void CourseApp::drop_gl() {
     renderer_.reset();
     budget_.reset();  // the times measured on the old context say nothing about the next
+    budget_error_rung_ = -1;
 }
 
 const gl::Caps* CourseApp::caps() const { return renderer_ ? &renderer_->caps() : nullptr; }
@@ -484,9 +488,28 @@ void CourseApp::draw(int width, int height) {
     renderer_->read_window(0, 0, 1, 1);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     timing_.add(ms);
-    if (budget_) budget_->observe(ms);
+    if (budget_) {
+        budget_->observe(ms);
+        predict_budget_error(width, height);  // after the frame's time: it is not part of it
+    }
     // The GPU times that have arrived (a few frames old), without waiting.
     timing_.add_gpu(timer.take(false));
+}
+
+void CourseApp::predict_budget_error(int width, int height) {
+    if (budget_->rung() == budget_error_rung_ && ++budget_error_age_ < kErrorEvery) return;
+    budget_error_rung_ = budget_->rung();
+    budget_error_age_ = 0;
+    const render::Settings s = frame_settings();
+    budget_error_ = -1.0;
+    if (s.filter == shadow::Filter::PCSS) return;  // the model is a hard shadow's
+    // The window's frame is drawn; the same frame again offscreen, its shadow edges and the pixels
+    // the scene covers read back.
+    // Not GPU-timed: the per-pass times are the window's frames'.
+    renderer_->gpu_timer().enable(false);
+    const render::FrameEdges f = render::measure_frame_edges(*renderer_, scene(), s, s, render::offscreen(width, height));
+    renderer_->gpu_timer().enable(gpu_timing_);
+    budget_error_ = render::predicted_error_pct(f, budget_->map_size(budget_->rung()));
 }
 
 void CourseApp::set_gpu_timing(bool on) {

@@ -119,6 +119,12 @@ public:
     // frame on a context (its caps) and again after a context restore or another exercise. Null
     // while off, before that frame, or where the exercise's technique has no map.
     const render::BudgetController* budget() const { return budget_ ? &*budget_ : nullptr; }
+    // The error the model (plan/error_model.h) predicts against the hard truth for the budget's
+    // choice on these frames (%); < 0 while off, before it is measured, or where it cannot be
+    // predicted (a soft filter, no resolution match). Measured on a frame drawn offscreen beside
+    // the window's (render/frame_edges.h) when the choice changes and every kErrorEvery frames.
+    double budget_predicted_error() const { return budget_ ? budget_error_ : -1.0; }
+    static constexpr int kErrorEvery = 120;
     // GPU time per pass (gl/timer.h, where the context has EXT_disjoint_timer_query): off until
     // switched on; on, each frame's plans are timed as one frame (a second plan's passes named
     // "texture: camera", "map view: light-depth view"), read back without waiting a few frames later, and
@@ -238,6 +244,10 @@ private:
     std::string snippets_;
     double budget_ms_ = 0.0;
     std::optional<render::BudgetController> budget_;
+    double budget_error_ = -1.0;  // budget_predicted_error()
+    int budget_error_rung_ = -1;  // the rung it was measured for
+    long budget_error_age_ = 0;   // frames since
+    void predict_budget_error(int width, int height);
 };
 
 }  // namespace penumbra::examples

@@ -365,9 +365,12 @@
     // What the frame had to change for this canvas (W09P2b: a copy no larger than the canvas).
     if (frameNoteEl.textContent !== s.frameNote) frameNoteEl.textContent = s.frameNote;
     frameNoteEl.hidden = !s.frameNote;
-    // budget-ms: the settings chosen, their time and the next map's.
+    // budget-ms: the settings chosen, their time and the next map's, and the error the model
+    // predicts for them against the truth (once it has measured the frame's shadow edges).
     budgetRow.hidden = !s.budget;
-    const budget = s.budget ? s.budget.why : '–';
+    const predicted = s.budget && s.budget.predictedErrorPct !== null
+      ? '; predicted error ' + s.budget.predictedErrorPct.toFixed(3) + ' % of the truth' : '';
+    const budget = s.budget ? s.budget.why + predicted : '–';
     if (budgetEl.textContent !== budget) budgetEl.textContent = budget;
     if (samplesRow) {
       samplesRow.hidden = !s.area;

@@ -1,7 +1,8 @@
 // web.budget, on W09P2c: the "faster / more accurate" select (budget-ms). Off, the page draws with
 // its own settings and hides the budget's readout; on, the readout says what the controller chose,
 // the URL keeps the budget, and the extremes hold whatever SwiftShader's speed: a second a frame
-// climbs to the largest map, a microsecond stays at the smallest and says it is over. A value the
+// climbs to the largest map, a microsecond stays at the smallest and says it is over; the readout
+// gives the model's predicted error, more for the smallest map than the largest. A value the
 // select does not list (from the URL or the module) is taken as it is. Never a timing check.
 import { runTest, openPage, waitFrames, check } from './harness.mjs';
 
@@ -47,11 +48,22 @@ await runTest('web.budget', async ({ server, browser }) => {
   const largest = Math.min(4096, (await state(page)).maxMapSize);
   const wide = await waitBudget(page, (b) => b.mapSize === largest && b.why.includes('the largest map'), 160);
   check(wide && wide.mapSize === largest && wide.why.includes('the largest map'), `a second a frame: ${JSON.stringify(wide)}`);
+  // The model's predicted error for the choice, once measured on the frame's shadow edges.
+  const predicted = await waitBudget(page, (b) => b.predictedErrorPct !== null && b.mapSize === largest, 40);
+  check(predicted && predicted.predictedErrorPct > 0 && predicted.predictedErrorPct < 100,
+        `a predicted error at the largest map: ${JSON.stringify(predicted)}`);
+  await page.waitForFunction(() => / predicted error [0-9.]+ % of the truth$/.test(document.getElementById('budget').textContent),
+    null, { timeout: 10000 }).catch(() => {});
+  check(/; predicted error [0-9.]+ % of the truth$/.test((await readout(page)).text), `the readout: ${(await readout(page)).text}`);
   // A microsecond: nothing fits; the smallest map, said to be over.
   await page.evaluate(() => window.penumbra.setOption('budget-ms', '0.001'));
   const tight = await waitBudget(page, (b) => b.mapSize === 128 && b.why.includes('over the budget'), 80);
   check(tight && tight.mapSize === 128 && /over the budget at the smallest map$/.test(tight.why),
         `a microsecond: ${JSON.stringify(tight)}`);
+  // Coarser texels, more error predicted: the smallest map's prediction is over the largest's.
+  const coarse = await waitBudget(page, (b) => b.predictedErrorPct !== null && b.mapSize === 128, 40);
+  check(coarse && predicted && coarse.predictedErrorPct > predicted.predictedErrorPct,
+        `map 128 predicted ${coarse && coarse.predictedErrorPct} %, the largest ${predicted && predicted.predictedErrorPct} %`);
 
   // Off again: the page's own settings, the readout hidden.
   await page.selectOption('#budget-ms', '0');

@@ -2,13 +2,12 @@
 #include "max_error.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 
 #include "budget_frames.h"
 #include "plan/budget.h"
 #include "plan/error_model.h"
-#include "plan/techniques/reports.h"
+#include "render/frame_edges.h"
 #include "plan/techniques/technique.h"
 
 namespace penumbra::tools {
@@ -44,52 +43,27 @@ std::optional<ErrorChoice> choose_for_error(double max_pct, const render::Settin
     const render::BudgetController ladder = budget_for(1.0, s, r, scene, in);
     const bool depth_texture = r.caps().depth_texture;
 
-    // The resolution match of this frame: what two texels a pixel want over the receivers in view.
-    render::Settings matched = s;
-    matched.encoding = depth_texture ? shadow::Encoding::DepthTex : shadow::Encoding::RGBA;
-    matched.filter = shadow::Filter::Hard;
-    matched.map_size = render::Settings::kAutoMapSize;
-    const render::FramePlan plan = r.plan(scene, matched, in);
-    const render::MapSizeReport* m = plan.find<render::MapSizeReport>();
-    if (!m) {
+    // The frame's shadow edges from its most accurate rung (the top: volumes or the largest map),
+    // the pixels it covers and its match from the cheapest.
+    const render::Settings cheapest = ladder.at_rung(0, s);
+    const render::FrameEdges f =
+        render::measure_frame_edges(r, scene, ladder.at_rung(ladder.rungs() - 1, s), cheapest, in);
+    if (f.wanted < 0) {
         refusal = "--max-error: this frame's plan does not match its map to the screen (cascades, Gooch's texture and "
                   "W09P2b keep their size), so its error cannot be predicted (try --cascades 0)";
         return std::nullopt;
     }
-
     ErrorChoice c;
-    c.wanted = m->wanted;
-    // The pixels the scene covers (an error is a share of them): those not of the background's
-    // colour in the cheapest rung's frame, each channel within one step (GL's conversion of the
-    // clear colour to 8 bits may round either way).
-    {
-        render::Settings first = ladder.at_rung(0, s);
-        first.aov = render::Aov::Color;
-        r.render(scene, first, in);
-        const std::vector<std::uint8_t> rgba = r.read_image();
-        const auto near = [](std::uint8_t v, float f) { return std::abs(static_cast<float>(v) - f * 255.0f) <= 1.5f; };
-        for (size_t i = 0; i + 3 < rgba.size(); i += 4)
-            if (!(near(rgba[i], render::kBackground.r) && near(rgba[i + 1], render::kBackground.g) &&
-                  near(rgba[i + 2], render::kBackground.b)))
-                ++c.pixels;
-    }
-    // The frame's shadow edges, from its most accurate rung (the top: volumes or the largest map).
-    {
-        render::Settings top = ladder.at_rung(ladder.rungs() - 1, s);
-        top.aov = render::Aov::Visibility;
-        r.render(scene, top, in);
-        const std::vector<std::uint8_t> rgba = r.read_image();
-        std::vector<std::uint8_t> red(rgba.size() / 4);
-        for (size_t i = 0; i < red.size(); ++i) red[i] = rgba[4 * i];
-        c.edges = render::shadow_edge_pixels(red, in.output.width, in.output.height);
-    }
+    c.wanted = f.wanted;
+    c.pixels = f.covered;
+    c.edges = f.edges;
     for (int k = 0; k < ladder.rungs(); ++k) {
         ErrorRung g;
         g.settings = ladder.at_rung(k, s);
         g.map = ladder.map_size(k);
         g.cost = render::BudgetController::model_cost(g.map, depth_texture);
         g.texel_pixels = render::pixels_per_texel(c.wanted, g.map);
-        g.predicted_pct = render::predicted_error_pct(c.edges, c.pixels, g.texel_pixels);
+        g.predicted_pct = render::predicted_error_pct(f, g.map);
         c.rungs.push_back(g);
     }
     std::stable_sort(c.rungs.begin(), c.rungs.end(), [](const ErrorRung& a, const ErrorRung& b) { return a.cost < b.cost; });
