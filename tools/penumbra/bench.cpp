@@ -413,12 +413,14 @@ void run_sweep(Sweep& w) {
             s.aov = render::Aov::Visibility;
             const render::FramePlan& plan = r.render(still, s, in);
             const render::PlannedResource* map = plan.resource("shadow-map");
+            // The map's side as drawn: a cube's face (its atlas is 3 faces wide), else the map's.
+            const int drawn = !map ? 0 : render::cube_of(plan) ? render::cube_of(plan)->tile : map->desc.width;
             if (render::technique_module(s.technique).depth_map() && map && s.map_size == render::Settings::kAutoMapSize) {
-                row.map = render::cube_of(plan) ? render::cube_of(plan)->tile : map->desc.width;
-            } else if (render::technique_module(s.technique).depth_map() && map && map->desc.width != s.map_size) {
-                row.map = map->desc.width;
+                row.map = drawn;
+            } else if (render::technique_module(s.technique).depth_map() && map && drawn != s.map_size) {
+                row.map = drawn;
                 w.notes.push_back(spec.label + ": " + row.technique + " map " + std::to_string(s.map_size) + " clamped to " +
-                                  std::to_string(map->desc.width));
+                                  std::to_string(drawn));
             }
             const auto vis = red_channel(r.read_image());
             row.score = measure::score(vis, truth.lit, valid, o.soft_samples > 0 ? &truth.soft : nullptr);
