@@ -224,10 +224,7 @@ void silhouette_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& 
         c.turning = c.still;
         c.centre = scene::scene_bounds(c.still).center();
         r.load(c.still);
-        measure::TruthOptions to;
-        to.width = w.width;
-        to.height = w.height;
-        to.view_proj = renderer_view_proj(c.still, w.width, w.height);
+        measure::TruthOptions to = frame_truth_options(c.still, w.width, w.height);
         to.soft_samples = 0;  // the hard truth: the error column
         const measure::TruthImage truth = measure::RayTracer(c.still).render(to);
         const auto valid = truth.valid_mask();
@@ -377,10 +374,7 @@ void run_sweep(Sweep& w) {
 
         // The truth for this frame, once for every technique.
         const auto tt = Clock::now();
-        measure::TruthOptions to;
-        to.width = w.width;
-        to.height = w.height;
-        to.view_proj = renderer_view_proj(still, w.width, w.height);
+        measure::TruthOptions to = frame_truth_options(still, w.width, w.height);
         to.soft_samples = o.soft_samples;
         to.light_radius = default_light_radius(still);
         const measure::TruthImage truth = measure::RayTracer(still).render(to);

@@ -365,6 +365,15 @@ float default_light_radius(const scene::Scene& s);
 
 // The camera matrix the renderer uses for this scene at this size: ask it (one frame, no shadows).
 glm::mat4 renderer_view_proj(const scene::Scene& s, int width, int height);
+// The truth's options for the frame the renderer draws of `s` at width x height (the hard truth:
+// no area-light samples until the caller asks for them).
+inline measure::TruthOptions frame_truth_options(const scene::Scene& s, int width, int height) {
+    measure::TruthOptions to;
+    to.width = width;
+    to.height = height;
+    to.view_proj = renderer_view_proj(s, width, height);
+    return to;
+}
 
 void write_or_throw(const std::string& path, const measure::Pixels& px);
 // Writes `text` whole through a temporary file, or throws CommandError, exit status 2 (write_output).

@@ -118,10 +118,7 @@ void effects_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in)
     }
 
     // One truth per (mirror, portal) pair; hard (the error columns).
-    measure::TruthOptions to;
-    to.width = w.width;
-    to.height = w.height;
-    to.view_proj = renderer_view_proj(still, w.width, w.height);
+    const measure::TruthOptions to = frame_truth_options(still, w.width, w.height);
     std::map<std::pair<bool, bool>, measure::EffectTruth> truths;
     const fs::path images = fs::path(o.out_dir) / "images";
     const auto truth_of = [&](bool mirror, bool portal) -> const measure::EffectTruth& {

@@ -56,10 +56,7 @@ void error_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) {
             w.notes.push_back(spec.label + ": --max-error skipped: " + refusal);
             continue;
         }
-        measure::TruthOptions to;
-        to.width = w.width;
-        to.height = w.height;
-        to.view_proj = renderer_view_proj(still, w.width, w.height);
+        const measure::TruthOptions to = frame_truth_options(still, w.width, w.height);
         const measure::TruthImage truth = measure::RayTracer(still).render(to);
         const auto valid = truth.valid_mask();
         const auto moving_at = [&](int i) -> const scene::Scene& {

@@ -47,10 +47,7 @@ void lights_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) 
     scene::SceneSource src = open_scene(spec->name, scene::Eye::Scene, o.allow_outside);
     const scene::Scene still = src.at(spec->time);
     r.load(still);
-    measure::TruthOptions to;
-    to.width = w.width;
-    to.height = w.height;
-    to.view_proj = renderer_view_proj(still, w.width, w.height);
+    const measure::TruthOptions to = frame_truth_options(still, w.width, w.height);
     const measure::EffectTruth truth = measure::trace_effects(still, false, false, to);
     const auto valid = truth.image.valid_mask();
 

@@ -250,10 +250,7 @@ void run_soft(SoftRun& w) {
         const bool convergence = static_cast<size_t>(&spec - w.scenes.data()) == convergence_scene;
         for (double fraction : w.fractions) {
             const double radius = radius_for(still, fraction);
-            measure::TruthOptions to;
-            to.width = w.width;
-            to.height = w.height;
-            to.view_proj = renderer_view_proj(still, w.width, w.height);
+            measure::TruthOptions to = frame_truth_options(still, w.width, w.height);
             to.soft_samples = w.truth_samples;
             to.light_radius = static_cast<float>(radius);
             const auto tt = Clock::now();
