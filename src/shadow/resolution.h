@@ -12,6 +12,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/scene.h"
+
 namespace penumbra::shadow {
 
 // The pixels of a width x height image covered by the convex hull of `points` projected through
@@ -26,6 +28,40 @@ float screen_pixels(const std::vector<glm::vec3>& points, const glm::mat4& camer
 // bench_medium 0.175 % against 0.099 %, the course 0.041 % against 0.025 %.
 inline constexpr float kTexelsPerPixel = 2.0f;
 
+// Where the density varies across a map (a wide perspective window, a receiver met at a grazing
+// angle) the average under-samples its densest part. So the window is also cut into kDenseTiles x
+// kDenseTiles tiles, each matched alone (the receivers in view inside it: their pixels, and the
+// share of the whole map they cover), and the size must also give kDenseTexelsPerPixel texels a
+// pixel over kDenseShare of the receivers' pixels (counted per tile). The share lets a sliver seen
+// at a grazing angle over a few pixels go under-sampled rather than double the map. One texel a
+// pixel there keeps the average's choice where the density is even (the course and the bench
+// scenes: the densest tiles want 1.4-2.0x the average's texels a pixel) and doubles the faces of
+// tests/data/wide_cone.gltf, whose +x face wants 3.6x (512x512, llvmpipe: 0.276 % of error with
+// faces of 512, 0.057 % with 1024).
+inline constexpr int kDenseTiles = 8;
+inline constexpr float kDenseTexelsPerPixel = 1.0f;
+inline constexpr double kDenseShare = 0.9;
+// That size before rounding (0: no receiver in view) for the receivers' boxes seen by a camera of
+// `camera_view_proj` and a width x height image, in the window of `map_view_proj`. Each receiver
+// is clipped against the tiles its part in view spans, so the cost is the window's clip's times a
+// small factor: O(n).
+double dense_wanted(const scene::Light& light, const std::vector<scene::Bounds>& receivers, const glm::mat4& camera_view_proj,
+                    int width, int height, const glm::mat4& map_view_proj);
+
+// An image under 512 x 512 pixels is matched as if it were that large (its width and height
+// scaled alike). At a fixed number of texels a pixel the error, as a share of the image's pixels,
+// grows as the image shrinks: a shadow's edge spans fewer pixels, but of fewer in all (256x256,
+// llvmpipe: maps of 512 were 0.172 % wrong on bench_medium and 0.455 % on wide_cone.gltf, maps of
+// 1024 0.076 % and 0.108 %; at 512x512 the same 1024 maps are 0.099 % and 0.057 %).
+inline constexpr double kMatchedSide = 512.0;
+// The width and height an image of width x height is matched as: itself, or scaled up to
+// kMatchedSide pixels a side on average (sqrt(width x height)).
+struct MatchedImage {
+    int width = 0, height = 0;
+    bool scaled = false;
+};
+MatchedImage matched_image(int width, int height);
+
 struct MatchedSize {
     int size = 0;          // texels a side: a power of two in [smallest, largest]
     int wanted = 0;        // kTexelsPerPixel * sqrt(pixels / use) before rounding and the bounds (0: nothing in view)
@@ -35,6 +71,8 @@ struct MatchedSize {
 // One map (or each of `maps` equal tiles: a cube's drawn faces) serving `pixels` of the image at
 // texel use `use` (0..1; for tiles, their summed uses), `largest` texels a side at most (the
 // context's and the memory cap's bound), `smallest` at least.
-MatchedSize matched_map_size(float pixels, float use, int maps, int smallest, int largest);
+// `dense`: dense_wanted's size, when more than the average's it is the one wanted.
+MatchedSize matched_map_size(float pixels, float use, int maps, int smallest, int largest, double dense = 0.0,
+                             bool scaled = false);
 
 }  // namespace penumbra::shadow

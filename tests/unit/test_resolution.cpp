@@ -56,6 +56,55 @@ TEST(Resolution, TwoTexelsAPixelRoundedUpToAPowerOfTwoWithinTheBounds) {
     EXPECT_EQ(shadow::matched_map_size(512.0f * 512.0f, 6.0f * 0.25f, 6, 128, 1024).size, 1024);
 }
 
+// A ground square [-1, 1]^2 (y up) and a map straight above it (orthographic, so a texel covers
+// the same ground everywhere).
+const scene::Bounds kGround = scene::Bounds::around({-1.0f, -0.01f, -1.0f}, {1.0f, 0.0f, 1.0f});
+const glm::mat4 kMapAbove = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, 0.1f, 10.0f) *
+                            glm::lookAt(glm::vec3(0.0f, 5.0f, 0.0f), glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f));
+
+TEST(Resolution, TheDensestTilesAskForMoreWhereTheCameraSeesTheGroundUnevenly) {
+    scene::Light sun;
+    sun.type = scene::LightType::Directional;
+    sun.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    const std::vector<scene::Bounds> ground = {kGround};
+    const auto average = [&](const glm::mat4& camera) {
+        const std::vector<glm::vec3> corners = {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}};
+        return shadow::matched_map_size(shadow::screen_pixels(corners, camera, 512, 512), shadow::hull_share(kMapAbove, corners),
+                                        1, 128, 8192)
+            .wanted;
+    };
+    // A camera that sees the ground as the map does: the density is even, so every tile wants
+    // what the average wants at one texel a pixel instead of two.
+    const glm::mat4 same = kMapAbove;
+    const double even = shadow::dense_wanted(sun, ground, same, 512, 512, kMapAbove);
+    EXPECT_NEAR(even, 512.0, 8.0);
+    EXPECT_NEAR(average(same), 1024, 16);
+    // A camera low over the ground, looking along it: the near tiles fill most of the image, the
+    // far ones a sliver. The densest 90 % of the pixels want more texels than the average's half.
+    const glm::mat4 low = glm::perspective(glm::radians(60.0f), 1.0f, 0.05f, 20.0f) *
+                          glm::lookAt(glm::vec3(0.0f, 0.4f, 1.6f), glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    const double uneven = shadow::dense_wanted(sun, ground, low, 512, 512, kMapAbove);
+    EXPECT_GT(uneven, 0.75 * average(low)) << "average " << average(low);
+    // Nothing in view: nothing wanted.
+    const glm::mat4 away = glm::perspective(glm::radians(60.0f), 1.0f, 0.05f, 20.0f) *
+                           glm::lookAt(glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f, 5.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f));
+    EXPECT_EQ(shadow::dense_wanted(sun, ground, away, 512, 512, kMapAbove), 0.0);
+}
+
+TEST(Resolution, AnImageUnder512ASideIsMatchedAsIfThatLarge) {
+    shadow::MatchedImage m = shadow::matched_image(256, 256);
+    EXPECT_EQ(m.width, 512);
+    EXPECT_EQ(m.height, 512);
+    EXPECT_TRUE(m.scaled);
+    m = shadow::matched_image(480, 320);  // sqrt(480 x 320) = 392: both sides x 1.306
+    EXPECT_EQ(m.width, 627);
+    EXPECT_EQ(m.height, 418);
+    m = shadow::matched_image(1920, 1080);
+    EXPECT_EQ(m.width, 1920);
+    EXPECT_FALSE(m.scaled);
+    EXPECT_FALSE(shadow::matched_image(512, 512).scaled);
+}
+
 render::FramePlan course_plan(int width, int height, const char* map_size, const render::FramePlan* previous = nullptr) {
     static const scene::Scene s = [] {
         scene::CourseScene course = scene::make_course_scene(4, false);
@@ -73,8 +122,12 @@ int map_width(const render::FramePlan& p) {
 }
 
 TEST(ResolutionPlan, AutoFollowsTheImagesSizeAndAFixedSizeDoesNot) {
-    const render::FramePlan small = course_plan(256, 256, "auto"), large = course_plan(1024, 1024, "auto");
-    EXPECT_EQ(map_width(large), 4 * map_width(small)) << "four times the image's side: four times the map's";
+    const render::FramePlan small = course_plan(512, 512, "auto"), large = course_plan(1024, 1024, "auto");
+    EXPECT_EQ(map_width(large), 2 * map_width(small)) << "twice the image's side: twice the map's";
+    // An image under 512 a side is matched as 512 a side.
+    const render::FramePlan tiny = course_plan(128, 128, "auto");
+    EXPECT_EQ(map_width(tiny), map_width(small));
+    EXPECT_NE(tiny.find<render::MapSizeReport>()->why.find("the image counted as 512 pixels a side"), std::string::npos);
     ASSERT_NE(small.find<render::MapSizeReport>(), nullptr);
     EXPECT_EQ(small.find<render::MapSizeReport>()->size, map_width(small));
     EXPECT_NE(small.find<render::MapSizeReport>()->why.find("texels a pixel"), std::string::npos);
@@ -94,10 +147,28 @@ TEST(ResolutionPlan, ACubesFacesAreMatchedToo) {
     const render::FramePlan large = render::plan(r.scene, settings, caps, render::offscreen(1024, 1024));
     ASSERT_NE(render::cube_of(small), nullptr);
     ASSERT_NE(render::cube_of(large), nullptr);
-    EXPECT_LT(render::cube_of(small)->tile, render::cube_of(large)->tile);
     EXPECT_EQ(render::cube_of(small)->tile, small.find<render::MapSizeReport>()->size);
     // Within 64 MiB for the atlas of six faces: at most 1024 each.
     EXPECT_LE(render::cube_of(large)->tile, 1024);
+    EXPECT_GE(large.find<render::MapSizeReport>()->wanted, 1024);
+}
+
+TEST(ResolutionPlan, AFaceSeeingTheGroundAtAGrazingAngleIsMatchedWhereItIsDensest) {
+    // wide_cone.gltf's +x face sees the long ground at a grazing angle over a quarter of its map:
+    // two texels a pixel on average want 482 there (a face of 512, 0.276 % of error against the
+    // truth at 512x512); one a pixel over the densest tiles holding 90 % of its pixels want 869,
+    // so 1024 (0.057 %).
+    const scene::LoadResult r = scene::load_gltf(test::test_data_dir() + "/wide_cone.gltf");
+    ASSERT_TRUE(r.ok) << r.error;
+    render::Settings settings;
+    ASSERT_EQ(render::parse_option(settings, "map-size", "auto"), "");
+    const render::FramePlan p = render::plan(r.scene, settings, penumbra::testing::full_caps(), render::offscreen(512, 512));
+    ASSERT_NE(render::cube_of(p), nullptr);
+    EXPECT_EQ(render::cube_of(p)->tile, 1024);
+    const render::MapSizeReport* m = p.find<render::MapSizeReport>();
+    ASSERT_NE(m, nullptr);
+    EXPECT_GT(m->wanted, 512) << m->why;
+    EXPECT_NE(m->why.find("over 90% of them"), std::string::npos) << m->why;
 }
 
 }  // namespace

@@ -29,17 +29,28 @@ int auto_largest(const PlanContext& c, int tiles) {
     return largest;
 }
 
+// Heckbert-Herf draws one map per light sample into the same resource, which takes the size it
+// was first declared with: a later sample matched to another size would draw part of the target
+// and read it at the wrong texel scale. So the frame's first match holds for its later maps.
+const MapSizeReport* matched_before(const PlanContext& c) { return c.plan.find<MapSizeReport>(); }
+
 }  // namespace
 
-int auto_map_size(PlanContext& c, const std::vector<glm::vec3>& visible, const shadow::LightFrustum& f) {
-    const float pixels = shadow::screen_pixels(visible, c.plan.camera.view_proj, c.camera_target.width, c.camera_target.height);
-    const shadow::MatchedSize m =
-        shadow::matched_map_size(pixels, shadow::texel_use(f, visible), 1, kAutoSmallest, auto_largest(c, 1));
+int auto_map_size(PlanContext& c, const ShadowBounds& b, const std::vector<glm::vec3>& visible, const shadow::LightFrustum& f) {
+    if (const MapSizeReport* before = matched_before(c)) return before->size;
+    const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
+    const float pixels = shadow::screen_pixels(visible, c.plan.camera.view_proj, image.width, image.height);
+    const double dense =
+        shadow::dense_wanted(c.light, b.receivers, c.plan.camera.view_proj, image.width, image.height, f.view_proj());
+    const shadow::MatchedSize m = shadow::matched_map_size(pixels, shadow::texel_use(f, visible), 1, kAutoSmallest,
+                                                           auto_largest(c, 1), dense, image.scaled);
     c.plan.put(MapSizeReport{m.size, m.wanted, m.why});
     return m.size;
 }
 
 int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& fit) {
+    if (const MapSizeReport* before = matched_before(c)) return before->size;
+    const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
     shadow::MatchedSize best;
     int face_index = -1;
     std::vector<char> whole;
@@ -51,10 +62,12 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& 
         for (std::vector<glm::vec3>& part : shadow::visible_points_each(c.light, b.receivers, c.plan.camera.view_proj, whole,
                                                                         {planes.begin(), planes.end()}))
             served.insert(served.end(), part.begin(), part.end());
-        const float pixels =
-            shadow::screen_pixels(served, c.plan.camera.view_proj, c.camera_target.width, c.camera_target.height);
-        const shadow::MatchedSize m = shadow::matched_map_size(pixels, shadow::texel_use(face.frustum, served), 1,
-                                                               kAutoSmallest, auto_largest(c, shadow::kCubeFaces));
+        const float pixels = shadow::screen_pixels(served, c.plan.camera.view_proj, image.width, image.height);
+        const double dense = shadow::dense_wanted(c.light, b.receivers, c.plan.camera.view_proj, image.width, image.height,
+                                                  face.frustum.view_proj());
+        const shadow::MatchedSize m =
+            shadow::matched_map_size(pixels, shadow::texel_use(face.frustum, served), 1, kAutoSmallest,
+                                     auto_largest(c, shadow::kCubeFaces), dense, image.scaled);
         if (face_index < 0 || m.wanted > best.wanted) best = m, face_index = i;
     }
     best.why += std::string(" (face ") + shadow::cube_face_name(face_index) + ", the most of the " +
