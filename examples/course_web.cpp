@@ -190,7 +190,8 @@ const char* penumbra_state() {
     j += ",\"sheetBias\":" + json_number(static_cast<double>(a.sheet_bias()));
     // bias=auto's constant part for the chosen encoding and precision (the page's bias control says it).
     j += ",\"autoBias\":" + json_number(static_cast<double>(shadow::auto_bias_constant(s.encoding, s.precision)));
-    j += ",\"mapSize\":" + std::to_string(s.map_size);
+    // A number where the size is fixed, "auto" where the plan matches it to the screen.
+    j += ",\"mapSize\":" + (s.map_size == render::Settings::kAutoMapSize ? std::string("\"auto\"") : std::to_string(s.map_size));
     // Heckbert-Herf's light samples in the last frame: how many are in the average, of how many.
     if (const auto& area = a.area())
         j += ",\"area\":{\"done\":" + std::to_string(area->done) + ",\"total\":" + std::to_string(area->total) +

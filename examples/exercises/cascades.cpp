@@ -34,7 +34,8 @@ Exercise cascades() {
           {"map-size", "Cascades", K::Select, {"512", "1024", "2048"}, "Map size", "each cascade's"},
           {"aov", "View", K::Select, {"cascades", "color", "visibility"}, {},
            "cascades: red, green, blue, yellow from near to far"}},
-         {{"cascades", "4"}, {"aov", "cascades"}}};
+         // Each cascade's map keeps a fixed size (auto matches one map or a cube's faces, not cascades).
+         {{"cascades", "4"}, {"map-size", "1024"}, {"aov", "cascades"}}};
     x.make_scene = scene::make_terrain_km_scene;
     x.fly_bounds = terrain_fly_bounds;
     // Letters whose options it does not use.

@@ -93,7 +93,8 @@ Exercise w09p2b() {
          "blocky.",
          {light, jump, {"fbo-view", "Off-screen buffer", K::Select},
           {"rtt", "Off-screen buffer", K::Radio, {}, {}, "a copy is no larger than the window"},
-          {"map-size", "Off-screen buffer", K::Select, {"256", "512", "1024", "2048"}, "Texture size"}}};
+          {"map-size", "Off-screen buffer", K::Select, {"256", "512", "1024", "2048"}, "Texture size"}},
+         {{"map-size", "1024"}}};  // the buffer's size: nothing here to match to the screen
     x.frame = {{"technique", "none"}};
     x.extend_course = extend_course;
     x.draw = draw;

@@ -79,9 +79,9 @@ std::vector<Option<Options>> make_table() {
         [](const Options& o) { return std::string(shadow::to_string(o.settings.pcf_kernel)); });
 
     OptionInfo map_size = make_option_info("map-size", P::Technique, T::Integer,
-                                           "shadow map width = height in texels; auto = matched to the screen: about one "
-                                           "texel a pixel over the receivers in view, a power of two (one map, a cube's "
-                                           "faces; cascades keep 1024)",
+                                           "shadow map width = height in texels; auto = matched to the screen: two texels "
+                                           "a pixel on average over the receivers in view, one over 90% of them, a power "
+                                           "of two (one map, a cube's faces; cascades keep 1024)",
                                            "Shadow map size", {{"auto", "auto: matched to the screen"}});
     map_size.min = 1;
     map_size.max = kMaxMapSize;
