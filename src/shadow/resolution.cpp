@@ -24,19 +24,60 @@ glm::mat4 tile_view_proj(const glm::mat4& vp, float x0, float x1, float y0, floa
     return s * vp;
 }
 
+// The share of clip space's square [-1, 1]^2 covered by the convex hull of `points` through `vp`
+// (points at or behind its eye plane left out, the rest held to the square: a part is clipped to
+// the window already, so only rounding lies outside). Monotone chain over `scratch`, so the many
+// small parts of a large scene cost no allocation each.
+double part_share(const glm::mat4& vp, const std::vector<glm::vec3>& points, std::vector<glm::vec2>& scratch) {
+    scratch.clear();
+    for (const glm::vec3& p : points) {
+        const glm::vec4 c = vp * glm::vec4(p, 1.0f);
+        if (!(c.w > 0.0f)) continue;
+        const glm::vec2 q = glm::vec2(c) / c.w;
+        if (std::isfinite(q.x) && std::isfinite(q.y)) scratch.push_back(glm::clamp(q, glm::vec2(-1.0f), glm::vec2(1.0f)));
+    }
+    if (scratch.size() < 3) return 0.0;
+    std::sort(scratch.begin(), scratch.end(), [](const glm::vec2& a, const glm::vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    const auto cross = [](const glm::vec2& o, const glm::vec2& a, const glm::vec2& b) {
+        return static_cast<double>(a.x - o.x) * (b.y - o.y) - static_cast<double>(a.y - o.y) * (b.x - o.x);
+    };
+    // Lower then upper chain into the back of `scratch`, past the sorted points.
+    const size_t n = scratch.size();
+    scratch.resize(3 * n);
+    size_t k = n;
+    for (size_t i = 0; i < n; ++i) {
+        while (k >= n + 2 && cross(scratch[k - 2], scratch[k - 1], scratch[i]) <= 0.0) --k;
+        scratch[k++] = scratch[i];
+    }
+    for (size_t i = n - 1, lower = k + 1; i-- > 0;) {
+        while (k >= lower && cross(scratch[k - 2], scratch[k - 1], scratch[i]) <= 0.0) --k;
+        scratch[k++] = scratch[i];
+    }
+    double twice = 0.0;
+    for (size_t i = n; i + 1 < k; ++i)
+        twice += static_cast<double>(scratch[i].x) * scratch[i + 1].y - static_cast<double>(scratch[i + 1].x) * scratch[i].y;
+    return std::min(std::fabs(twice) / 8.0, 1.0);
+}
+
 }  // namespace
 
-double dense_wanted(const scene::Light& light, const std::vector<scene::Bounds>& receivers, const glm::mat4& camera_view_proj,
-                    int width, int height, const glm::mat4& map_view_proj) {
+Demand receiver_demand(const scene::Light& light, const std::vector<scene::Bounds>& receivers, const glm::mat4& camera_view_proj,
+                       int width, int height, const glm::mat4& map_view_proj) {
     const std::array<HalfSpace, 6> window = clip_volume_half_spaces(map_view_proj);
     std::vector<char> whole;
     const std::vector<std::vector<glm::vec3>> seen =
         visible_points_each(light, receivers, camera_view_proj, whole, {window.begin(), window.end()});
-    // Each receiver in the tiles its part in view spans (the bounding rectangle of its points in
-    // the map): most span one to four, so the tiles clip about as much as the window did.
     constexpr int n = kDenseTiles;
-    std::vector<std::vector<scene::Bounds>> in_tile(static_cast<size_t>(n * n));
+    struct Tile {
+        double pixels = 0.0, share = 0.0;
+        std::vector<scene::Bounds> across;  // receivers whose part spans this tile and others
+    };
+    std::vector<Tile> tiles(static_cast<size_t>(n * n));
+    const double image = static_cast<double>(width) * static_cast<double>(height);
+    std::vector<glm::vec2> scratch;
+    const auto tile_of = [](float v) { return std::clamp(static_cast<int>((v + 1.0f) * 0.5f * static_cast<float>(n)), 0, n - 1); };
     for (size_t k = 0; k < seen.size(); ++k) {
+        if (seen[k].empty()) continue;
         glm::vec2 lo(1.0f), hi(-1.0f);
         for (const glm::vec3& p : seen[k]) {
             const glm::vec4 c = map_view_proj * glm::vec4(p, 1.0f);
@@ -47,41 +88,49 @@ double dense_wanted(const scene::Light& light, const std::vector<scene::Bounds>&
             hi = glm::max(hi, q);
         }
         if (lo.x > hi.x || lo.y > hi.y) continue;
-        const auto tile = [](float v) { return std::clamp(static_cast<int>((v + 1.0f) * 0.5f * static_cast<float>(n)), 0, n - 1); };
-        for (int ty = tile(lo.y); ty <= tile(hi.y); ++ty)
-            for (int tx = tile(lo.x); tx <= tile(hi.x); ++tx) in_tile[static_cast<size_t>(ty * n + tx)].push_back(receivers[k]);
+        const int x0 = tile_of(lo.x), x1 = tile_of(hi.x), y0 = tile_of(lo.y), y1 = tile_of(hi.y);
+        if (x0 == x1 && y0 == y1) {  // inside one tile: its part as it is
+            Tile& t = tiles[static_cast<size_t>(y0 * n + x0)];
+            t.pixels += part_share(camera_view_proj, seen[k], scratch) * image;
+            t.share += part_share(map_view_proj, seen[k], scratch);
+            continue;
+        }
+        for (int ty = y0; ty <= y1; ++ty)
+            for (int tx = x0; tx <= x1; ++tx) tiles[static_cast<size_t>(ty * n + tx)].across.push_back(receivers[k]);
     }
+    Demand d;
     struct Need {
-        double wanted;
-        double pixels;
+        double wanted, pixels;
     };
     std::vector<Need> needs;
-    double total = 0.0;
     for (int ty = 0; ty < n; ++ty)
         for (int tx = 0; tx < n; ++tx) {
-            const std::vector<scene::Bounds>& boxes = in_tile[static_cast<size_t>(ty * n + tx)];
-            if (boxes.empty()) continue;
-            const auto at = [](int i) { return -1.0f + 2.0f * static_cast<float>(i) / static_cast<float>(n); };
-            const glm::mat4 t = tile_view_proj(map_view_proj, at(tx), at(tx + 1), at(ty), at(ty + 1));
-            const std::array<HalfSpace, 6> planes = clip_volume_half_spaces(t);
-            std::vector<glm::vec3> points;
-            for (std::vector<glm::vec3>& part :
-                 visible_points_each(light, boxes, camera_view_proj, whole, {planes.begin(), planes.end()}))
-                points.insert(points.end(), part.begin(), part.end());
-            const double pixels = screen_pixels(points, camera_view_proj, width, height);
-            const double share = hull_share(map_view_proj, points);
-            if (!(pixels >= 1.0) || !(share > 0.0)) continue;
-            needs.push_back({kDenseTexelsPerPixel * std::sqrt(pixels / share), pixels});
-            total += pixels;
+            Tile& t = tiles[static_cast<size_t>(ty * n + tx)];
+            if (!t.across.empty()) {
+                // Those across tiles clipped again by this one's frustum (most span two to four).
+                const auto at = [](int i) { return -1.0f + 2.0f * static_cast<float>(i) / static_cast<float>(n); };
+                const std::array<HalfSpace, 6> planes =
+                    clip_volume_half_spaces(tile_view_proj(map_view_proj, at(tx), at(tx + 1), at(ty), at(ty + 1)));
+                for (const std::vector<glm::vec3>& part :
+                     visible_points_each(light, t.across, camera_view_proj, whole, {planes.begin(), planes.end()})) {
+                    t.pixels += part_share(camera_view_proj, part, scratch) * image;
+                    t.share += part_share(map_view_proj, part, scratch);
+                }
+            }
+            d.pixels += t.pixels;
+            d.share += t.share;
+            if (t.pixels >= 1.0 && t.share > 0.0) needs.push_back({kDenseTexelsPerPixel * std::sqrt(t.pixels / t.share), t.pixels});
         }
-    if (needs.empty()) return 0.0;
+    if (needs.empty()) return d;
     std::sort(needs.begin(), needs.end(), [](const Need& a, const Need& b) { return a.wanted < b.wanted; });
-    double served = 0.0;
+    double total = 0.0, served = 0.0;
+    for (const Need& need : needs) total += need.pixels;
     for (const Need& need : needs) {
         served += need.pixels;
-        if (served >= kDenseShare * total) return need.wanted;
+        d.dense = need.wanted;
+        if (served >= kDenseShare * total) break;
     }
-    return needs.back().wanted;
+    return d;
 }
 
 float screen_pixels(const std::vector<glm::vec3>& points, const glm::mat4& camera_view_proj, int width, int height) {

@@ -28,25 +28,33 @@ float screen_pixels(const std::vector<glm::vec3>& points, const glm::mat4& camer
 // bench_medium 0.175 % against 0.099 %, the course 0.041 % against 0.025 %.
 inline constexpr float kTexelsPerPixel = 2.0f;
 
+// What the receivers in view ask of a map, part by part: each receiver's box clipped to the
+// camera's view, the spot's cone and the map's window, and that part's convex hull projected onto
+// the image (its pixels) and onto the map (its share). Summed part by part, so a scene of many
+// small receivers costs one small hull each (a hull over all their points at once cost 40 ms of a
+// 100,000-object frame here), and overlapping parts count once each.
+//
 // Where the density varies across a map (a wide perspective window, a receiver met at a grazing
-// angle) the average under-samples its densest part. So the window is also cut into kDenseTiles x
-// kDenseTiles tiles, each matched alone (the receivers in view inside it: their pixels, and the
-// share of the whole map they cover), and the size must also give kDenseTexelsPerPixel texels a
-// pixel over kDenseShare of the receivers' pixels (counted per tile). The share lets a sliver seen
-// at a grazing angle over a few pixels go under-sampled rather than double the map. One texel a
-// pixel there keeps the average's choice where the density is even (the course and the bench
-// scenes: the densest tiles want 1.4-2.0x the average's texels a pixel) and doubles the faces of
-// tests/data/wide_cone.gltf, whose +x face wants 3.6x (512x512, llvmpipe: 0.276 % of error with
-// faces of 512, 0.057 % with 1024).
+// angle) an average under-samples its densest part. So the window is also cut into kDenseTiles x
+// kDenseTiles tiles, a part across tiles is clipped again by each, and the size must also give
+// kDenseTexelsPerPixel texels a pixel over kDenseShare of the pixels, tile by tile. The share
+// lets a sliver seen at a grazing angle over a few pixels go under-sampled rather than double the
+// map. One texel a pixel there keeps the average's choice where the density is even (the course
+// and the bench scenes: the densest tiles want 0.8-1.0x the average's two texels a pixel) and
+// doubles the faces of tests/data/wide_cone.gltf, whose +x face wants 1.8x (512x512, llvmpipe:
+// 0.276 % of error with faces of 512, 0.057 % with 1024).
 inline constexpr int kDenseTiles = 8;
 inline constexpr float kDenseTexelsPerPixel = 1.0f;
 inline constexpr double kDenseShare = 0.9;
-// That size before rounding (0: no receiver in view) for the receivers' boxes seen by a camera of
-// `camera_view_proj` and a width x height image, in the window of `map_view_proj`. Each receiver
-// is clipped against the tiles its part in view spans, so the cost is the window's clip's times a
-// small factor: O(n).
-double dense_wanted(const scene::Light& light, const std::vector<scene::Bounds>& receivers, const glm::mat4& camera_view_proj,
-                    int width, int height, const glm::mat4& map_view_proj);
+struct Demand {
+    double pixels = 0.0;  // of a width x height image, summed over the parts
+    double share = 0.0;   // of the map, summed over the parts (may pass 1 where parts overlap)
+    double dense = 0.0;   // texels a side kDenseTexelsPerPixel a pixel want over kDenseShare of the pixels
+};
+// For the receivers' boxes seen by a camera of `camera_view_proj` (a width x height image), in
+// the window of `map_view_proj`. O(n): one clip a receiver, again per tile for those across tiles.
+Demand receiver_demand(const scene::Light& light, const std::vector<scene::Bounds>& receivers, const glm::mat4& camera_view_proj,
+                       int width, int height, const glm::mat4& map_view_proj);
 
 // An image under 512 x 512 pixels is matched as if it were that large (its width and height
 // scaled alike). At a fixed number of texels a pixel the error, as a share of the image's pixels,
@@ -71,7 +79,7 @@ struct MatchedSize {
 // One map (or each of `maps` equal tiles: a cube's drawn faces) serving `pixels` of the image at
 // texel use `use` (0..1; for tiles, their summed uses), `largest` texels a side at most (the
 // context's and the memory cap's bound), `smallest` at least.
-// `dense`: dense_wanted's size, when more than the average's it is the one wanted.
+// `dense`: receiver_demand's, the one wanted where it is more than the average's.
 MatchedSize matched_map_size(float pixels, float use, int maps, int smallest, int largest, double dense = 0.0,
                              bool scaled = false);
 

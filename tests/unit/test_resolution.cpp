@@ -2,6 +2,8 @@
 // for at two texels a pixel, and the plan's choice as the image and the view change.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "full_caps.h"
@@ -67,28 +69,38 @@ TEST(Resolution, TheDensestTilesAskForMoreWhereTheCameraSeesTheGroundUnevenly) {
     sun.type = scene::LightType::Directional;
     sun.direction = glm::vec3(0.0f, -1.0f, 0.0f);
     const std::vector<scene::Bounds> ground = {kGround};
-    const auto average = [&](const glm::mat4& camera) {
-        const std::vector<glm::vec3> corners = {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}};
-        return shadow::matched_map_size(shadow::screen_pixels(corners, camera, 512, 512), shadow::hull_share(kMapAbove, corners),
-                                        1, 128, 8192)
-            .wanted;
-    };
-    // A camera that sees the ground as the map does: the density is even, so every tile wants
-    // what the average wants at one texel a pixel instead of two.
-    const glm::mat4 same = kMapAbove;
-    const double even = shadow::dense_wanted(sun, ground, same, 512, 512, kMapAbove);
-    EXPECT_NEAR(even, 512.0, 8.0);
-    EXPECT_NEAR(average(same), 1024, 16);
+    // Two texels a pixel on average over the parts.
+    const auto average = [](const shadow::Demand& d) { return 2.0 * std::sqrt(d.pixels / d.share); };
+    // A camera that sees the ground as the map does: the whole image and the whole map, the
+    // density even, so every tile wants what the average wants at one texel a pixel instead of two.
+    const shadow::Demand even = shadow::receiver_demand(sun, ground, kMapAbove, 512, 512, kMapAbove);
+    EXPECT_NEAR(even.pixels, 512.0 * 512.0, 512.0);
+    EXPECT_NEAR(even.share, 1.0, 0.01);
+    EXPECT_NEAR(even.dense, 512.0, 8.0);
+    EXPECT_NEAR(average(even), 1024.0, 16.0);
     // A camera low over the ground, looking along it: the near tiles fill most of the image, the
     // far ones a sliver. The densest 90 % of the pixels want more texels than the average's half.
     const glm::mat4 low = glm::perspective(glm::radians(60.0f), 1.0f, 0.05f, 20.0f) *
                           glm::lookAt(glm::vec3(0.0f, 0.4f, 1.6f), glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-    const double uneven = shadow::dense_wanted(sun, ground, low, 512, 512, kMapAbove);
-    EXPECT_GT(uneven, 0.75 * average(low)) << "average " << average(low);
+    const shadow::Demand uneven = shadow::receiver_demand(sun, ground, low, 512, 512, kMapAbove);
+    EXPECT_GT(uneven.dense, 0.75 * average(uneven)) << "average " << average(uneven);
+    // Many small receivers, each inside one tile: their parts summed, the same as one ground.
+    std::vector<scene::Bounds> pieces;
+    for (int i = 0; i < 16; ++i)
+        for (int j = 0; j < 16; ++j) {
+            const float x = -1.0f + 0.125f * static_cast<float>(i), z = -1.0f + 0.125f * static_cast<float>(j);
+            pieces.push_back(scene::Bounds::around({x, -0.01f, z}, {x + 0.125f, 0.0f, z + 0.125f}));
+        }
+    const shadow::Demand tiled = shadow::receiver_demand(sun, pieces, kMapAbove, 512, 512, kMapAbove);
+    EXPECT_NEAR(tiled.pixels, even.pixels, 0.01 * even.pixels);
+    EXPECT_NEAR(tiled.share, even.share, 0.01);
+    EXPECT_NEAR(tiled.dense, even.dense, 8.0);
     // Nothing in view: nothing wanted.
     const glm::mat4 away = glm::perspective(glm::radians(60.0f), 1.0f, 0.05f, 20.0f) *
                            glm::lookAt(glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f, 5.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f));
-    EXPECT_EQ(shadow::dense_wanted(sun, ground, away, 512, 512, kMapAbove), 0.0);
+    const shadow::Demand none = shadow::receiver_demand(sun, ground, away, 512, 512, kMapAbove);
+    EXPECT_EQ(none.pixels, 0.0);
+    EXPECT_EQ(none.dense, 0.0);
 }
 
 TEST(Resolution, AnImageUnder512ASideIsMatchedAsIfThatLarge) {

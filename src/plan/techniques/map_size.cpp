@@ -36,14 +36,13 @@ const MapSizeReport* matched_before(const PlanContext& c) { return c.plan.find<M
 
 }  // namespace
 
-int auto_map_size(PlanContext& c, const ShadowBounds& b, const std::vector<glm::vec3>& visible, const shadow::LightFrustum& f) {
+int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrustum& f) {
     if (const MapSizeReport* before = matched_before(c)) return before->size;
     const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
-    const float pixels = shadow::screen_pixels(visible, c.plan.camera.view_proj, image.width, image.height);
-    const double dense =
-        shadow::dense_wanted(c.light, b.receivers, c.plan.camera.view_proj, image.width, image.height, f.view_proj());
-    const shadow::MatchedSize m = shadow::matched_map_size(pixels, shadow::texel_use(f, visible), 1, kAutoSmallest,
-                                                           auto_largest(c, 1), dense, image.scaled);
+    const shadow::Demand d =
+        shadow::receiver_demand(c.light, b.receivers, c.plan.camera.view_proj, image.width, image.height, f.view_proj());
+    const shadow::MatchedSize m = shadow::matched_map_size(static_cast<float>(d.pixels), static_cast<float>(d.share), 1,
+                                                           kAutoSmallest, auto_largest(c, 1), d.dense, image.scaled);
     c.plan.put(MapSizeReport{m.size, m.wanted, m.why});
     return m.size;
 }
@@ -53,21 +52,14 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& 
     const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
     shadow::MatchedSize best;
     int face_index = -1;
-    std::vector<char> whole;
     for (int i = 0; i < shadow::kCubeFaces; ++i) {
         const shadow::CubeFace& face = fit.faces[static_cast<size_t>(i)];
         if (!face.drawn) continue;
-        const std::array<glm::vec4, 6> planes = shadow::clip_volume_half_spaces(face.frustum.view_proj());
-        std::vector<glm::vec3> served;
-        for (std::vector<glm::vec3>& part : shadow::visible_points_each(c.light, b.receivers, c.plan.camera.view_proj, whole,
-                                                                        {planes.begin(), planes.end()}))
-            served.insert(served.end(), part.begin(), part.end());
-        const float pixels = shadow::screen_pixels(served, c.plan.camera.view_proj, image.width, image.height);
-        const double dense = shadow::dense_wanted(c.light, b.receivers, c.plan.camera.view_proj, image.width, image.height,
-                                                  face.frustum.view_proj());
+        const shadow::Demand d = shadow::receiver_demand(c.light, b.receivers, c.plan.camera.view_proj, image.width,
+                                                         image.height, face.frustum.view_proj());
         const shadow::MatchedSize m =
-            shadow::matched_map_size(pixels, shadow::texel_use(face.frustum, served), 1, kAutoSmallest,
-                                     auto_largest(c, shadow::kCubeFaces), dense, image.scaled);
+            shadow::matched_map_size(static_cast<float>(d.pixels), static_cast<float>(d.share), 1, kAutoSmallest,
+                                     auto_largest(c, shadow::kCubeFaces), d.dense, image.scaled);
         if (face_index < 0 || m.wanted > best.wanted) best = m, face_index = i;
     }
     best.why += std::string(" (face ") + shadow::cube_face_name(face_index) + ", the most of the " +

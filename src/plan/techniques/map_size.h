@@ -9,8 +9,8 @@
 
 namespace penumbra::render {
 
-// One map of frustum `f` serving the receivers' points in view (the fit's), the camera pass's pixels.
-int auto_map_size(PlanContext& c, const ShadowBounds& b, const std::vector<glm::vec3>& visible, const shadow::LightFrustum& f);
+// One map of frustum `f` serving the receivers in view, the camera pass's pixels.
+int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrustum& f);
 // A cube: each drawn face matched to the receivers it serves (those in view inside its frustum),
 // the largest size any face asks for. A face that sees much of the image in little of its map
 // would be under-sampled by a mean over the faces (bulb_room.gltf at 512x512: faces of 512 and

@@ -236,7 +236,7 @@ public:
                                                 : "that no one frustum holds (beside or behind it, or around it)");
             if (cubed(c, shadow_bounds(c.scene, s.blend_shadows), size, why)) return;
         }
-        if (auto_size) size = auto_map_size(c, shadow_bounds(c.scene, s.blend_shadows), fit.visible, fit.frustum);
+        if (auto_size) size = auto_map_size(c, shadow_bounds(c.scene, s.blend_shadows), fit.frustum);
         if (fit.capped)
             c.plan.notes.push_back(std::string("the light's window is capped at 75 degrees a side: receivers in view beyond it "
                                                "count as lit") +
