@@ -172,7 +172,7 @@ MatchedSize matched_map_size(float pixels, float use, int maps, int smallest, in
     m.size = std::min(n, largest);
     const char* bound = m.size == largest && wanted > largest ? ", the largest allowed" : m.size == smallest && wanted < smallest ? ", the smallest allowed" : "";
     std::snprintf(b, sizeof b,
-                  "auto %d%s: the receivers in view cover %.0f pixels and %.1f%% of %s; %g texels a pixel want %.0f on "
+                  "auto %d%s: the receivers in view cover %.0f pixels and %.1f%% of %s, part by part; %g texels a pixel want %.0f on "
                   "average; %g a pixel over %.0f%% of them, tile by tile, want %.0f%s",
                   m.size, bound, static_cast<double>(pixels), 100.0 * static_cast<double>(use) / std::max(maps, 1),
                   maps > 1 ? "each face on average" : "the map", static_cast<double>(kTexelsPerPixel), average,

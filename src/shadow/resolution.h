@@ -1,10 +1,10 @@
-// Resolution matching (--map-size auto, issue 56): a map's size from the screen pixels it serves.
-// The receivers the camera sees cover some pixels of the image and some share of the map (the
-// fit's texel use); kTexelsPerPixel texels across each pixel on average over them asks for a map
-// of kTexelsPerPixel * sqrt(pixels / use) texels a side, rounded up to a power of two and held
-// within the context's largest texture and a memory cap. Averaging is the resolution-matched shadow map's rule at the
-// scale of the whole map (Lefohn et al. match per tile); it needs only the fit's points, so it
-// costs what the fit costs: a convex hull of the points, O(n log n). No GL here.
+// Resolution matching (--map-size auto): a map's size from the screen pixels it serves. The
+// receivers the camera sees cover some pixels of the image and some share of the map;
+// kTexelsPerPixel texels across each pixel on average over them asks for a map of
+// kTexelsPerPixel * sqrt(pixels / share) texels a side, and the densest tiles of the map (the
+// resolution-matched shadow map's rule, Lefohn et al., at the scale of 8 x 8 tiles, from the plan
+// instead of the depth buffer) may ask for more. Rounded up to a power of two and held within the
+// context's largest texture and a memory cap. O(n) in the receivers. No GL here.
 #pragma once
 
 #include <string>
@@ -39,10 +39,8 @@ inline constexpr float kTexelsPerPixel = 2.0f;
 // kDenseTiles tiles, a part across tiles is clipped again by each, and the size must also give
 // kDenseTexelsPerPixel texels a pixel over kDenseShare of the pixels, tile by tile. The share
 // lets a sliver seen at a grazing angle over a few pixels go under-sampled rather than double the
-// map. One texel a pixel there keeps the average's choice where the density is even (the course
-// and the bench scenes: the densest tiles want 0.8-1.0x the average's two texels a pixel) and
-// doubles the faces of tests/data/wide_cone.gltf, whose +x face wants 1.8x (512x512, llvmpipe:
-// 0.276 % of error with faces of 512, 0.057 % with 1024).
+// map. One texel a pixel there leaves the average's choice where the density is even and raises
+// it where a face sees a receiver edge-on (docs/resolution.md has the figures).
 inline constexpr int kDenseTiles = 8;
 inline constexpr float kDenseTexelsPerPixel = 1.0f;
 inline constexpr double kDenseShare = 0.9;
@@ -57,10 +55,8 @@ Demand receiver_demand(const scene::Light& light, const std::vector<scene::Bound
                        int width, int height, const glm::mat4& map_view_proj);
 
 // An image under 512 x 512 pixels is matched as if it were that large (its width and height
-// scaled alike). At a fixed number of texels a pixel the error, as a share of the image's pixels,
-// grows as the image shrinks: a shadow's edge spans fewer pixels, but of fewer in all (256x256,
-// llvmpipe: maps of 512 were 0.172 % wrong on bench_medium and 0.455 % on wide_cone.gltf, maps of
-// 1024 0.076 % and 0.108 %; at 512x512 the same 1024 maps are 0.099 % and 0.057 %).
+// scaled alike): at a fixed number of texels a pixel the error, as a share of the image's pixels,
+// grows as the image shrinks (an edge crosses fewer pixels, but of fewer in all).
 inline constexpr double kMatchedSide = 512.0;
 // The width and height an image of width x height is matched as: itself, or scaled up to
 // kMatchedSide pixels a side on average (sqrt(width x height)).

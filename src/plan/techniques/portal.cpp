@@ -185,6 +185,11 @@ private:
         // light stays the plan's (what penumbra plan prints, what the bench reads).
         std::optional<LightViewReport> light_view;
         if (const LightViewReport* r = c.plan.find<LightViewReport>()) light_view = *r;
+        // So is its map size; the other scene's map (a resource of its own) is matched to what it
+        // serves, not held to this scene's size as a second map into the same target would be.
+        std::optional<MapSizeReport> map_size;
+        if (const MapSizeReport* r = c.plan.find<MapSizeReport>()) map_size = *r;
+        c.plan.drop(MapSizeReport::kKey);
         const Module& sm = technique_module(Technique::ShadowMap);
         if (shadows) sm.before_camera(o);
 
@@ -211,6 +216,8 @@ private:
         c.add_pass(std::move(p));
         if (light_view) c.plan.put(*light_view);
         else c.plan.drop(LightViewReport::kKey);
+        if (map_size) c.plan.put(*map_size);
+        else c.plan.drop(MapSizeReport::kKey);
     }
 };
 
