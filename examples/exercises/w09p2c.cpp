@@ -52,7 +52,10 @@ Exercise w09p2c() {
     x.draw = draw;
     // The course's map: fitted around what the camera sees, the table in it (where the sheet's
     // bias lessons show their acne), not only where the teapot's shadow falls (--light-fit shadows).
-    x.defaults = {{"light-fit", "tight"}};
+    // And a map of 1024 whatever the canvas: the 4x4 PCF's blur, texmapscale apart, is what the
+    // sheet teaches, and auto's 2048 on a 748-pixel canvas (docs/resolution.md) leaves it under two
+    // pixels wide. auto is one choice away in the select.
+    x.defaults = {{"light-fit", "tight"}, {"map-size", "1024"}};
     x.modules = {render::shadow_map_module};
     return x;
 }

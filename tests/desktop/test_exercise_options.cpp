@@ -18,7 +18,7 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
     EXPECT_EQ(CourseApp("w09p2a").query(), "light=on&jump=on&projection=persp");
     EXPECT_EQ(CourseApp("w09p2b").query(), "light=on&jump=on&fbo-view=light&rtt=fbo&map-size=1024");
     EXPECT_EQ(CourseApp("w09p2c").query(),
-              "light=on&jump=on&budget-ms=0&encoding=rgba&filter=hard&bias=auto&map-faces=auto&precision=highp&map-size=auto&"
+              "light=on&jump=on&budget-ms=0&encoding=rgba&filter=hard&bias=auto&map-faces=auto&precision=highp&map-size=1024&"
               "aov=color&map-view=on");
     EXPECT_EQ(CourseApp("volumes").query(),
               "light=on&jump=on&volume-method=auto&show-volumes=off&eye=scene&aov=color");
@@ -379,21 +379,18 @@ TEST(ExerciseOptions, Keys) {
     EXPECT_EQ(a.on_key('L', false), "light = off");
     EXPECT_EQ(a.on_key('4', false).rfind("W09P2c", 0), 0u);
     EXPECT_EQ(a.exercise().name, "w09p2c");
-    // From auto (the default), the last of the sizes offered, M wraps to the first.
+    a.on_key('M', false);
+    EXPECT_EQ(a.settings().map_size, 2048);
+    a.on_key('M', true);
+    a.on_key('M', true);
+    EXPECT_EQ(a.settings().map_size, 512);
+    // auto, the last of the sizes offered: M from 4096 reaches it, and from it wraps to 256.
+    EXPECT_EQ(a.set_option("map-size", "4096"), "");
+    a.on_key('M', false);
     EXPECT_EQ(a.settings().map_size, penumbra::render::Settings::kAutoMapSize);
     a.on_key('M', false);
     EXPECT_EQ(a.settings().map_size, 256);
-    a.on_key('M', false);
-    EXPECT_EQ(a.settings().map_size, 512);
-    a.on_key('M', true);
-    a.on_key('M', true);
-    EXPECT_EQ(a.settings().map_size, penumbra::render::Settings::kAutoMapSize);
-    a.on_key('M', true);
-    EXPECT_EQ(a.settings().map_size, 4096);
-    a.on_key('M', true);
-    a.on_key('M', true);
-    a.on_key('M', true);
-    EXPECT_EQ(a.settings().map_size, 512);
+    EXPECT_EQ(a.set_option("map-size", "512"), "");
     a.on_key('F', false);
     EXPECT_EQ(a.settings().filter, penumbra::shadow::Filter::PCF4x4);
     a.on_key('E', false);  // rgba -> (no context: no depth texture) -> r8

@@ -26,7 +26,7 @@ await runTest('web.budget', async ({ server, browser }) => {
   check((await state(page)).budget === null, 'a budget while off');
   await waitFrames(page, 5);
   check((await readout(page)).hidden, 'the budget readout shows while off');
-  check((await state(page)).mapSize === 'auto', 'the page does not draw its own map size while off');
+  check((await state(page)).mapSize === 1024, 'the page does not draw its own map size while off');
 
   // The select: the URL keeps it; the readout says the choice.
   await page.selectOption('#budget-ms', '33');
@@ -69,7 +69,7 @@ await runTest('web.budget', async ({ server, browser }) => {
   await page.selectOption('#budget-ms', '0');
   await waitFrames(page, 3);
   const off = await state(page);
-  check(off.budget === null && off.mapSize === 'auto', `off again: budget ${JSON.stringify(off.budget)}, map ${off.mapSize}`);
+  check(off.budget === null && off.mapSize === 1024, `off again: budget ${JSON.stringify(off.budget)}, map ${off.mapSize}`);
   await page.waitForSelector('#budget-row', { state: 'hidden', timeout: 10000 }).catch(() => {});
   check((await readout(page)).hidden, 'the readout stays after the budget is off');
   check(problems.length === 0, problems.join('; '));
