@@ -120,7 +120,7 @@ struct Settings {
     shadow::PcfKernel pcf_kernel = shadow::PcfKernel::EarlyExit;
     // Texels a side; with cascades each cascade's map (the atlas holds them side by side), with a
     // cube each face's. kAutoMapSize: matched to the screen pixels the map serves (shadow/resolution.h).
-    int map_size = kAutoMapSize;
+    int map_size = 1024;
     static constexpr int kAutoMapSize = 0;
     // What a part that takes a fixed size uses under auto (the cascades, Gooch's texture, W09P2b).
     int fixed_map_size() const { return map_size == kAutoMapSize ? 1024 : map_size; }
