@@ -3,11 +3,9 @@
 #include "plan/techniques/map_size.h"
 
 #include <algorithm>
-#include <array>
 #include <string>
 
 #include "plan/techniques/reports.h"
-#include "shadow/convex.h"
 #include "shadow/resolution.h"
 
 namespace penumbra::render {

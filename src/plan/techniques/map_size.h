@@ -2,8 +2,6 @@
 // MapSizeReport (the size and why).
 #pragma once
 
-#include <vector>
-
 #include "plan/techniques/technique.h"
 #include "shadow/cube.h"
 
