@@ -228,6 +228,7 @@ const char* penumbra_state() {
     j += ",\"generation\":" + std::to_string(a.gl_generation());
     const gl::Caps* caps = a.caps();
     j += ",\"depthTexture\":" + json_bool(caps && caps->depth_texture);
+    j += ",\"derivatives\":" + json_bool(caps && caps->standard_derivatives);
     j += ",\"maxMapSize\":" + std::to_string(caps ? caps->max_target_size() : 0);
     j += ",\"renderer\":" + json_quote(caps ? caps->renderer : "");
     j += ",\"status\":" + json_quote(g->status);

@@ -91,6 +91,7 @@ Caps probe_caps(const platform::Platform& context) {
         c.draw_buffers ? reinterpret_cast<PFNGLDRAWBUFFERSEXTPROC>(context.proc_address("glDrawBuffersEXT")) : nullptr;
     c.draw_buffers = entry_points().draw_buffers != nullptr;
     c.render_mipmap = c.has("GL_OES_fbo_render_mipmap");
+    c.standard_derivatives = either("OES_standard_derivatives");
     probe_timer(c, context, either("EXT_disjoint_timer_query"));
 
     c.max_texture_size = get_int(GL_MAX_TEXTURE_SIZE);
@@ -123,6 +124,7 @@ std::string Caps::summary() const {
       << ", uint indices " << (element_index_uint ? "yes" : "no") << "\n"
       << "half-float targets " << (half_float_target ? "yes" : "no") << ", draw buffers "
       << (draw_buffers ? "yes" : "no") << ", render into mip levels " << (render_mipmap ? "yes" : "no")
+      << ", derivatives " << (standard_derivatives ? "yes" : "no")
       << ", GPU timer " << (timer_query ? "yes (" + std::to_string(timer_bits) + " bits)" : std::string("no"));
     return s.str();
 }

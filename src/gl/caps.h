@@ -42,6 +42,9 @@ struct Caps {
     bool half_float_target = false;
     bool draw_buffers = false;
     bool render_mipmap = false;
+    // dFdx, dFdy in fragment shaders (OES_standard_derivatives): the light's horizon from each
+    // triangle's own normal (plan/variants.h, LitFeatures::derivatives).
+    bool standard_derivatives = false;
     // GPU time per pass (gl/timer.h): EXT_disjoint_timer_query with its entry points and a
     // TIME_ELAPSED counter of timer_bits > 0 bits (a context may report 0: no timer). Web: not
     // yet (gl/caps.cpp says why).

@@ -34,11 +34,12 @@ namespace {
 // WebGL extensions are off until asked for; the library uses these where the browser has them.
 // After a restore they are off again and are asked for again.
 // The half-float ones give the post passes' targets (plan/post.h) where all three are there;
-// WEBGL_draw_buffers the deferred G-buffer's three attachments in one pass (plan/frames/deferred.h).
+// WEBGL_draw_buffers the deferred G-buffer's three attachments in one pass (plan/frames/deferred.h);
+// OES_standard_derivatives the light's horizon from each triangle's own normal (lit.frag).
 // EXT_disjoint_timer_query is enabled apart (enable_timer_query): Emscripten needs its object.
 constexpr const char* kExtensions[] = {"WEBGL_depth_texture", "OES_element_index_uint", "OES_texture_half_float",
                                        "OES_texture_half_float_linear", "EXT_color_buffer_half_float",
-                                       "WEBGL_draw_buffers"};
+                                       "WEBGL_draw_buffers", "OES_standard_derivatives"};
 
 class WebCanvas final : public Platform {
 public:
