@@ -26,7 +26,8 @@
 // RECEIVES: the object receives shadows), GBUFFER_READ (the lighting passes, with screen.vert: the
 // surface read back from the G-buffer at the pixel instead of the varyings and the material),
 // LIGHT_HORIZON (a light with a size, or one sample of it: the visibility times the part of the
-// light above the receiver's horizon).
+// light above the receiver's horizon; GEOMETRIC_HORIZON: that horizon from the triangle's own
+// normal, by dFdx/dFdy).
 #include "precision.glsl"
 
 uniform vec4 u_base_color;
@@ -241,7 +242,18 @@ void main() {
 #endif
 
 #ifdef LIGHT_HORIZON
-    visibility *= lightHorizon(n, l, u_light.w > 0.0 ? length(u_light.xyz - world) : 1.0);
+    vec3 horizonNormal = n;
+#ifdef GEOMETRIC_HORIZON
+    // The triangle's own plane: world is linear over it, so its differences across the pixel quad
+    // span the plane whichever way the context takes them (coarse or fine, GLSL ES 1.00 8.8 with
+    // OES_standard_derivatives). Turned to the interpolated normal's side; a degenerate quad keeps n.
+    vec3 facet = cross(dFdx(world), dFdy(world));
+    if (dot(facet, facet) > 0.0) {
+        facet = normalize(facet);
+        horizonNormal = dot(facet, n) < 0.0 ? -facet : facet;
+    }
+#endif
+    visibility *= lightHorizon(horizonNormal, l, u_light.w > 0.0 ? length(u_light.xyz - world) : 1.0);
 #endif
 
 #if defined(AOV_VISIBILITY) && defined(LIGHT_AMBIENT)

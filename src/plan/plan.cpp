@@ -157,6 +157,7 @@ LitFeatures PlanContext::base_features(const Draw& d) const {
     f.spot = light.type == scene::LightType::Spot;
     f.visibility_aov = settings.aov == Aov::Visibility;
     f.horizon = light_sample;
+    f.derivatives = caps.standard_derivatives;
     return f;
 }
 

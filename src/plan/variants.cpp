@@ -117,6 +117,7 @@ Variant lit_variant(const LitFeatures& f) {
     if (f.spot) v.defines.emplace_back("LIGHT_SPOT");
     if (f.visibility_aov) v.defines.emplace_back("AOV_VISIBILITY");
     if (f.horizon) v.defines.emplace_back("LIGHT_HORIZON");
+    if (f.horizon && f.derivatives && f.gbuffer != Gbuffer::Read) v.defines.emplace_back("GEOMETRIC_HORIZON");
     if (f.cascades_aov) v.defines.emplace_back("AOV_CASCADES");
     if (f.alpha_test) v.defines.emplace_back("ALPHA_TEST");
     if (f.alpha_blend) v.defines.emplace_back("ALPHA_BLEND");
@@ -292,19 +293,24 @@ std::vector<Variant> all_variants() {
             out.push_back(lit_variant(base));
             if (base.mediump) continue;
             // LIGHT_HORIZON: PCSS of a light with a size (either blocker estimate); a
-            // Heckbert-Herf sample's hard visibility.
+            // Heckbert-Herf sample's hard visibility. Each with the interpolated normal's horizon
+            // and the triangle's own (GEOMETRIC_HORIZON).
+            const auto with_horizon = [&out](LitFeatures h) {
+                h.horizon = true;
+                for (bool derivatives : {false, true}) {
+                    h.derivatives = derivatives;
+                    out.push_back(lit_variant(h));
+                }
+            };
             if (base.shadow_map && base.filter == shadow::Filter::PCSS) {
                 for (bool layered : {true, false}) {
                     LitFeatures h = base;
                     h.pcss_layered = layered;
                     if (!layered) out.push_back(lit_variant(h));
-                    h.horizon = true;
-                    out.push_back(lit_variant(h));
+                    with_horizon(h);
                 }
             } else if (base.visibility_aov && !base.area_lookup && base.gooch_taps == 0) {
-                LitFeatures h = base;
-                h.horizon = true;
-                out.push_back(lit_variant(h));
+                with_horizon(base);
             }
             base.alpha_test = true;
             for (bool two : {false, true}) {

@@ -59,6 +59,11 @@ struct LitFeatures {
     bool area_lookup = false;        // Heckbert-Herf: visibility from the accumulated light samples
     int area_interleave = 1;         // with area_lookup, > 1: filtered over K x K pixel classes
     bool horizon = false;            // a light with a size (PCSS) or one sample of it: the part above the horizon
+    // The context has dFdx/dFdy (Caps::standard_derivatives): the horizon is then the triangle's
+    // own plane, as the area-light truth takes it, rather than the interpolated normal's, which
+    // leans past it on a smooth mesh's terminator (GEOMETRIC_HORIZON; not where the surface is
+    // read back from the G-buffer, whose 2x2 quads can straddle two triangles).
+    bool derivatives = false;
     // Gooch: which terms the pass writes (planes: the ground ambient-only first, then the direct
     // light scaled by u_light_weight added once per plane that lights it) and, with gooch_taps > 0,
     // the visibility from the shadow texture sampled linearly at that many offsets (texture).

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -172,6 +173,54 @@ TEST(Pcss, TheVariantAndTheLookupsUniforms) {
     const render::FramePlan point = render::plan(course.scene, s, caps(), render::offscreen(64, 64));
     const auto& pd = point.passes.back().draws.front().variant.defines;
     EXPECT_EQ(std::find(pd.begin(), pd.end(), "LIGHT_HORIZON"), pd.end());
+}
+
+TEST(LightHorizon, FromTheTrianglesOwnNormalWhereTheContextHasDerivatives) {
+    // Both soft methods' horizon: PCSS's part of the light above it, each Heckbert-Herf sample's
+    // n.l > 0. With OES_standard_derivatives it is the triangle's plane (GEOMETRIC_HORIZON);
+    // without, the interpolated normal's, as before.
+    scene::CourseScene course = scene::make_course_scene(4);
+    const auto lit_defines = [&](const char* args, bool derivatives) {
+        render::Settings s;
+        std::istringstream words(args);
+        for (std::string w; words >> w;) {
+            const size_t eq = w.find('=');
+            EXPECT_EQ(render::parse_option(s, w.substr(0, eq), w.substr(eq + 1)), "") << w;
+        }
+        gl::Caps c = caps();
+        c.standard_derivatives = derivatives;
+        const render::FramePlan p = render::plan(course.scene, s, c, render::offscreen(64, 64));
+        std::vector<std::vector<std::string>> out;
+        for (const auto& pass : p.passes)
+            for (const auto& d : pass.draws)
+                if (d.variant.fragment == "lit.frag") out.push_back(d.variant.defines);
+        return out;
+    };
+    const auto count = [](const std::vector<std::vector<std::string>>& all, const char* define) {
+        return std::count_if(all.begin(), all.end(), [&](const std::vector<std::string>& d) {
+            return std::find(d.begin(), d.end(), define) != d.end();
+        });
+    };
+    for (const char* args : {"filter=pcss light-radius=0.2", "area-samples=4 light-radius=0.2"}) {
+        const auto with = lit_defines(args, true);
+        const auto without = lit_defines(args, false);
+        ASSERT_GT(count(with, "LIGHT_HORIZON"), 0) << args;
+        EXPECT_EQ(count(with, "GEOMETRIC_HORIZON"), count(with, "LIGHT_HORIZON")) << args;
+        EXPECT_EQ(count(without, "LIGHT_HORIZON"), count(with, "LIGHT_HORIZON")) << args;
+        EXPECT_EQ(count(without, "GEOMETRIC_HORIZON"), 0) << args;
+    }
+    // No horizon (a point light): nothing asks for derivatives.
+    EXPECT_EQ(count(lit_defines("filter=pcss light-radius=0", true), "GEOMETRIC_HORIZON"), 0);
+    // The lighting pass of deferred shading reads the surface back: its quads may straddle two
+    // triangles, so it keeps the interpolated normal.
+    render::LitFeatures f;
+    f.horizon = f.derivatives = true;
+    f.gbuffer = render::Gbuffer::Read;
+    const auto rd = render::lit_variant(f).defines;
+    EXPECT_EQ(std::find(rd.begin(), rd.end(), "GEOMETRIC_HORIZON"), rd.end());
+    f.gbuffer = render::Gbuffer::None;
+    const auto fd = render::lit_variant(f).defines;
+    EXPECT_NE(std::find(fd.begin(), fd.end(), "GEOMETRIC_HORIZON"), fd.end());
 }
 
 TEST(Pcss, TheConeInWindowDepthIsTheConeOfTheRadii) {

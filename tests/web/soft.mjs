@@ -6,7 +6,8 @@
 // changing. In the visibility view PCSS differs from the hard shadow in the penumbra, and at light
 // radius 0 it equals it. The browser's frames match `penumbra render`'s (headless EGL):
 // Heckbert-Herf (deterministic) closely, PCSS (its taps turned per pixel) within a tolerance for
-// its noise. Prints the page's ms/frame for PCSS and for Heckbert-Herf on SwiftShader.
+// its noise. The light's horizon is the triangles' own planes where the browser has derivatives.
+// Prints the page's ms/frame for PCSS and for Heckbert-Herf on SwiftShader.
 // usage: soft.mjs PENUMBRA_CLI OUT_DIR
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
@@ -84,6 +85,12 @@ await runTest('web.soft', async ({ server, browser }) => {
                       'pcss-search=16&pcss-taps=16&pcss-blockers=layered&technique=shadowmap&aov=color', `defaults: ${s.query}`);
     check((await page.inputValue('#light-radius')) === '0.3' && (await page.inputValue('#light-radius-number')) === '0.3',
           'the radius controls do not show 0.3');
+    // The light's horizon from each triangle's own plane (the plan's GEOMETRIC_HORIZON, as
+    // `penumbra render` takes it) where the browser has OES_standard_derivatives: the module sees
+    // the extension the page enabled.
+    const derivatives = await page.evaluate(() =>
+      document.createElement('canvas').getContext('webgl').getSupportedExtensions().includes('OES_standard_derivatives'));
+    check(s.derivatives === derivatives, `the browser ${derivatives ? 'has' : 'lacks'} OES_standard_derivatives, the module's caps say ${s.derivatives}`);
     const techniques = await page.$$eval('#technique option', (os) => os.map((o) => o.value));
     for (const t of ['shadowmap', 'planar', 'volumes']) check(techniques.includes(t), `no technique ${t}: ${techniques}`);
     // The slider with the arrow keys (0.01 a step); the number box follows.
