@@ -174,9 +174,13 @@ render::Settings settings(const char* args) {
 class Soft : public test::GlTest {
 protected:
     std::vector<std::uint8_t> frame(const scene::Scene& sc, const render::Settings& s, const render::FrameInputs& in) {
-        EXPECT_EQ(renderer->check(sc, s, in), "");
-        renderer->render(sc, s, in);
-        return renderer->read_image();
+        return frame_on(*renderer, sc, s, in);
+    }
+    static std::vector<std::uint8_t> frame_on(render::Renderer& r, const scene::Scene& sc, const render::Settings& s,
+                                              const render::FrameInputs& in) {
+        EXPECT_EQ(r.check(sc, s, in), "");
+        r.render(sc, s, in);
+        return r.read_image();
     }
 
     // The course scene against the area-light truth: mean abs error (%) and inside the penumbra.
@@ -198,11 +202,9 @@ protected:
     measure::Score course_score(const Course& c, const char* args, const char* what, render::Renderer& r) {
         render::Settings s = settings(args);
         s.light_radius = c.radius;
-        const render::FrameInputs in = render::offscreen(kSize, kSize);
-        EXPECT_EQ(r.check(c.course.scene, s, in), "");
-        r.render(c.course.scene, s, in);
-        const measure::Score sc = measure::score(measure::from_rgba(r.read_image(), kSize, kSize, 1).data, c.truth.lit,
-                                                 c.truth.valid_mask(), &c.truth.soft);
+        const auto rgba = frame_on(r, c.course.scene, s, render::offscreen(kSize, kSize));
+        const measure::Score sc =
+            measure::score(measure::from_rgba(rgba, kSize, kSize, 1).data, c.truth.lit, c.truth.valid_mask(), &c.truth.soft);
         std::printf("course scene, light radius %.2f, %-40s mean abs error vs the area light %.3f%%, in the penumbra %.2f%%\n",
                     static_cast<double>(c.radius), what, sc.mae_soft_pct, sc.mae_penumbra_pct);
         return sc;

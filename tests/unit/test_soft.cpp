@@ -5,7 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -180,13 +180,11 @@ TEST(LightHorizon, FromTheTrianglesOwnNormalWhereTheContextHasDerivatives) {
     // n.l > 0. With OES_standard_derivatives it is the triangle's plane (GEOMETRIC_HORIZON);
     // without, the interpolated normal's, as before.
     scene::CourseScene course = scene::make_course_scene(4);
-    const auto lit_defines = [&](const char* args, bool derivatives) {
+    // The frame's lit draws' defines, with a light of radius 0.2 (or `radius`).
+    const auto lit_defines = [&](const char* option, const char* value, bool derivatives, const char* radius = "0.2") {
         render::Settings s;
-        std::istringstream words(args);
-        for (std::string w; words >> w;) {
-            const size_t eq = w.find('=');
-            EXPECT_EQ(render::parse_option(s, w.substr(0, eq), w.substr(eq + 1)), "") << w;
-        }
+        EXPECT_EQ(render::parse_option(s, option, value), "");
+        EXPECT_EQ(render::parse_option(s, "light-radius", radius), "");
         gl::Caps c = caps();
         c.standard_derivatives = derivatives;
         const render::FramePlan p = render::plan(course.scene, s, c, render::offscreen(64, 64));
@@ -201,16 +199,17 @@ TEST(LightHorizon, FromTheTrianglesOwnNormalWhereTheContextHasDerivatives) {
             return std::find(d.begin(), d.end(), define) != d.end();
         });
     };
-    for (const char* args : {"filter=pcss light-radius=0.2", "area-samples=4 light-radius=0.2"}) {
-        const auto with = lit_defines(args, true);
-        const auto without = lit_defines(args, false);
+    for (const auto& [option, value] : {std::pair{"filter", "pcss"}, std::pair{"area-samples", "4"}}) {
+        const std::string args = std::string(option) + "=" + value;
+        const auto with = lit_defines(option, value, true);
+        const auto without = lit_defines(option, value, false);
         ASSERT_GT(count(with, "LIGHT_HORIZON"), 0) << args;
         EXPECT_EQ(count(with, "GEOMETRIC_HORIZON"), count(with, "LIGHT_HORIZON")) << args;
         EXPECT_EQ(count(without, "LIGHT_HORIZON"), count(with, "LIGHT_HORIZON")) << args;
         EXPECT_EQ(count(without, "GEOMETRIC_HORIZON"), 0) << args;
     }
     // No horizon (a point light): nothing asks for derivatives.
-    EXPECT_EQ(count(lit_defines("filter=pcss light-radius=0", true), "GEOMETRIC_HORIZON"), 0);
+    EXPECT_EQ(count(lit_defines("filter", "pcss", true, "0"), "GEOMETRIC_HORIZON"), 0);
     // The lighting pass of deferred shading reads the surface back: its quads may straddle two
     // triangles, so it keeps the interpolated normal.
     render::LitFeatures f;
