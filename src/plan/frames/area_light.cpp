@@ -149,7 +149,7 @@ void plan_area(Planning& p) {
             const AreaStep st = area_step(step, a.samples, a.interleave);
             const int k = st.sample;
             // No previous plan: a sample's shadow map is never taken for another's.
-            plan_hard_visibility(p, hard, shadow::area_light_sample(c.light, k, axis), nullptr,
+            plan_hard_visibility(p, hard, shadow::area_light_sample(c.light, k, a.samples, axis), nullptr,
                                  {one_r, out.width, out.height, 0, 0, false}, "area-camera", true);
 
             Pass add;
