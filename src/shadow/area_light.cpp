@@ -19,6 +19,8 @@ void basis(const glm::vec3& n, glm::vec3& a, glm::vec3& b) {
     b = glm::cross(n, a);
 }
 
+// The spiral index of sample k of n: k's place in the bit-reversed order of [0, n), so that the
+// first n / 4^j samples, and each later block of as many, are a residue class mod 4^j.
 int area_sample_index(int k, int n) {
     int bits = 0;
     while ((1 << bits) < n) ++bits;
@@ -106,6 +108,7 @@ int lattice_generator(int n) {
     cache.emplace(n, best_g);
     return best_g;
 }
+
 }  // namespace
 
 glm::vec2 area_sample_point(int k, int n) {

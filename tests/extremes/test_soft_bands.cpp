@@ -155,9 +155,10 @@ TEST_F(SoftBands, InterleavedSamplesSmoothTheGrillesBands) {
     // for a grazing light over 4 cm bars, is itself jagged along the bars; and the renderer's disc
     // lies across the light's axis where the truth's faces each point). So "close to the truth"
     // is held against that floor: interleaved HH 64 within 2.5 x HH 256's energy (2.2 and 1.1 x
-    // measured; the Halton samples before the lattice gave 7.5 and 6.3 x the truth's over a floor of
-    // 5.3 x: the lattice lowers the floor and 4 x 4, and raises 2 x 2 a little) and under 12 x the truth's; the control, plain HH 64, must stay above 20 x the truth's and 3 x
-    // HH 256's (36 and 9.6 x measured): the bands this option removes.
+    // measured) and under 12 x the truth's; the control, plain HH 64, must stay above 20 x the
+    // truth's and 3 x HH 256's (36 and 9.6 x measured): the bands this option removes. (The Halton
+    // samples before the lattice gave 7.5 and 6.3 x the truth's over a floor of 5.3 x: the lattice
+    // lowers the floor and 4 x 4's energy, and raises 2 x 2's a little.)
     EXPECT_GT(energy(64, 1), 20.0 * want) << "the control: HH 64's bands";
     EXPECT_GT(energy(64, 1), 3.0 * e256) << "the control: HH 64's bands";
     for (int k : {2, 4}) {

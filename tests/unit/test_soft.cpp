@@ -97,7 +97,8 @@ TEST(AreaLight, SamplesCoverTheDiscEvenlyInEveryPrefix) {
         std::vector<glm::vec2> seen;
         for (int k = 0; k < n; ++k) seen.push_back(shadow::area_sample_point(k, n));
         for (int a = 0; a < n; ++a)
-            for (int b = a + 1; b < n; ++b) EXPECT_GT(glm::length(seen[static_cast<size_t>(a)] - seen[static_cast<size_t>(b)]), 1e-4f);
+            for (int b = a + 1; b < n; ++b)
+                EXPECT_GT(glm::length(seen[static_cast<size_t>(a)] - seen[static_cast<size_t>(b)]), 1e-4f);
     }
     EXPECT_EQ(shadow::area_sample_point(0, 1), glm::vec2(0.0f)) << "one sample: the centre";
 }
@@ -124,9 +125,9 @@ TEST(AreaLight, SamplesSplitTheDiscUnderALineAsItsAreaDoes) {
         control_blocks += half_plane_error(16, [=](int k) { return halton_disc(16 * j + k); }) / 4.0;
     }
     const double whole256 = half_plane_error(256, [](int k) { return shadow::area_sample_point(k, 256); });
-    std::printf("mean error of a line's split: 64 points %.3f %% (Halton %.3f %%), blocks of 16 %.3f %% (Halton %.3f %%), "
-                "256 points %.3f %%\n", 100.0 * whole, 100.0 * control, 100.0 * blocks, 100.0 * control_blocks,
-                100.0 * whole256);
+    std::printf("mean error of a line's split: 64 points %.3f %% (Halton %.3f %%), "
+                "blocks of 16 %.3f %% (Halton %.3f %%), 256 points %.3f %%\n",
+                100.0 * whole, 100.0 * control, 100.0 * blocks, 100.0 * control_blocks, 100.0 * whole256);
     EXPECT_LT(whole, 0.012);
     EXPECT_GT(control, 0.014) << "the control no longer differs: the test cannot tell a poor set";
     EXPECT_LT(blocks, control_blocks) << "an interleaved pixel class's share splits worse than Halton's did";
