@@ -105,6 +105,10 @@ void print_help() {
     line(std::string(eye.name), render::accepted_values(eye), eye.help);
     const render::OptionInfo& budget = render::option_info("budget-ms");  // render's --budget-ms, with --no-vsync
     line(std::string(budget.name), "MS", std::string(budget.help) + " (with --no-vsync: vsync paces the frames)");
+    const render::OptionInfo& max_error = render::option_info("max-error");
+    line(std::string(max_error.name), "P",
+         "0: off; else the smallest map the model predicts within P % of the hard truth on these frames, chosen again "
+         "every " + std::to_string(examples::CourseApp::kErrorEvery) + " frames; one of it and budget-ms");
     line("camera", "X,Y,Z,YAW,PITCH",
          "cascades, bulb: where the fly camera stands (metres) and looks (degrees: yaw right of north, pitch up)");
     std::printf(
@@ -329,7 +333,7 @@ int main(int argc, char** argv) {
         const std::string controls = title_controls(app);
         if (controls != shown_controls || f.time_s - last_ms_shown >= 0.5) {
             last_ms_shown = f.time_s;
-            char figures[96];
+            char figures[128];
             std::snprintf(figures, sizeof figures, " | %.2f ms/frame", app.median_ms());
             title = controls + figures;
             if (const render::BudgetController* b = app.budget()) {  // budget-ms: what it chose
@@ -340,6 +344,11 @@ int main(int argc, char** argv) {
                     std::snprintf(figures, sizeof figures, ", predicted error %.3f %%", app.budget_predicted_error());
                     title += figures;
                 }
+            }
+            if (const render::ErrorChoice* c = app.error_choice()) {  // max-error: what it chose
+                std::snprintf(figures, sizeof figures, " | max-error: %s, predicted %.3f %%", render::rung_label(c->rung()).c_str(),
+                              c->rung().predicted_pct);
+                title += figures;
             }
             if (const auto& area = app.area()) {  // Heckbert-Herf's progress (soft shadows)
                 std::snprintf(figures, sizeof figures, " | light samples %d of %d", area->done, area->total);
@@ -381,6 +390,15 @@ int main(int argc, char** argv) {
         if (app.budget_predicted_error() >= 0.0)
             std::printf("predicted error %.3f %% of the truth (the frame's shadow edges, plan/error_model.h)\n",
                         app.budget_predicted_error());
+    }
+    if (const render::ErrorChoice* c = app.error_choice()) {
+        if (args.verbose)
+            for (const render::ErrorRung& g : c->rungs)
+                std::printf("max-error: %s predicted %.3f %%\n", render::rung_label(g).c_str(), g.predicted_pct);
+        if (args.verbose) std::printf("max-error: the last choice took %.1f ms (two frames offscreen, three plans)\n", app.error_choice_ms());
+        std::printf("%s\n", c->why.c_str());
+    } else if (app.max_error() > 0.0 && !app.error_target_refusal().empty()) {
+        std::printf("%s\n", app.error_target_refusal().c_str());
     }
     if (args.print_title) std::printf("title: %s\n", title.c_str());
     if (args.verbose) std::printf("%s", app.last_plan().c_str());

@@ -207,6 +207,14 @@ const char* penumbra_state() {
              ",\"predictedErrorPct\":" + (a.budget_predicted_error() >= 0.0 ? json_number(a.budget_predicted_error()) : "null") + "}";
     else
         j += ",\"budget\":null";
+    // max-error: the rung chosen and why, or why none can be (null while off or before the first choice).
+    if (const render::ErrorChoice* c = a.error_choice())
+        j += ",\"errorTarget\":{\"mapSize\":" + std::to_string(c->settings().map_size) + ",\"predictedErrorPct\":" +
+             json_number(c->rung().predicted_pct) + ",\"why\":" + json_quote(c->why) + "}";
+    else if (a.max_error() > 0.0 && !a.error_target_refusal().empty())
+        j += ",\"errorTarget\":{\"mapSize\":null,\"why\":" + json_quote(a.error_target_refusal()) + "}";
+    else
+        j += ",\"errorTarget\":null";
     // Each pass's GPU time (EXT_disjoint_timer_query), median of the last frames the timer read
     // back: null where the context has no timer.
     if (a.gpu_timer_available()) {

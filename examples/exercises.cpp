@@ -20,8 +20,14 @@ namespace penumbra::examples {
 
 namespace {
 
-// The job options the exercises take: time (both clocks, paused), the eye and the time budget.
-bool exercise_job_option(std::string_view name) { return name == "time" || name == "eye" || name == "budget-ms"; }
+// The job options the exercises take: time (both clocks, paused), the eye, the time budget and the
+// error target.
+bool exercise_job_option(std::string_view name) {
+    return name == "time" || name == "eye" || name == "budget-ms" || name == "max-error";
+}
+
+// What setting one of budget-ms and max-error on does to the other, when it was on.
+constexpr const char* kOneControl = " off: a time budget or an error target, one at a time";
 
 // Settings the pages and the desktop never take: the exercise picks the scene and the technique
 // (unless it offers a control for it), the canvas or the window its size, and nothing is written
@@ -143,6 +149,7 @@ void CourseApp::set_exercise(std::string_view name) {
     apply_defaults();
     budget_.reset();  // another scene: its times start afresh
     budget_error_rung_ = -1;
+    reset_error_target();
 }
 
 // ---- options --------------------------------------------------------------------------------
@@ -242,6 +249,26 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
         budget_ms_ = t.job.budget_ms;
         budget_.reset();  // made at the next frame, on this context
         budget_error_rung_ = -1;
+        if (budget_ms_ > 0.0 && max_error_ > 0.0) {
+            max_error_ = 0.0;
+            note_ = std::string("max-error") + kOneControl;
+        }
+        reset_error_target();
+        return {};
+    }
+    if (name == "max-error") {
+        render::Options t;
+        if (std::string err = render::parse_option(t, name, value); !err.empty()) return without_dashes(err);
+        if (t.job.max_error > 0.0)
+            if (std::string why = render::max_error_refusal(exercise_settings()); !why.empty()) return without_dashes(why);
+        max_error_ = t.job.max_error;
+        reset_error_target();
+        if (max_error_ > 0.0 && budget_ms_ > 0.0) {
+            budget_ms_ = 0.0;
+            budget_.reset();
+            budget_error_rung_ = -1;
+            note_ = std::string("budget-ms") + kOneControl;
+        }
         return {};
     }
     if (name == "camera") {
@@ -291,6 +318,8 @@ std::vector<std::pair<std::string, std::string>> CourseApp::options() const {
     if (clock_.paused && clock_.together()) out.emplace_back("time", format_number(clock_.light));
     if (budget_ms_ > 0.0 && std::find(shown.begin(), shown.end(), "budget-ms") == shown.end())
         out.emplace_back("budget-ms", value_of("budget-ms"));
+    if (max_error_ > 0.0 && std::find(shown.begin(), shown.end(), "max-error") == shown.end())
+        out.emplace_back("max-error", value_of("max-error"));
     return out;
 }
 
@@ -298,6 +327,7 @@ std::string CourseApp::value_of(std::string_view name) const {
     if (const auto* t = render::find_option(toggle_table(), name)) return t->print(toggles_);
     if (name == "camera") return fly_value(camera());
     if (name == "budget-ms") return format_number(budget_ms_);
+    if (name == "max-error") return format_number(max_error_);
     if (name == "eye") {
         render::Options o;
         o.job.eye_in_shadow = eye_in_shadow_;
@@ -335,6 +365,7 @@ void CourseApp::drop_gl() {
     renderer_.reset();
     budget_.reset();  // the times measured on the old context say nothing about the next
     budget_error_rung_ = -1;
+    reset_error_target();  // its ladder is the old context's
 }
 
 const gl::Caps* CourseApp::caps() const { return renderer_ ? &renderer_->caps() : nullptr; }
@@ -374,6 +405,7 @@ render::Settings CourseApp::frame_settings() const {
     render::Settings s = exercise_settings();
     // The budget's choice before the lab's: the lab keeps its own packing (render::lab_settings).
     if (budget_ && render::budget_refusal(s).empty()) s = budget_->apply(s);
+    if (error_choice_ && render::max_error_refusal(s).empty()) s = error_ladder_->at_rung(error_choice_->rung().rung, s);
     if (lab_ && !own_scene()) {
         const render::Settings lab = render::lab_settings(s);
         if (render::lab_refusal(lab).empty()) return lab;
@@ -492,6 +524,7 @@ void CourseApp::draw(int width, int height) {
         budget_->observe(ms);
         predict_budget_error(width, height);  // after the frame's time: it is not part of it
     }
+    if (max_error_ > 0.0) choose_for_error(width, height);  // for the next frame, after this one's time
     // The GPU times that have arrived (a few frames old), without waiting.
     timing_.add_gpu(timer.take(false));
 }
@@ -510,6 +543,34 @@ void CourseApp::predict_budget_error(int width, int height) {
     const render::FrameEdges f = render::measure_frame_edges(*renderer_, scene(), s, s, render::offscreen(width, height));
     renderer_->gpu_timer().enable(gpu_timing_);
     budget_error_ = render::predicted_error_pct(f, budget_->map_size(budget_->rung()));
+}
+
+void CourseApp::reset_error_target() {
+    error_ladder_.reset();
+    error_choice_.reset();
+    error_refusal_.clear();
+    error_age_ = 0;
+}
+
+void CourseApp::choose_for_error(int width, int height) {
+    if ((error_choice_ || !error_refusal_.empty()) && ++error_age_ < kErrorEvery) return;
+    error_age_ = 0;
+    const render::Settings base = exercise_settings();
+    // Map sizes only, as the exercises' budget: a page teaches its own technique.
+    if (!error_ladder_)
+        error_ladder_.emplace(1.0, base, renderer_->caps().depth_texture, renderer_->caps().max_target_size());
+    // The rung in use, to keep while it is still predicted within the target (hysteresis).
+    const int in_use = error_choice_ ? error_choice_->rung().rung : -1;
+    renderer_->gpu_timer().enable(false);  // the per-pass times are the window's frames'
+    const auto start = std::chrono::steady_clock::now();
+    std::optional<render::ErrorChoice> c =
+        render::choose_for_error(max_error_, base, *error_ladder_, *renderer_, scene(), render::offscreen(width, height), error_refusal_,
+                                 /*matched_edges=*/true);
+    renderer_->finish();
+    error_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    renderer_->gpu_timer().enable(gpu_timing_);
+    if (c && in_use >= 0) render::keep_rung(*c, in_use, max_error_, kErrorKeep);
+    error_choice_ = std::move(c);
 }
 
 void CourseApp::set_gpu_timing(bool on) {

@@ -29,6 +29,7 @@
 #include "plan/frames/area_light.h"
 #include "plan/plan.h"
 #include "plan/settings.h"
+#include "render/error_target.h"
 #include "render/lab.h"
 #include "render/renderer.h"
 #include "scenes/course_scene.h"
@@ -125,6 +126,20 @@ public:
     // the window's (render/frame_edges.h) when the choice changes and every kErrorEvery frames.
     double budget_predicted_error() const { return budget_ ? budget_error_ : -1.0; }
     static constexpr int kErrorEvery = 120;
+    // max-error=P (render's --max-error, render/error_target.h): the smallest map (encoding and
+    // filter with it) the model predicts within P % of the hard truth on these frames; 0 (the
+    // default) off. One of max-error and budget-ms: setting either on sets the other off. The
+    // choice is made after the first frame on a context (which draws with the settings alone),
+    // again every kErrorEvery frames as the frame moves, and after a change of option, exercise
+    // or context; each time the frame is drawn twice more offscreen, after its time is taken.
+    // Hysteresis: a rung still predicted within P is left for a cheaper one only when that one is
+    // predicted within kErrorKeep x P. Null while off, before the first choice, or where none can be
+    // made (error_target_refusal() says why).
+    const render::ErrorChoice* error_choice() const { return error_choice_ ? &*error_choice_ : nullptr; }
+    double max_error() const { return max_error_; }
+    const std::string& error_target_refusal() const { return error_refusal_; }
+    double error_choice_ms() const { return error_ms_; }  // the last choice's wall time (its two frames, plans)
+    static constexpr double kErrorKeep = 0.8;
     // GPU time per pass (gl/timer.h, where the context has EXT_disjoint_timer_query): off until
     // switched on; on, each frame's plans are timed as one frame (a second plan's passes named
     // "texture: camera", "map view: light-depth view"), read back without waiting a few frames later, and
@@ -248,6 +263,14 @@ private:
     int budget_error_rung_ = -1;  // the rung it was measured for
     long budget_error_age_ = 0;   // frames since
     void predict_budget_error(int width, int height);
+    double max_error_ = 0.0;
+    std::optional<render::BudgetController> error_ladder_;  // the rungs max-error chooses from
+    std::optional<render::ErrorChoice> error_choice_;
+    std::string error_refusal_;
+    long error_age_ = 0;  // frames since the choice
+    double error_ms_ = 0.0;
+    void reset_error_target();
+    void choose_for_error(int width, int height);
 };
 
 }  // namespace penumbra::examples

@@ -33,6 +33,7 @@
   const statusEl = document.getElementById('status');
   const msEl = document.getElementById('ms');
   const budgetRow = document.getElementById('budget-row'), budgetEl = document.getElementById('budget');
+  const errorRow = document.getElementById('error-row'), errorEl = document.getElementById('error-target');
   const gpuEl = document.getElementById('gpu');
   const noteEl = document.getElementById('note');
   const firstEl = document.getElementById('first-frame');
@@ -372,6 +373,10 @@
       ? '; predicted error ' + s.budget.predictedErrorPct.toFixed(3) + ' % of the truth' : '';
     const budget = s.budget ? s.budget.why + predicted : '–';
     if (budgetEl.textContent !== budget) budgetEl.textContent = budget;
+    // max-error: the map chosen for the error target and the model's prediction, or why none can be.
+    errorRow.hidden = !s.errorTarget;
+    const target = s.errorTarget ? s.errorTarget.why : '–';
+    if (errorEl.textContent !== target) errorEl.textContent = target;
     if (samplesRow) {
       samplesRow.hidden = !s.area;
       samplesEl.textContent = samplesText(s) || '–';

@@ -40,6 +40,9 @@ Exercise w09p2c() {
          {light, jump,
           {"budget-ms", "Speed", K::Select, {}, "Faster or more accurate",
            "the map size, encoding and filter chosen from the frames' times (the settings below set aside)"},
+          {"max-error", "Speed", K::Select, {}, "Error target",
+           "the smallest map predicted within this share of the ray-traced truth, from the frame's shadow edges "
+           "(the settings below set aside; one of this and the budget)"},
           {"encoding", "Shadow map", K::Select},
           {"filter", "Shadow map", K::Checkbox, {"pcf4x4", "hard"}, "4x4 PCF (percentage-closer filtering)",
            "16 lookups, texmapscale = 1/size apart: a softer edge"},

@@ -454,10 +454,14 @@ std::vector<Option<Options>> make_table() {
     OptionInfo max_error = make_option_info("max-error", P::Job, T::Number,
                                             "0: off; else the least work predicted to keep the frame within P % of the "
                                             "hard truth (map size, or shadow volumes), from its shadow edges and the "
-                                            "texels a pixel each map gives them (render, plan, bench)",
+                                            "texels a pixel each map gives them (render, plan, bench; the desktop app and the pages choose again "
+                                            "as the frame moves, among map sizes)",
                                             "Error target (%)");
     max_error.min = 0.0;
     max_error.max = kMaxErrorPct;
+    // The pages' "error target" select: the bench's targets (docs/budget.md).
+    max_error.presets = {{"0", "off: the settings below"}, {"0.2", "0.2 %: least work"}, {"0.1", "0.1 %"},
+                         {"0.05", "0.05 %"}, {"0.025", "0.025 %: most accurate"}};
     add(max_error, [](Options& o, std::string_view v) { o.job.max_error = number_of(v); },
         [](const Options& o) { return format_number(o.job.max_error); });
     return t;

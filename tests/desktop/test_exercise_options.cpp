@@ -18,7 +18,7 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
     EXPECT_EQ(CourseApp("w09p2a").query(), "light=on&jump=on&projection=persp");
     EXPECT_EQ(CourseApp("w09p2b").query(), "light=on&jump=on&fbo-view=light&rtt=fbo&map-size=1024");
     EXPECT_EQ(CourseApp("w09p2c").query(),
-              "light=on&jump=on&budget-ms=0&encoding=rgba&filter=hard&bias=auto&map-faces=auto&precision=highp&map-size=1024&"
+              "light=on&jump=on&budget-ms=0&max-error=0&encoding=rgba&filter=hard&bias=auto&map-faces=auto&precision=highp&map-size=1024&"
               "aov=color&map-view=on");
     EXPECT_EQ(CourseApp("volumes").query(),
               "light=on&jump=on&volume-method=auto&show-volumes=off&eye=scene&aov=color");
@@ -446,8 +446,8 @@ TEST(ExerciseList, EveryControlNamesAnOptionAndOffersValidValues) {
             else if (const auto* r = render::find_option(render::option_table(), c.option)) info = &r->info;
             ASSERT_NE(info, nullptr) << x.name << ": " << c.option;
             // A page sets no job option but the eye (the exercises place it: CourseApp::set_option)
-            // and the time budget.
-            if (c.option != "eye" && c.option != "budget-ms") {
+            // and the time budget or the error target.
+            if (c.option != "eye" && c.option != "budget-ms" && c.option != "max-error") {
                 EXPECT_EQ(info->part, render::OptionPart::Technique) << c.option << ": a page sets no job option";
             }
             for (std::string_view v : c.values) EXPECT_EQ(render::check_value(*info, v), "") << c.option << "=" << v;

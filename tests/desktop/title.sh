@@ -33,7 +33,7 @@ fail=0
 printed=$(sed -n 's/^title: //p' "$log")
 echo "printed titles:"; sed 's/^/  /' <<<"$printed"
 echo "window titles (xwininfo):"; sed 's/^/  /' "$titles"
-base="W09P2c | light=on jump=on budget-ms=0 encoding=ENC filter=FILTER bias=auto map-faces=auto precision=highp map-size=1024 aov=color map-view=on time=0.6 | "
+base="W09P2c | light=on jump=on budget-ms=0 max-error=0 encoding=ENC filter=FILTER bias=auto map-faces=auto precision=highp map-size=1024 aov=color map-view=on time=0.6 | "
 expect_line() {  # expect_line N ENC FILTER: the Nth title printed
   local want=${base/ENC/$2}
   want=${want/FILTER/$3}
