@@ -265,6 +265,17 @@ struct RayTracer::Impl {
         return ray.tfar >= 0.0f;  // set to -inf on a hit
     }
 
+    // unblocked() for a shadow ray leaving the surface at `p` (normal `n`, n . dir > 0). The ray
+    // starts off the surface along its own line, `epsilon / n.dir` on (at most 10 x epsilon, where
+    // the light grazes), so that it does not hit its own triangle: moved along the normal instead,
+    // it would run beside the true ray, and every shadow edge would move by epsilon x cot(the
+    // light's elevation), a third of a pixel on bench_hard's ground, where shadow volumes then
+    // disagreed with the truth on 0.44 % of the frame (0.003 % with the ray on its line).
+    bool unblocked_from_surface(const glm::vec3& p, const glm::vec3& n, const glm::vec3& dir, float tfar) const {
+        const float along = epsilon / std::max(glm::dot(n, dir), 0.1f);
+        return unblocked(p + along * dir, dir, std::max(tfar - along, 0.0f));
+    }
+
     // Direction to the light from p and how far the shadow ray runs.
     void towards_light(const glm::vec3& p, glm::vec3& dir, float& tfar) const {
         if (light.type == scene::LightType::Directional) {
@@ -278,7 +289,7 @@ struct RayTracer::Impl {
         }
     }
 
-    float soft_visibility(const glm::vec3& origin, const glm::vec3& n, const glm::vec3& l, int samples, float radius,
+    float soft_visibility(const glm::vec3& p, const glm::vec3& n, const glm::vec3& l, int samples, float radius,
                           std::uint32_t seed) const {
         glm::vec3 a, b;
         orthonormal_basis(l, a, b);
@@ -299,7 +310,7 @@ struct RayTracer::Impl {
                 tfar = kInf;
             } else {
                 const glm::vec3 q = light.position + radius * (d.x * a + d.y * b);
-                const glm::vec3 to = q - origin;
+                const glm::vec3 to = q - p;
                 const float dist = glm::length(to);
                 if (!(dist > 0.0f)) continue;
                 dir = to / dist;
@@ -307,7 +318,7 @@ struct RayTracer::Impl {
             }
             // Light from below the surface's horizon does not reach it.
             if (glm::dot(dir, n) <= 0.0f) continue;
-            open += unblocked(origin, dir, tfar) ? 1 : 0;
+            open += unblocked_from_surface(p, n, dir, tfar) ? 1 : 0;
         }
         return static_cast<float>(open) / static_cast<float>(samples);
     }
@@ -404,10 +415,9 @@ TruthImage RayTracer::render(const TruthOptions& opt) const {
             if (im.light.type == scene::LightType::Spot &&
                 !(glm::dot(-l, glm::normalize(im.light.direction)) > std::cos(im.light.spot_outer_cone)))
                 outside_cone[i] = 1;
-            const glm::vec3 start = p + im.epsilon * ng;
-            out.lit[i] = im.unblocked(start, l, tfar) ? 1 : 0;
+            out.lit[i] = im.unblocked_from_surface(p, ng, l, tfar) ? 1 : 0;
             if (soft)
-                out.soft[i] = im.soft_visibility(start, ng, l, opt.soft_samples, opt.light_radius,
+                out.soft[i] = im.soft_visibility(p, ng, l, opt.soft_samples, opt.light_radius,
                                                  static_cast<std::uint32_t>(i));
         }
     };

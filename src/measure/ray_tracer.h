@@ -10,10 +10,13 @@
 //    as the renderer's camera pass culls them (counter-clockwise triangles are front faces).
 //  - geometric normal: the triangle's face normal in world space (from its world-space vertices),
 //    turned towards the camera.
-//  - shadow ray: from the hit point moved along that normal by epsilon = 1e-4 x the diagonal of the
-//    scene's bounds, towards the point light's position (spot lights alike) or against a
-//    directional light's direction; any shadow-casting triangle, front or back, blocks it (the
-//    renderer's shadow pass does not cull either).
+//  - shadow ray: from the hit point towards the point light's position (spot lights alike) or
+//    against a directional light's direction, starting on its own line epsilon / dot(normal, ray)
+//    from the hit point (at most 10 x epsilon), epsilon = 1e-4 x the diagonal of the scene's
+//    bounds: off its own triangle, and on the exact line to the light, so that no shadow edge
+//    moves (a start moved along the normal would move each by epsilon x cot(the light's
+//    elevation)); any shadow-casting triangle, front or back, blocks it (the renderer's shadow
+//    pass does not cull either). The area light's rays alike, each on its own line.
 //  - pixel classes, the first that applies wins:
 //      Background  no surface within the camera's depth range;
 //      Silhouette  a 4-neighbour is discontinuous with the pixel (see below): a one-pixel band on
@@ -102,7 +105,7 @@ public:
 
     TruthImage render(const TruthOptions& options) const;
 
-    // The offset along the normal for shadow-ray origins (1e-4 x the scene's diagonal).
+    // The offset off the surface for shadow-ray origins (1e-4 x the scene's diagonal).
     float epsilon() const;
 
 private:

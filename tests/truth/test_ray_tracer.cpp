@@ -2,7 +2,8 @@
 // straight down (a disc of the sphere's radius), the same under a point light overhead (the
 // disc grows by the tangent cone), a box resting on the plane under a tilted directional light
 // (the shadow is the convex hull of the box's corners projected along the light), an area light's
-// umbra and fully-lit region, and the validity mask: background, the silhouette band, the faces
+// umbra and fully-lit region, a grazing light's shadow edges to a seventh of a pixel, and the
+// validity mask: background, the silhouette band, the faces
 // turned from the light, back faces culled as the renderer culls them.
 #include <gtest/gtest.h>
 
@@ -257,6 +258,43 @@ TEST(Truth, BoxUnderTiltedDirectionalLight) {
     EXPECT_GT(lit_faces, 200);
     EXPECT_GT(away, 200) << "the camera sees the +x and +z faces, which face away from this light";
     expect_band_around_objects(t);
+}
+
+// A bar's shadow under light 8 degrees over the horizon, checked to 2 mm of its edges where a
+// pixel spans about 14: the shadow ray must leave the surface on its own line. Started off the
+// surface along the normal instead (by epsilon, 1.4 mm here), it runs beside the true ray and
+// every edge moves by epsilon x cot(8 degrees), 10 mm: 229 of these pixels came out wrong.
+TEST(Truth, AGrazingLightsShadowEdgesStayWhereTheGeometryPutsThem) {
+    scene::Scene s;
+    s.meshes = {scene::make_quad(kPlane), scene::make_box(glm::vec3(0.05f, 0.05f, 2.0f))};
+    s.materials.resize(1);
+    scene::Object plane;
+    plane.name = "ground";
+    plane.mesh = 0;
+    scene::Object bar;
+    bar.name = "bar";
+    bar.mesh = 1;
+    bar.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.5f, 0.0f));
+    s.objects = {plane, bar};
+    s.light.type = scene::LightType::Directional;
+    const float elevation = glm::radians(8.0f);
+    s.light.direction = glm::vec3(std::cos(elevation), -std::sin(elevation), 0.0f);
+    s.camera.view = glm::lookAt(glm::vec3(3.5f, 3.0f, 1.0f), glm::vec3(3.5f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    s.camera.yfov = glm::radians(50.0f);
+    s.camera.znear = 0.5f;
+    s.camera.zfar = 40.0f;
+    const measure::TruthImage t = trace(s);
+
+    // A point of the plane is in the shadow when the line back towards the light crosses the bar's
+    // cross-section [-0.05, 0.05] x [0.45, 0.55]: x in [-0.05 + 0.45 c, 0.05 + 0.55 c], c = cot.
+    const double c = static_cast<double>(s.light.direction.x) / -static_cast<double>(s.light.direction.y);
+    const double a = -0.05 + 0.45 * c, b = 0.05 + 0.55 * c;
+    expect_plane_shadow(
+        t, [&](const glm::vec3& p) { return p.x > a && p.x < b && std::fabs(p.z) < 2.0f; },
+        [&](const glm::vec3& p) {
+            return static_cast<float>(std::min({std::fabs(p.x - a), std::fabs(p.x - b), std::fabs(std::fabs(p.z) - 2.0)}));
+        },
+        0.002f, 2000);
 }
 
 TEST(Truth, AreaLightUmbraAndLitRegion) {
