@@ -8,6 +8,7 @@ set(PENUMBRA_EXERCISE_LIST_SOURCES ${CMAKE_SOURCE_DIR}/examples/exercise_list.cp
     ${CMAKE_SOURCE_DIR}/examples/fly_camera.cpp ${PENUMBRA_EXERCISE_MODULES})
 set(PENUMBRA_EXERCISE_SOURCES
     ${CMAKE_SOURCE_DIR}/examples/exercises.cpp
+    ${CMAKE_SOURCE_DIR}/examples/exercise_budget.cpp
     ${CMAKE_SOURCE_DIR}/examples/exercise_keys.cpp
     ${CMAKE_SOURCE_DIR}/examples/frame_timing.cpp
     ${PENUMBRA_EXERCISE_LIST_SOURCES})
