@@ -68,7 +68,7 @@ std::optional<ErrorChoice> choose_for_error(double max_pct, const Settings& s, c
     }
     // Into the model's cost order (shadow volumes fall among the maps), stably. An insertion sort:
     // a ladder has at most 7 rungs, and std::stable_sort's merges of Settings-sized records cost
-    // every page's module about 3 KB gzipped.
+    // every page's module about 1 KB gzipped.
     for (size_t i = 1; i < c.rungs.size(); ++i)
         for (size_t j = i; j > 0 && c.rungs[j].cost < c.rungs[j - 1].cost; --j) std::swap(c.rungs[j], c.rungs[j - 1]);
 

@@ -208,9 +208,14 @@ float polygon_distance(const std::vector<glm::vec2>& poly, const glm::vec2& q) {
     return inside < 0.0f ? -best : best;
 }
 
-TEST(Truth, BoxUnderTiltedDirectionalLight) {
+namespace {
+
+// A box of half-extent `half` placed by `world` over the plane, under a directional light along
+// `direction`, seen from `eye` looking at `target`.
+scene::Scene box_over_plane(const glm::vec3& half, const glm::mat4& world, const glm::vec3& direction, const glm::vec3& eye,
+                            const glm::vec3& target) {
     scene::Scene s;
-    s.meshes = {scene::make_quad(kPlane), scene::make_box(glm::vec3(0.5f, 0.6f, 0.4f))};
+    s.meshes = {scene::make_quad(kPlane), scene::make_box(half)};
     s.materials.resize(1);
     scene::Object plane;
     plane.name = "ground";
@@ -218,24 +223,33 @@ TEST(Truth, BoxUnderTiltedDirectionalLight) {
     scene::Object box;
     box.name = "box";
     box.mesh = 1;
-    // Resting on the plane, turned 30 degrees about y.
-    box.world = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, 0.6f, -0.2f)), glm::radians(30.0f),
-                            glm::vec3(0.0f, 1.0f, 0.0f));
+    box.world = world;
     s.objects = {plane, box};
     s.light.type = scene::LightType::Directional;
-    const glm::vec3 d = glm::normalize(glm::vec3(0.7f, -1.0f, 0.4f));
-    s.light.direction = d;
-    s.camera.view = glm::lookAt(glm::vec3(2.5f, 4.5f, 6.5f), glm::vec3(0.5f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    s.light.direction = direction;
+    s.camera.view = glm::lookAt(eye, target, glm::vec3(0.0f, 1.0f, 0.0f));
     s.camera.yfov = glm::radians(50.0f);
     s.camera.znear = 0.5f;
     s.camera.zfar = 40.0f;
+    return s;
+}
+
+}  // namespace
+
+TEST(Truth, BoxUnderTiltedDirectionalLight) {
+    // Resting on the plane, turned 30 degrees about y.
+    const glm::mat4 world = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, 0.6f, -0.2f)), glm::radians(30.0f),
+                                        glm::vec3(0.0f, 1.0f, 0.0f));
+    const glm::vec3 d = glm::normalize(glm::vec3(0.7f, -1.0f, 0.4f));
+    const scene::Scene s =
+        box_over_plane(glm::vec3(0.5f, 0.6f, 0.4f), world, d, glm::vec3(2.5f, 4.5f, 6.5f), glm::vec3(0.5f, 0.0f, 0.0f));
     const measure::TruthImage t = trace(s);
 
     // The shadow polygon: every corner of the box slid along the light onto y = 0.
     std::vector<glm::vec2> projected;
     for (int i = 0; i < 8; ++i) {
         const glm::vec3 local((i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.6f : -0.6f, (i & 4) ? 0.4f : -0.4f);
-        const glm::vec3 w(box.world * glm::vec4(local, 1.0f));
+        const glm::vec3 w(world * glm::vec4(local, 1.0f));
         const glm::vec3 p = w - d * (w.y / d.y);
         projected.emplace_back(p.x, p.z);
     }
@@ -265,24 +279,10 @@ TEST(Truth, BoxUnderTiltedDirectionalLight) {
 // surface along the normal instead (by epsilon, 1.4 mm here), it runs beside the true ray and
 // every edge moves by epsilon x cot(8 degrees), 10 mm: 229 of these pixels came out wrong.
 TEST(Truth, AGrazingLightsShadowEdgesStayWhereTheGeometryPutsThem) {
-    scene::Scene s;
-    s.meshes = {scene::make_quad(kPlane), scene::make_box(glm::vec3(0.05f, 0.05f, 2.0f))};
-    s.materials.resize(1);
-    scene::Object plane;
-    plane.name = "ground";
-    plane.mesh = 0;
-    scene::Object bar;
-    bar.name = "bar";
-    bar.mesh = 1;
-    bar.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.5f, 0.0f));
-    s.objects = {plane, bar};
-    s.light.type = scene::LightType::Directional;
     const float elevation = glm::radians(8.0f);
-    s.light.direction = glm::vec3(std::cos(elevation), -std::sin(elevation), 0.0f);
-    s.camera.view = glm::lookAt(glm::vec3(3.5f, 3.0f, 1.0f), glm::vec3(3.5f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-    s.camera.yfov = glm::radians(50.0f);
-    s.camera.znear = 0.5f;
-    s.camera.zfar = 40.0f;
+    const scene::Scene s = box_over_plane(glm::vec3(0.05f, 0.05f, 2.0f), glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.5f, 0.0f)),
+                                          glm::vec3(std::cos(elevation), -std::sin(elevation), 0.0f),
+                                          glm::vec3(3.5f, 3.0f, 1.0f), glm::vec3(3.5f, 0.0f, 0.0f));
     const measure::TruthImage t = trace(s);
 
     // A point of the plane is in the shadow when the line back towards the light crosses the bar's
