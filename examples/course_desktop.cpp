@@ -395,7 +395,9 @@ int main(int argc, char** argv) {
         if (args.verbose)
             for (const render::ErrorRung& g : c->rungs)
                 std::printf("max-error: %s predicted %.3f %%\n", render::rung_label(g).c_str(), g.predicted_pct);
-        if (args.verbose) std::printf("max-error: the last choice took %.1f ms (two frames offscreen, three plans)\n", app.error_choice_ms());
+        if (args.verbose)
+            std::printf("max-error: %ld choice%s, the last took %.1f ms (two frames offscreen, three plans)\n",
+                        app.error_choices(), app.error_choices() == 1 ? "" : "s", app.error_choice_ms());
         std::printf("%s\n", c->why.c_str());
     } else if (app.max_error() > 0.0 && !app.error_target_refusal().empty()) {
         std::printf("%s\n", app.error_target_refusal().c_str());

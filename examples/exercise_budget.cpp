@@ -11,9 +11,21 @@
 
 namespace penumbra::examples {
 
+CourseApp::EdgesFrame CourseApp::edges_frame(int width, int height) const {
+    EdgesFrame f;
+    f.light = clock_.light;
+    f.jump = clock_.jump;
+    f.width = width;
+    f.height = height;
+    f.camera = camera();
+    return f;
+}
+
 void CourseApp::predict_budget_error(int width, int height) {
-    if (budget_->rung() == budget_error_rung_ && ++budget_error_age_ < kErrorEvery) return;
+    const EdgesFrame frame = edges_frame(width, height);
+    if (budget_->rung() == budget_error_rung_ && (++budget_error_age_ < kErrorEvery || frame == budget_error_frame_)) return;
     budget_error_rung_ = budget_->rung();
+    budget_error_frame_ = frame;
     budget_error_age_ = 0;
     const render::Settings s = frame_settings();
     budget_error_ = -1.0;
@@ -32,11 +44,16 @@ void CourseApp::reset_error_target() {
     error_choice_.reset();
     error_refusal_.clear();
     error_age_ = 0;
+    error_choices_ = 0;
 }
 
 void CourseApp::choose_for_error(int width, int height) {
-    if ((error_choice_ || !error_refusal_.empty()) && ++error_age_ < kErrorEvery) return;
+    // Two frames drawn offscreen for a still frame would choose what they chose before.
+    const EdgesFrame frame = edges_frame(width, height);
+    if ((error_choice_ || !error_refusal_.empty()) && (++error_age_ < kErrorEvery || frame == error_frame_)) return;
     error_age_ = 0;
+    error_frame_ = frame;
+    ++error_choices_;
     const render::Settings base = exercise_settings();
     // Map sizes only, as the exercises' budget: a page teaches its own technique.
     if (!error_ladder_)

@@ -130,8 +130,10 @@ public:
     // filter with it) the model predicts within P % of the hard truth on these frames; 0 (the
     // default) off. One of max-error and budget-ms: setting either on sets the other off. The
     // choice is made after the first frame on a context (which draws with the settings alone),
-    // again every kErrorEvery frames as the frame moves, and after a change of option, exercise
-    // or context; each time the frame is drawn twice more offscreen, after its time is taken.
+    // again every kErrorEvery frames while the frame moves (not while it is still: paused, or its
+    // motions off, and the camera and window as they were), and after a change of option,
+    // exercise or context; each time the frame is drawn twice more offscreen, after its time is
+    // taken.
     // Hysteresis: a rung still predicted within P is left for a cheaper one only when that one is
     // predicted within kErrorKeep x P. Null while off, before the first choice, or where none can be
     // made (error_target_refusal() says why).
@@ -139,6 +141,7 @@ public:
     double max_error() const { return max_error_; }
     const std::string& error_target_refusal() const { return error_refusal_; }
     double error_choice_ms() const { return error_ms_; }  // the last choice's wall time (its two frames, plans)
+    long error_choices() const { return error_choices_; }  // choices made since max-error was set (-v)
     static constexpr double kErrorKeep = 0.8;
     // GPU time per pass (gl/timer.h, where the context has EXT_disjoint_timer_query): off until
     // switched on; on, each frame's plans are timed as one frame (a second plan's passes named
@@ -262,12 +265,27 @@ private:
     double budget_error_ = -1.0;  // budget_predicted_error()
     int budget_error_rung_ = -1;  // the rung it was measured for
     long budget_error_age_ = 0;   // frames since
+    // What a frame's shadow edges depend on besides the settings: the clocks, the fly camera and
+    // the window. A prediction is made again only when it differs (a still frame's is the same).
+    struct EdgesFrame {
+        double light = -1.0, jump = -1.0;
+        int width = 0, height = 0;
+        FlyCamera camera;
+        bool operator==(const EdgesFrame& o) const {
+            return light == o.light && jump == o.jump && width == o.width && height == o.height && camera.eye == o.camera.eye &&
+                   camera.yaw == o.camera.yaw && camera.pitch == o.camera.pitch;
+        }
+    };
+    EdgesFrame edges_frame(int width, int height) const;
+    EdgesFrame budget_error_frame_;  // the frame it was measured on
     void predict_budget_error(int width, int height);
     double max_error_ = 0.0;
     std::optional<render::BudgetController> error_ladder_;  // the rungs max-error chooses from
     std::optional<render::ErrorChoice> error_choice_;
     std::string error_refusal_;
     long error_age_ = 0;  // frames since the choice
+    EdgesFrame error_frame_;  // the frame it was made on
+    long error_choices_ = 0;
     double error_ms_ = 0.0;
     void reset_error_target();
     void choose_for_error(int width, int height);

@@ -2,7 +2,8 @@
 # desktop.error-target: max-error in a real window (Xvfb): the frames' map is the choice the model
 # predicts within the target, the title and the URL query say so and the run ends with the line; a
 # tighter target chooses a larger map (the control: the target changes what is drawn); the
-# exercise's own map without one; refused where the exercise's technique has no map (exit status 2).
+# exercise's own map without one; a still frame is chosen for once, a moving one again every 120
+# frames (the control); refused where the exercise's technique has no map (exit status 2).
 # What the model predicts is not checked here (the CLI's cli.max_error and the bench compare it
 # with the truth); only that the choice follows it.
 # usage: error_target.sh PENUMBRA_DESKTOP OUT_DIR
@@ -35,6 +36,14 @@ if [ "$rungs" -gt 1 ]; then
   [ -n "$loose" ] && [ -n "$tight" ] && [ "$tight" -gt "$loose" ] && echo "ok 0.025 % chose map $tight over 0.2 %'s $loose" ||
     { echo "FAIL the tighter target's map '$tight' is not over '$loose'"; fail=1; }
 fi
+# A still frame (time=T pauses the clocks) is chosen for once: its two offscreen frames would give
+# the same choice again. The control: the same frames moving are chosen for again every 120.
+choices() { sed -n 's/^max-error: \([0-9]*\) choices\{0,1\}, the last took .*/\1/p' "$out/$1.log"; }
+run still --exercise w09p2c --time 0.6 --frames 250 --max-error 0.1 || { echo "FAIL still: exit $?"; fail=1; }
+run moving --exercise w09p2c --frames 250 --max-error 0.1 || { echo "FAIL moving: exit $?"; fail=1; }
+still=$(choices still) moving=$(choices moving)
+[ "$still" = 1 ] && [ -n "$moving" ] && [ "$moving" -ge 2 ] && echo "ok 250 frames: still, $still choice; moving, $moving" ||
+  { echo "FAIL choices: still '$still', moving '$moving'"; fail=1; }
 # Without a target: no choice, the exercise's own map.
 run none --exercise w09p2c --time 0.6 --frames 5 || { echo "FAIL none: exit $?"; fail=1; }
 ! grep -q '^max-error\|| max-error:' "$out/none.log" && grep -q 'max-error=0 ' "$out/none.log" &&
