@@ -21,10 +21,10 @@ double pixels_per_texel(int wanted, int size) {
     return static_cast<double>(wanted) / (static_cast<double>(shadow::kTexelsPerPixel) * size);
 }
 
-double predicted_error_pct(long edges, long pixels, double texel_pixels) {
+double predicted_error_pct(long edges, long pixels, bool map, double texel_pixels) {
     if (pixels <= 0 || edges <= 0) return 0.0;
-    return 100.0 * static_cast<double>(edges) / static_cast<double>(pixels) *
-           (ErrorModel::kEdge + ErrorModel::kPerTexel * texel_pixels);
+    const double per_edge = map ? ErrorModel::kMapEdge + ErrorModel::kPerTexel * texel_pixels : ErrorModel::kExactEdge;
+    return 100.0 * static_cast<double>(edges) / static_cast<double>(pixels) * per_edge;
 }
 
 }  // namespace penumbra::render

@@ -38,7 +38,7 @@ FrameEdges measure_frame_edges(Renderer& r, const scene::Scene& scene, const Set
 
 double predicted_error_pct(const FrameEdges& f, int map_size) {
     if (map_size > 0 && f.wanted < 0) return -1.0;
-    return predicted_error_pct(f.edges, f.covered, pixels_per_texel(f.wanted, map_size));
+    return predicted_error_pct(f.edges, f.covered, map_size > 0, pixels_per_texel(f.wanted, map_size));
 }
 
 }  // namespace penumbra::render

@@ -45,13 +45,18 @@ TEST(ErrorModel, TexelsSpanWhatTheResolutionMatchSays) {
 }
 
 TEST(ErrorModel, ThePredictionGrowsWithEdgesAndTexels) {
-    const double exact = render::predicted_error_pct(1000, 100000, 0.0);
-    EXPECT_DOUBLE_EQ(exact, 100.0 * 0.01 * render::ErrorModel::kEdge);
-    EXPECT_GT(render::predicted_error_pct(1000, 100000, 1.0), exact);
-    EXPECT_GT(render::predicted_error_pct(1000, 100000, 2.0), render::predicted_error_pct(1000, 100000, 1.0));
-    EXPECT_DOUBLE_EQ(render::predicted_error_pct(2000, 100000, 1.0), 2.0 * render::predicted_error_pct(1000, 100000, 1.0));
-    EXPECT_DOUBLE_EQ(render::predicted_error_pct(0, 100000, 4.0), 0.0);  // no shadow edge: nothing to get wrong
-    EXPECT_DOUBLE_EQ(render::predicted_error_pct(10, 0, 4.0), 0.0);      // nothing covered
+    const double exact = render::predicted_error_pct(1000, 100000, false, 0.0);
+    EXPECT_DOUBLE_EQ(exact, 100.0 * 0.01 * render::ErrorModel::kExactEdge);
+    // However fine, a map is predicted less accurate than shadow volumes: its bias and its
+    // rasterised silhouette move an edge where volumes do not.
+    const double finest = render::predicted_error_pct(1000, 100000, true, 0.0);
+    EXPECT_DOUBLE_EQ(finest, 100.0 * 0.01 * render::ErrorModel::kMapEdge);
+    EXPECT_GT(finest, exact);
+    EXPECT_GT(render::predicted_error_pct(1000, 100000, true, 1.0), finest);
+    EXPECT_GT(render::predicted_error_pct(1000, 100000, true, 2.0), render::predicted_error_pct(1000, 100000, true, 1.0));
+    EXPECT_DOUBLE_EQ(render::predicted_error_pct(2000, 100000, true, 1.0), 2.0 * render::predicted_error_pct(1000, 100000, true, 1.0));
+    EXPECT_DOUBLE_EQ(render::predicted_error_pct(0, 100000, true, 4.0), 0.0);  // no shadow edge: nothing to get wrong
+    EXPECT_DOUBLE_EQ(render::predicted_error_pct(10, 0, true, 4.0), 0.0);      // nothing covered
 }
 
 }  // namespace

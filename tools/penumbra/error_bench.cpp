@@ -123,8 +123,8 @@ std::string error_table(const Sweep& w) {
     const auto map_of = [](const Row& r) { return r.map ? std::to_string(r.map) : std::string("-"); };
     o << "\n## The error target (--max-error)\n\n"
       << "`--max-error P` on each scene frame at " << w.width << "x" << w.height << ": the rung the model (plan/error_model.h: "
-      << "the frame's shadow-edge pixels times " << fixed(render::ErrorModel::kEdge, 3) << " + " << fixed(render::ErrorModel::kPerTexel, 3)
-      << " x the pixels a texel spans) predicts the cheapest within P, its predicted and measured error against the hard truth and "
+      << "the frame's shadow-edge pixels times " << fixed(render::ErrorModel::kMapEdge, 3) << " + " << fixed(render::ErrorModel::kPerTexel, 3)
+      << " x the pixels a texel spans with a map, " << fixed(render::ErrorModel::kExactEdge, 3) << " with shadow volumes) predicts the cheapest within P, its predicted and measured error against the hard truth and "
          "its ms/frame (moving, median of its frames), beside the cheapest rung, by measured time, whose measured error is "
          "within P.\n\n"
       << "| scene | target % | chosen | map | predicted % | measured % | ms/frame | cheapest measured within | its ms | its error % |\n"
