@@ -91,7 +91,7 @@ bool Settings::operator==(const Settings& o) const {
 
 std::string lab_refusal(const Settings& s) {
     const std::string lab = "the shader lab ";
-    if (s.technique != Technique::ShadowMap) return lab + "runs on the shadow map (--technique shadow-map)";
+    if (s.technique != Technique::ShadowMap) return lab + "runs on the shadow map (--technique shadowmap)";
     if (s.encoding == shadow::Encoding::DepthTex)
         return lab + "packs the depth into an RGBA8 map: --encoding r8 or rgba, not depthtex";
     if (s.filter == shadow::Filter::PCSS) return lab + "runs the sheet's filters: --filter hard, pcf2x2 or pcf4x4";

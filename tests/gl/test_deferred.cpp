@@ -49,8 +49,9 @@ protected:
 };
 
 void save(const std::string& name, const Image& img) {
-    std::filesystem::create_directories("test-output/deferred");
-    measure::write_png("test-output/deferred/" + name + ".png", measure::from_rgba(img, kW, kH, 4));
+    const std::filesystem::path dir = std::filesystem::path(test::test_out_dir()) / "deferred";
+    std::filesystem::create_directories(dir);
+    measure::write_png((dir / (name + ".png")).string(), measure::from_rgba(img, kW, kH, 4));
 }
 
 // The largest RGB difference over the pixels not excluded.

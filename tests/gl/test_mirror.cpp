@@ -33,10 +33,11 @@ std::vector<std::uint8_t> render(render::Renderer& rr, const scene::Scene& sc, c
     return rr.read_image("camera");
 }
 
-// Written under test-output/mirror/ when a comparison fails, to look at.
+// Written under the tests' output folder (mirror/) when a comparison fails, to look at.
 void save(const std::string& name, const Image& img) {
-    std::filesystem::create_directories("test-output/mirror");
-    measure::write_png("test-output/mirror/" + name + ".png", measure::from_rgba(img, kW, kH, 4));
+    const std::filesystem::path dir = std::filesystem::path(test::test_out_dir()) / "mirror";
+    std::filesystem::create_directories(dir);
+    measure::write_png((dir / (name + ".png")).string(), measure::from_rgba(img, kW, kH, 4));
 }
 
 // Within 1.5 levels of the background (render::kBackground) in each channel.
