@@ -66,14 +66,16 @@ std::optional<ErrorChoice> choose_for_error(double max_pct, const Settings& s, c
         g.predicted_pct = predicted_error_pct(f, g.map);
         c.rungs.push_back(g);
     }
-    // Into the model's cost order (shadow volumes fall among the maps), stably. An insertion sort:
-    // a ladder has at most 7 rungs, and std::stable_sort's merges of Settings-sized records cost
-    // every page's module about 1 KB gzipped.
-    for (size_t i = 1; i < c.rungs.size(); ++i)
-        for (size_t j = i; j > 0 && c.rungs[j].cost < c.rungs[j - 1].cost; --j) std::swap(c.rungs[j], c.rungs[j - 1]);
-
+    order_by_cost(c);  // the model's (shadow volumes fall among the maps)
     pick_rung(c, max_pct);
     return c;
+}
+
+void order_by_cost(ErrorChoice& c) {
+    // An insertion sort: a ladder has at most 7 rungs, and std::stable_sort's merges of
+    // Settings-sized records cost every page's module about 1 KB gzipped.
+    for (size_t i = 1; i < c.rungs.size(); ++i)
+        for (size_t j = i; j > 0 && c.rungs[j].cost < c.rungs[j - 1].cost; --j) std::swap(c.rungs[j], c.rungs[j - 1]);
 }
 
 void pick_rung(ErrorChoice& c, double max_pct) {

@@ -28,6 +28,7 @@ struct ErrorRung {
     double cost = 0.0;          // the bench's model: over the unshadowed frame (BudgetController::model_cost)
     double texel_pixels = 0.0;  // pixels a texel spans (0: volumes)
     double predicted_pct = 0.0;
+    double ms = -1.0;           // a frame's wall time where it was measured on this frame (the CLI's volumes), else -1
 };
 
 struct ErrorChoice {
@@ -53,6 +54,9 @@ std::string max_error_refusal(const Settings& s);
 std::optional<ErrorChoice> choose_for_error(double max_pct, const Settings& s, const BudgetController& ladder, Renderer& r,
                                             const scene::Scene& scene, const FrameInputs& in, std::string& refusal,
                                             bool matched_edges = false);
+
+// Puts c.rungs in the order of their cost, stably (after a cost was changed: measured).
+void order_by_cost(ErrorChoice& c);
 
 // Sets c.chosen and c.why for `max_pct` from the rungs' predictions (the bench asks several).
 void pick_rung(ErrorChoice& c, double max_pct);

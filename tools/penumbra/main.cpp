@@ -106,9 +106,12 @@ void print_budget(const render::BudgetController& b, bool verbose) {
 // --max-error: what was chosen and why (stdout); -v: every rung's prediction (stderr).
 void print_error_choice(const tools::ErrorChoice& c, bool verbose) {
     if (verbose)
-        for (const tools::ErrorRung& g : c.rungs)
-            std::fprintf(stderr, "max-error: %-15s predicted %.3f %% (model cost %.2fx the unshadowed frame)\n",
-                         g.map ? ("map " + std::to_string(g.map)).c_str() : "shadow volumes", g.predicted_pct, g.cost);
+        for (const tools::ErrorRung& g : c.rungs) {
+            char measured[64] = "";
+            if (g.ms >= 0.0) std::snprintf(measured, sizeof measured, "; %.2f ms on this frame", g.ms);
+            std::fprintf(stderr, "max-error: %-15s predicted %.3f %% (cost %.2fx the unshadowed frame%s)\n",
+                         g.map ? ("map " + std::to_string(g.map)).c_str() : "shadow volumes", g.predicted_pct, g.cost, measured);
+        }
     std::printf("%s\n", c.why.c_str());
 }
 
