@@ -15,9 +15,9 @@ namespace {
 constexpr int kTimedFrames = 3;
 constexpr double kLongFrameMs = 250.0;
 
-// The model's cost order is the course's, where shadow volumes cost 3.7x the unshadowed frame and
-// a 2048 map 3.2x; a scene of few, simple casters draws them far cheaper (wide_cone.gltf at 512x512:
-// 1.78 ms against 9.97 ms for a 2048 map). So on this frame the volumes and the map whose model
+// The model's cost order is the course's, where shadow volumes cost about as much as a 2048 map; a
+// scene of few, simple casters draws them far cheaper, one of many detailed casters far dearer
+// (docs/budget.md has the figures). So on this frame the volumes and the map whose model
 // cost is nearest theirs are timed, and the volumes' cost is that map's times the ratio of the
 // times; the maps keep the model's ratios among themselves. Each timed frame is planned without
 // a previous plan, so nothing is kept from the frame before (the map drawn, the volumes' silhouette
@@ -40,8 +40,8 @@ void measure_volumes_cost(ErrorChoice& c, render::Renderer& r, const scene::Scen
             r.execute(scene, render::plan(scene, s, r.caps(), in, nullptr));
             r.finish();
             const double t = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-            // A frame this long is the scene's, not the compiler's: it is the measure (a scene
-            // of 100,000 objects takes seconds a volumes frame; more frames would only repeat it).
+            // A frame this long is the scene's, not the compiler's: it is the measure (more
+            // frames of a huge scene would only repeat it, at seconds each).
             if (i == 0 && t > kLongFrameMs) return t;
             if (i > 0) ms.push_back(t);
         }
