@@ -157,9 +157,17 @@ bool BudgetController::observe(double ms) {
     // the next rung is tried again under the model's ratio.
     if (learned_up_[i] > 0.0 && std::fabs(now / learned_base_[i] - 1.0) > kRelearn) learned_up_[i] = -1.0;
 
-    if (now > budget_ * kDownMargin && rung_ > 0) {
-        // Over: block this rung (longer each time), then the largest below that is predicted to fit
-        // with margin, at least one step.
+    // Over the budget: the median of a full window, or, before it is full, every frame so far far
+    // over. A stall of the machine's own (a few frames in a row at up to 2x) is under half a
+    // window, so it cannot make a rung that fits look over; a rung far over is still left after
+    // kFarSamples frames (docs/budget.md).
+    const bool full = static_cast<int>(window_.size()) == kWindow;
+    const bool far_over = static_cast<int>(window_.size()) >= kFarSamples &&
+                          *std::min_element(window_.begin(), window_.end()) > budget_ * kFarOver;
+    if (((full && now > budget_ * kDownMargin) || far_over) && rung_ > 0) {
+        // Over: block this rung (longer each time), then the largest below that is predicted to fit,
+        // at least one step. Not with the up-move's margin: the rung just left is blocked, so the
+        // one below cannot flicker with it, and the margin would skip a rung that fits.
         blocked_until_[i] = frame_ + block_[i];
         block_[i] *= 2;
         ++over_count_[i];
@@ -172,7 +180,7 @@ bool BudgetController::observe(double ms) {
             // says nothing of a map's, however long they ran.)
             to = previous_;
         } else {
-            while (to > 0 && predicted_ms(to) > budget_ * kUpMargin) --to;
+            while (to > 0 && predicted_ms(to) > budget_) --to;
         }
         move_to(to, "measured " + ms_str(now) + ", over the budget");
         return true;

@@ -14,8 +14,8 @@
 //
 // The model: each rung's cost relative to the next, from what the bench measured (llvmpipe, the
 // course at 512x512, moving), replaced by the ratio the frames measure once both rungs have been
-// run. Hysteresis: a rung is left downwards only when the median of its recent frames exceeds the
-// budget by kDownMargin; the next one up is taken only after kHoldFrames at the current one, when
+// run. Hysteresis: a rung is left downwards only when the median of its last kWindow frames exceeds
+// the budget by kDownMargin (or, sooner, when each of its first frames is far over it); the next one up is taken only after kHoldFrames at the current one, when
 // predicted within kUpMargin of the budget (or kProbeMargin, for a rung over the budget fewer than
 // kMaxOvers times), and not while it is blocked. A rung left for being over the budget is blocked
 // for a time that doubles each time and, after kMaxOvers, tried only on a prediction that fits, so
@@ -35,8 +35,10 @@ public:
     static constexpr int kSmallestMap = 128;
     static constexpr int kLargestMap = 4096;
     static constexpr int kHoldFrames = 10;       // at a rung before trying the next one up
-    static constexpr int kWindow = 5;            // the frames whose median is the rung's time
-    static constexpr int kMinSamples = 3;        // before a rung's time is trusted
+    static constexpr int kWindow = 9;            // the frames whose median is the rung's time, and a down-move's
+    static constexpr int kMinSamples = 3;        // before a rung's time is trusted for a prediction
+    static constexpr int kFarSamples = 4;        // a down-move before the window is full: this many frames...
+    static constexpr double kFarOver = 1.5;      // ...every one over 1.5 x the budget
     static constexpr double kUpMargin = 0.9;     // up when predicted at most 0.9 x the budget
     static constexpr double kProbeMargin = 1.5;  // or, over fewer than kMaxOvers times, up to 1.5 x (the model may be pessimistic)
     static constexpr int kRecentFrames = 30;     // an up-move this recent is undone to where it came from

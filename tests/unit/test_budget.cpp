@@ -87,6 +87,16 @@ TEST(Budget, DoesNotFlickerAtTheEdgeOfABudget) {
     EXPECT_LE(r.changes, 8);
 }
 
+TEST(Budget, AStallOfAFewFramesDoesNotMoveIt) {
+    // The machine stalls now and then: 4 frames in a row at 1.8x, every 40 frames (as llvmpipe on
+    // 2 cores does: docs/budget.md). 1024 takes 8 ms and fits 10; the stalls are under half the
+    // window, so it stays.
+    BudgetController b = controller(10.0);
+    const auto stall = [](int frame) { return frame % 40 >= 36 ? 1.8 : 1.0; };
+    const Frames r = run(b, 1200, [&](int size, int frame) { return llvmpipe_like(size) * stall(frame); });
+    EXPECT_TRUE(std::all_of(r.sizes.end() - 800, r.sizes.end(), [](int s) { return s == 1024; })) << b.why();
+}
+
 TEST(Budget, ARungOverTheBudgetIsTriedAgainLessAndLessOften) {
     // The model (llvmpipe's ratios) says 2048 fits, the device says not: each retry is blocked
     // twice as long as the one before, so the frames over the budget are few.
@@ -120,6 +130,16 @@ TEST(Budget, FollowsASceneThatGetsHeavier) {
     EXPECT_NE(b.why().find("over the budget at the smallest map"), std::string::npos) << b.why();
 }
 
+TEST(Budget, StepsDownToTheLargestMapPredictedToFit) {
+    // From frame 300 every frame costs 1.35x: 512 takes 6.75 ms, over 6; 256 takes 5.74 and fits
+    // (predicted 5.59 by the model's ratio, never measured beside 512). Down to 256, not past it.
+    BudgetController b = controller(6.0);
+    const Frames r = run(b, 600, [](int size, int frame) { return llvmpipe_like(size) * (frame >= 300 ? 1.35 : 1.0); });
+    EXPECT_EQ(r.sizes[299], 512);
+    EXPECT_TRUE(std::none_of(r.sizes.begin() + 300, r.sizes.end(), [](int s) { return s < 256; })) << b.why();
+    EXPECT_EQ(b.settings().map_size, 256) << b.why();
+}
+
 TEST(Budget, ShadowVolumesAreTheTopRungTriedPastAMapThatDidNotFit) {
     // Volumes take 9 ms here, a 2048 map 20: at 12 ms the volumes, at 6 a map (512 takes 5).
     const auto cost = [](int size, int) { return size == BudgetController::kVolumes ? 9.0 : llvmpipe_like(size); };
@@ -139,11 +159,11 @@ TEST(Budget, ShadowVolumesAreTheTopRungTriedPastAMapThatDidNotFit) {
     EXPECT_EQ(heavy.settings().technique, render::Technique::ShadowMap) << heavy.why();
     EXPECT_EQ(heavy.settings().map_size, 1024) << heavy.why();
     // Volumes far dearer than the model says (40 ms where it predicts 18.5 from the 2048 map's 20):
-    // tried once (4 frames: one skipped, three measured), then their measured ratio predicts 40,
+    // tried once (5 frames: one skipped, four measured, each far over), then their measured ratio predicts 40,
     // past the probe's 1.5x, and keeps them out (the model's alone would try them a second time).
     BudgetController dear(22.0, render::Settings{}, true, 4096, true);
     const Frames d = run(dear, 3000, [](int size, int) { return size == BudgetController::kVolumes ? 40.0 : llvmpipe_like(size); });
-    EXPECT_LE(std::count(d.ms.begin(), d.ms.end(), 40.0), 4) << dear.why();
+    EXPECT_LE(std::count(d.ms.begin(), d.ms.end(), 40.0), 5) << dear.why();
     EXPECT_EQ(dear.settings().map_size, 2048) << dear.why();
     // Not with a soft filter (volumes have no penumbra), nor where the caller cannot draw them.
     render::Settings soft;

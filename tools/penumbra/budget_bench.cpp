@@ -92,6 +92,8 @@ void budget_sweep(Sweep& w, render::Renderer& r, const render::FrameInputs& in) 
         row.score = score_still(s);
         std::fprintf(stderr, "budget %5.1f ms: %s map %d, %.2f ms/frame, error %.3f %%; %s\n", budget, row.technique.c_str(),
                      row.map, row.ms_moving, row.score.error_pct, b.why().c_str());
+        // Each change, so a budget that settled away from the best fixed rung shows why.
+        for (const std::string& change : b.log()) std::fprintf(stderr, "  %s\n", change.c_str());
         w.budget.push_back(row);
     }
     gl::check_errors("the budget section");
