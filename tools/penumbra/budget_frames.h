@@ -58,12 +58,13 @@ inline std::optional<render::BudgetController> make_budget(const render::Options
 }
 
 // Renders `frames` frames of scene_at(i) with b's settings, each finished and timed, and observed;
-// returns their times.
+// returns their times (and, into `rungs` where given, the rung each frame ran).
 template <typename SceneAt>
 std::vector<double> budget_frames(render::Renderer& r, render::BudgetController& b, const render::FrameInputs& in,
-                                  int frames, SceneAt scene_at) {
+                                  int frames, SceneAt scene_at, std::vector<int>* rungs = nullptr) {
     std::vector<double> ms;
     for (int i = 0; i < frames; ++i) {
+        if (rungs) rungs->push_back(b.rung());
         const auto start = std::chrono::steady_clock::now();
         r.render(scene_at(i), b.settings(), in);
         r.finish();
