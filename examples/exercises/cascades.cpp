@@ -25,7 +25,7 @@ Exercise cascades() {
          "with snapping off and watch the shadow edges crawl.",
          {here_only({"cascades", "Cascades", K::Select, {"1", "2", "3", "4", "auto"}, "Cascades",
            "auto: one per factor of 8 in the depths seen"}),
-          here_only({"cascade-split", "Cascades", K::Slider, {"0", "0.25", "0.5", "0.75", "0.9", "1"}, "Split",
+          here_only({"cascade-split", "Cascades", K::Slider, {"0", "0.25", "0.5", "0.75", "0.9", "0.95", "1"}, "Split",
            "0 uniform, 1 logarithmic", 0.0, 1.0}),
           here_only({"cascade-snap", "Cascades", K::Checkbox, {"on", "off"}, "Snap to whole texels",
            "off: the edges shimmer as the camera moves"}),
@@ -40,7 +40,7 @@ Exercise cascades() {
     x.fly_bounds = terrain_fly_bounds;
     // Letters whose options it does not use.
     x.keys = {{'N', "cascades", "cascades: the number of cascades 1 / 2 / 3 / 4 / auto, Shift+N backwards"},
-              {'K', "cascade-split", "cascades: split 0 / 0.25 / 0.5 / 0.75 / 0.9 / 1 (uniform .. logarithmic)"},
+              {'K', "cascade-split", "cascades: split 0 / 0.25 / 0.5 / 0.75 / 0.9 / 0.95 / 1 (uniform .. logarithmic)"},
               {'G', "cascade-snap", "cascades: snap the windows to whole texels on / off"},
               {'B', "cascade-blend", "cascades: blend band 0 / 0.05 / 0.1 / 0.2 / 0.3 / 0.5 of a slice"}};
     x.draw = draw_own_scene;

@@ -129,7 +129,10 @@ struct Settings {
     // the scene, the camera and the light: shadow::auto_cascade_count, shadow::cube_wanted).
     static constexpr int kCube = 6;
     int cascades = 0;
-    float cascade_split = 0.9f;  // --cascade-split: 0 uniform splits, 1 logarithmic
+    // --cascade-split: 0 uniform splits, 1 logarithmic. 0.95, not the 0.9 often quoted: with a near
+    // plane far nearer than what the view holds (the ground under a walker), 0.9's uniform share puts
+    // the first split far out and gives the near shadows coarse texels (docs/cascades.md).
+    float cascade_split = 0.95f;
     bool cascade_snap = true;    // --cascade-snap: each cascade's window on whole texels (no shimmer)
     float cascade_blend = 0.1f;  // --cascade-blend: the share of a slice blended into the next, 0..0.5
     // --cube-layout: a cube's six faces as tiles of one 2D atlas (false) or the faces of a GL cube

@@ -22,7 +22,7 @@ inline constexpr int kMaxCascades = 4;
 
 struct CascadeOptions {
     int count = 4;        // slices, 1..kMaxCascades
-    float split = 0.9f;   // the split distances' blend: 0 uniform, 1 logarithmic (the practical scheme)
+    float split = 0.95f;  // the split distances' blend: 0 uniform, 1 logarithmic (the practical scheme)
     bool snap = true;     // each window's origin on whole texels of the light's axes
     float blend = 0.1f;   // the share of each slice (but the last) at its far end blended into the next, 0..0.5
     int tile = 1024;      // texels per side of each cascade's map

@@ -3,6 +3,9 @@
 view or a light into several maps. Run from anywhere: `python3 tests/data/make_large_scenes.py`
 rewrites them next to this script (deterministic output, standard library only; the Builder comes
 from make_gltf.py, the geometry and camera helpers from make_bench_gltf.py).
+`python3 tests/data/make_large_scenes.py --views DIR` writes six other views of the terrain into
+DIR instead (TERRAIN_VIEWS: turned left and right, from 12 m up, a low, a high and a side sun;
+docs/cascades.md), to check a choice tuned on terrain_km.gltf beyond its one frame.
 
   terrain_km.gltf  a sun 32 degrees up over rolling terrain a kilometre across (a 64x64-cell
                    heightfield, gentle hills within +-10 m) with 360 objects standing on it: houses
@@ -216,7 +219,21 @@ def put(s, meshes, name, kind, x, z, size, turn):
     return x, z, r
 
 
-def terrain_km():
+# Other views of the same terrain (`--views DIR`), for choices tuned on terrain_km.gltf (the
+# cascades' split) to be checked beyond its one frame: (name, camera yaw right of north and pitch
+# in degrees, camera height in metres, the sun's elevation and azimuth in degrees).
+TERRAIN_VIEWS = [
+    ("terrain_yaw_left", -25.0, -4.0, 1.9, 32.0, 197.0),
+    ("terrain_yaw_right", 35.0, -6.0, 1.9, 32.0, 197.0),
+    ("terrain_high", 8.0, -15.0, 12.0, 32.0, 197.0),
+    ("terrain_low_sun", 8.0, -4.0, 1.9, 15.0, 197.0),
+    ("terrain_high_sun", 8.0, -4.0, 1.9, 55.0, 160.0),
+    ("terrain_side_sun", 8.0, -4.0, 1.9, 32.0, 270.0),
+]
+
+
+def terrain_km(path="terrain_km.gltf", yaw_deg=8.0, pitch_deg=-4.0, height=CAMERA_HEIGHT, sun_elevation=32.0,
+               sun_azimuth=197.0):
     s = Scene()
     grass, stone, wood, plaster = (s.material("grass", (0.45, 0.6, 0.35)), s.material("stone", (0.6, 0.58, 0.55)),
                                    s.material("wood", (0.55, 0.4, 0.25)), s.material("plaster", (0.85, 0.8, 0.7)))
@@ -230,14 +247,14 @@ def terrain_km():
     }
     objects = terrain_objects(s, meshes, Lcg(20240611))
     cx, cz = CAMERA_XZ
-    eye = (cx, surface_height(cx, cz) + CAMERA_HEIGHT, cz)
-    # 4 degrees down, turned 8 degrees right of north (-z).
-    yaw, pitch = math.radians(8.0), math.radians(-4.0)
+    eye = (cx, surface_height(cx, cz) + height, cz)
+    # terrain_km.gltf: 4 degrees down, turned 8 degrees right of north (-z).
+    yaw, pitch = math.radians(yaw_deg), math.radians(pitch_deg)
     target = (eye[0] + 100.0 * math.sin(yaw) * math.cos(pitch), eye[1] + 100.0 * math.sin(pitch),
               eye[2] - 100.0 * math.cos(yaw) * math.cos(pitch))
     # Travelling down-left and towards the camera: the sun stands to the front right.
-    sun = light_rotation(32.0, 197.0)
-    s.write("terrain_km.gltf", {"yfov": math.radians(58.0), "znear": 0.5, "zfar": 1500.0}, eye, target,
+    sun = light_rotation(sun_elevation, sun_azimuth)
+    s.write(path, {"yfov": math.radians(58.0), "znear": 0.5, "zfar": 1500.0}, eye, target,
             {"name": "sun", "type": "directional", "color": [1.0, 0.97, 0.9], "intensity": 3.0},
             {"rotation": rounded(sun, 5), "translation": [0.0, 300.0, 0.0]})
     return objects
@@ -315,6 +332,10 @@ def bulb_room():
 
 
 def main():
+    if len(sys.argv) == 3 and sys.argv[1] == "--views":
+        for name, yaw, pitch, height, elevation, azimuth in TERRAIN_VIEWS:
+            terrain_km(os.path.join(os.path.abspath(sys.argv[2]), name + ".gltf"), yaw, pitch, height, elevation, azimuth)
+        return
     terrain_km()
     bulb_room()
 

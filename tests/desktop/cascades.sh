@@ -24,7 +24,7 @@ cd "$here"
 # The exercise keeps maps of 1024 (cascades are not matched to the screen): the CLI is told so, as
 # its own default is auto (one map matched to the screen, after N N N).
 shot start ""
-title_has start "Cascaded shadow maps | cascades=4 cascade-split=0.9 cascade-snap=on cascade-blend=0.1 map-size=1024 aov=cascades"
+title_has start "Cascaded shadow maps | cascades=4 cascade-split=0.95 cascade-snap=on cascade-blend=0.1 map-size=1024 aov=cascades"
 python3 check_cascades.py tints "$out/start.png" 4
 cli start --cascades 4 --map-size 1024 --aov cascades
 python3 check_cascades.py match "$out/start.png" "$out/start-cli.png"

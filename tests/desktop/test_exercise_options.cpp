@@ -31,7 +31,7 @@ TEST(ExerciseOptions, DefaultsOfEachPage) {
               "light=on&jump=on&effects=outline&outline-width=3&outline-color=ff8c00&reflectivity=0.5&technique=shadowmap");
     // The cascades exercise starts with four cascades, tinted.
     EXPECT_EQ(CourseApp("cascades").query(),
-              "cascades=4&cascade-split=0.9&cascade-snap=on&cascade-blend=0.1&map-size=1024&aov=cascades");
+              "cascades=4&cascade-split=0.95&cascade-snap=on&cascade-blend=0.1&map-size=1024&aov=cascades");
     // The bulb exercise with the cube's faces tinted, 512 texels a face, a bulb of 5 cm.
     EXPECT_EQ(CourseApp("bulb").query(), "cascades=cube&map-size=512&cube-layout=atlas&filter=hard&light-radius=0.05&aov=cascades");
 }

@@ -167,12 +167,12 @@ TEST(Options, ArgsLabelTheResult) {
     o.settings.encoding = Encoding::R8;
     EXPECT_EQ(to_args(o),
               "--scene teapot --time 0 --size 512x512 --encoding r8 --filter hard --pcf-kernel early-exit "
-              "--map-size 1024 --cascades auto --cascade-split 0.9 --cascade-snap on --cascade-blend 0.1 --cube-layout atlas --bias auto --map-faces auto --light-fit shadows --precision highp --volume-method auto "
+              "--map-size 1024 --cascades auto --cascade-split 0.95 --cascade-snap on --cascade-blend 0.1 --cube-layout atlas --bias auto --map-faces auto --light-fit shadows --precision highp --volume-method auto "
               "--show-volumes off --light-radius scene --pcss-search 16 --pcss-taps 16 --pcss-blockers layered --area-samples 1 --area-per-frame 0 --area-interleave 1 "
               "--gooch-planes 8 --gooch-method planes --blend-shadows off --effects none --outline-color ff8c00 "
               "--outline-width 3 --reflectivity 0.5 --post none --shading forward --lights 0 --aov color --technique shadowmap --eye scene --frames 1");
     EXPECT_EQ(to_args(o.settings),
-              "--encoding r8 --filter hard --pcf-kernel early-exit --map-size 1024 --cascades auto --cascade-split 0.9 --cascade-snap on --cascade-blend 0.1 --cube-layout atlas --bias auto --map-faces auto "
+              "--encoding r8 --filter hard --pcf-kernel early-exit --map-size 1024 --cascades auto --cascade-split 0.95 --cascade-snap on --cascade-blend 0.1 --cube-layout atlas --bias auto --map-faces auto "
               "--light-fit shadows --precision highp --volume-method auto --show-volumes off --light-radius scene "
               "--pcss-search 16 --pcss-taps 16 --pcss-blockers layered --area-samples 1 --area-per-frame 0 --area-interleave 1 --gooch-planes 8 --gooch-method planes "
               "--blend-shadows off "

@@ -17,7 +17,7 @@ import { runTest, openPage, frameAt, compare, check, checkNoGlErrors, checkMatch
 const [cli, outDir] = process.argv.slice(2);
 if (!cli || !outDir) throw new Error('usage: cascades.mjs PENUMBRA_CLI OUT_DIR');
 const SCENE = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../data/terrain_km.gltf');
-const DEFAULTS = 'cascades=4&cascade-split=0.9&cascade-snap=on&cascade-blend=0.1&map-size=1024&aov=cascades';
+const DEFAULTS = 'cascades=4&cascade-split=0.95&cascade-snap=on&cascade-blend=0.1&map-size=1024&aov=cascades';
 
 // The cascades view's tints (red, green, blue, yellow from near to far): the share of the picture
 // each holds (harness.mjs: tintShares).
@@ -128,7 +128,7 @@ await runTest('web.cascades', async ({ server, browser }) => {
     check((plan4.match(/shadow-map cascade \d+: .*view depth/g) || []).length === 4, `the plan of 4 cascades:\n${plan4}`);
     shot.color = await frame(page, { cascades: '4', aov: 'color' });
     shot.nosnap = await frame(page, { 'cascade-snap': 'off', 'cascade-split': '0.5', 'cascade-blend': '0.2', aov: 'cascades' });
-    await setOptions(page, { 'cascade-snap': 'on', 'cascade-split': '0.9', 'cascade-blend': '0.1' });
+    await setOptions(page, { 'cascade-snap': 'on', 'cascade-split': '0.95', 'cascade-blend': '0.1' });
     shot.moved = await page.evaluate(() => window.penumbra.fly(8, 1, 0, -5, 0)).then(() => frame(page));
     await page.evaluate(() => window.penumbra.resetCamera());
     shot.back = await frame(page);
