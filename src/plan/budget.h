@@ -15,11 +15,12 @@
 // The model: each rung's cost relative to the next, from what the bench measured (llvmpipe, the
 // course at 512x512, moving), replaced by the ratio the frames measure once both rungs have been
 // run. Hysteresis: a rung is left downwards only when the median of its last kWindow frames exceeds
-// the budget by kDownMargin (or, sooner, when each of its first frames is far over it); the next one up is taken only after kHoldFrames at the current one, when
-// predicted within kUpMargin of the budget (or kProbeMargin, for a rung over the budget fewer than
-// kMaxOvers times), and not while it is blocked. A rung left for being over the budget is blocked
-// for a time that doubles each time and, after kMaxOvers, tried only on a prediction that fits, so
-// the choice cannot flicker between two rungs.
+// the budget by kDownMargin (or, sooner, when each of its first frames is far over it); the next
+// one up is taken only after kHoldFrames at the current one, when predicted within kUpMargin of
+// the budget (or kProbeMargin, for a rung over the budget fewer than kMaxOvers times), and not
+// while it is blocked. A rung left for being over the budget is blocked for a time that doubles
+// each time and, after kMaxOvers, tried only on a prediction that fits, so the choice cannot
+// flicker between two rungs.
 #pragma once
 
 #include <string>

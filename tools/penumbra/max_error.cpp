@@ -25,9 +25,8 @@ constexpr double kHeavyFrameMs = 1000.0;
 // found again): what a moving frame costs, planning included. One untimed frame of each first
 // (its variants compile, its targets are made), then the median of kTimedFrames; where that first
 // frame took over kLongFrameMs, the next one alone; over kHeavyFrameMs, the first itself. A first
-// frame of a few hundred ms may be the allocation (a cube's faces of 2048 took 345 ms where the
-// next frame took 22 and shadow volumes 5); one of seconds is the scene's, and another would
-// only repeat it.
+// frame of a few hundred ms may be the allocation (a cube's six large faces: docs/budget.md); one
+// of seconds is the scene's, and another would only repeat it.
 void measure_volumes_cost(ErrorChoice& c, render::Renderer& r, const scene::Scene& scene, const render::FrameInputs& in) {
     const auto volumes = std::find_if(c.rungs.begin(), c.rungs.end(), [](const ErrorRung& g) { return g.map == 0; });
     if (volumes == c.rungs.end()) return;
