@@ -29,6 +29,7 @@ struct CourseScene;
 namespace penumbra::render {
 class Module;
 struct FrameShape;
+struct MapLayout;
 }
 
 namespace penumbra::examples {
@@ -157,6 +158,13 @@ struct Exercise {
     // The frame shapes beside the forward one its frames can take (render::area_light_shape,
     // deferred_shape, shadow_blur_shape: plan/frames/frame.h), checked the same way.
     std::vector<const render::FrameShape& (*)()> frames = {};
+    // The shadow map's layouts beside one map its frames can take (render::cascades_layout,
+    // cube_layout: plan/techniques/technique.h), checked the same way; without one, its frames
+    // plan one map where they would have taken it, with a note.
+    std::vector<const render::MapLayout& (*)()> layouts = {};
+    // The shader lab's splice (render::snippet_block) where the exercise's page has the lab's panel
+    // (web/pages.py's LAB_EXERCISES): only then does a page's module link the lab's GLSL scan.
+    std::string (*lab)(std::string_view text, shadow::Encoding e) = nullptr;
 };
 // Whether the exercise's camera flies (a scene of its own).
 inline bool flies(const Exercise& x) { return x.make_scene != nullptr; }

@@ -131,7 +131,7 @@ def fly_html(exercise: dict) -> str:
 # The pages with the shader lab (docs/pages.md, docs/snippets.md): the sheet's shadow-map code
 # (packDepth, unpackDepth, shadowTest, offset_lookup) fits W09P2c, whose controls hold the encoding
 # and the 4x4 PCF the lab's snippets replace.
-LAB_EXERCISES = {"w09p2c"}  # and web/CMakeLists.txt's PENUMBRA_LAB_PAGES (their modules export the lab)
+LAB_EXERCISES = {"w09p2c"}  # and web/CMakeLists.txt's PENUMBRA_LAB_PAGES (their modules export the lab), Exercise::lab
 
 
 def lab_html(exercise: dict) -> str:

@@ -43,6 +43,7 @@ Exercise bulb() {
               {'C', "cube-layout", "bulb: the cube's faces in an atlas / a cube map"}};
     x.draw = draw_own_scene;
     x.modules = {render::shadow_map_module};
+    x.layouts = {render::cube_layout};
     return x;
 }
 

@@ -45,6 +45,7 @@ Exercise cascades() {
               {'B', "cascade-blend", "cascades: blend band 0 / 0.05 / 0.1 / 0.2 / 0.3 / 0.5 of a slice"}};
     x.draw = draw_own_scene;
     x.modules = {render::shadow_map_module};
+    x.layouts = {render::cascades_layout};
     return x;
 }
 

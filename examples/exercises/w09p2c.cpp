@@ -2,6 +2,7 @@
 // precision (highp or emulated mediump), map size, and the shadow map shown scaled for viewing in a
 // corner.
 #include "common.h"
+#include "plan/snippets.h"
 
 namespace penumbra::examples::exercises {
 
@@ -60,6 +61,7 @@ Exercise w09p2c() {
     // pixels wide. auto is one choice away in the select.
     x.defaults = {{"light-fit", "tight"}, {"map-size", "1024"}};
     x.modules = {render::shadow_map_module};
+    x.lab = render::snippet_block;
     return x;
 }
 

@@ -8,8 +8,20 @@
 #include "gl/check.h"
 #include "render/shader_sources.h"
 #include "plan/snippets.h"
+#include "plan/weak_in_pages.h"
 
 namespace penumbra::render {
+
+// The lab's splice (plan/snippets.cpp) is in a page's module only where the lab's exports are
+// (the pages with its panel): no other page makes a LAB variant (Settings::lab is the panel's).
+PENUMBRA_WEAK_IN_PAGES std::string snippet_block(std::string_view text, shadow::Encoding e);
+
+namespace {
+
+using Splice = std::string (*)(std::string_view, shadow::Encoding);
+Splice lab_splice() { return &snippet_block; }
+
+}  // namespace
 
 std::string variant_source(const std::string& file, const std::vector<std::string>& defines, const std::string& snippets) {
     for (const ShaderSource& s : embedded_shaders()) {
@@ -32,7 +44,9 @@ std::string variant_source(const std::string& file, const std::vector<std::strin
             // pack.glsl is spliced in once per file that includes it, its guard keeping one: the
             // marker of each copy (the one compiled may be any of them).
             const bool r8 = std::find(defines.begin(), defines.end(), "ENC_R8") != defines.end();
-            const std::string block = snippet_block(snippets, r8 ? shadow::Encoding::R8 : shadow::Encoding::RGBA);
+            const Splice splice = lab_splice();
+            if (!splice) throw gl::Error(file + ": the shader lab is not in this page's code (a page with the lab's panel has it)");
+            const std::string block = splice(snippets, r8 ? shadow::Encoding::R8 : shadow::Encoding::RGBA);
             for (size_t at = text.find(marker); at != std::string::npos; at = text.find(marker, at + block.size()))
                 text.replace(at, marker.size(), block);
         }

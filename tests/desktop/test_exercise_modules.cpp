@@ -5,10 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
+#include <set>
 
 #include "exercises.h"
 #include "plan/frames/frame.h"
 #include "plan/techniques/technique.h"
+#include "scenes/course_scene.h"
+#include "../unit/full_caps.h"
 
 using penumbra::examples::CourseApp;
 using penumbra::examples::Exercise;
@@ -75,7 +79,80 @@ std::string modules_missing(const Exercise& x) {
     return missing;
 }
 
+// The layouts beside one map ("cascades", "cube") that the course scene's frames take with
+// --cascades auto and `effects` over 20 s of its animation (the light's circle, the teapot's
+// jumps; a course exercise's camera does not fly), a layout's passes being named "... cascade K"
+// and "... face F". `light_at`: the light put there in every frame instead.
+std::set<std::string> course_layouts(std::string_view effects, std::optional<glm::vec3> light_at = std::nullopt) {
+    using namespace penumbra;
+    scene::CourseScene course = scene::make_course_scene(4, true, false);
+    render::Settings s;
+    EXPECT_EQ(render::parse_option(s, "technique", "shadowmap"), "");
+    EXPECT_EQ(render::parse_option(s, "effects", effects), "");
+    std::set<std::string> out;
+    for (int k = 0; k <= 80; ++k) {
+        scene::animate_course(course, 0.25 * k, 0.25 * k);
+        if (light_at) course.scene.light.position = *light_at;
+        const render::FramePlan p = render::plan(course.scene, s, penumbra::testing::full_caps(), render::offscreen(512, 512));
+        for (const render::Pass& pass : p.passes) {
+            if (pass.name.find(" cascade ") != std::string::npos) out.insert("cascades");
+            if (pass.name.find(" face ") != std::string::npos) out.insert("cube");
+        }
+    }
+    return out;
+}
+
+// What the exercise's layouts (Exercise::layouts) leave out of what its frames can take: "" or a
+// list. With the shadow map among its techniques: a cube where its cascades control offers
+// "cube", cascades where it offers 2 to 4; with auto, the layout of its own scene's light
+// (directional: cascades, else a cube: its camera flies anywhere) or what the course scene's
+// frames take with each of its effects.
+std::string layouts_missing(const Exercise& x) {
+    using namespace penumbra;
+    const std::vector<std::string> techniques = values_reached(x, "technique");
+    if (std::find(techniques.begin(), techniques.end(), "shadowmap") == techniques.end()) return {};
+    std::set<std::string> want;
+    for (const std::string& v : values_reached(x, "cascades")) {
+        if (v == "cube") want.insert("cube");
+        if (v == "2" || v == "3" || v == "4") want.insert("cascades");
+        if (v != "auto") continue;
+        if (flies(x)) {
+            want.insert(x.make_scene().light.type == scene::LightType::Directional ? "cascades" : "cube");
+            continue;
+        }
+        for (const std::string& e : values_reached(x, "effects"))
+            for (const std::string& l : course_layouts(e)) want.insert(l);
+    }
+    const auto has = [&](const render::MapLayout& l) {
+        return std::any_of(x.layouts.begin(), x.layouts.end(), [&](auto get) { return &get() == &l; });
+    };
+    std::string missing;
+    if (want.count("cascades") && !has(render::cascades_layout())) missing += " cascades";
+    if (want.count("cube") && !has(render::cube_layout())) missing += " cube";
+    return missing;
+}
+
 }  // namespace
+
+// A browser page links the shadow map's cascades and cube only where its exercise names them: the
+// layouts its frames can take (the course scene's point light stays above the table and outside
+// it, the portal's lawn spans less than one cascade's depth ratio, so those frames take one map).
+// The controls: the bulb without its cube, the cascades exercise without its cascades, and the
+// course scene's light put inside it (a cube), which the sweep must see.
+TEST(ExerciseList, EachExerciseNamesTheMapLayoutsItsFramesTake) {
+    using namespace penumbra;
+    for (const auto& x : exercise_list()) EXPECT_EQ(layouts_missing(x), "") << x.name;
+    Exercise bulb = *examples::find_exercise("bulb");
+    bulb.layouts.clear();
+    EXPECT_EQ(layouts_missing(bulb), " cube");
+    Exercise cascades = *examples::find_exercise("cascades");
+    cascades.layouts.clear();
+    EXPECT_EQ(layouts_missing(cascades), " cascades");
+    EXPECT_EQ(course_layouts("none", glm::vec3(0.0f, 0.3f, 0.0f)), std::set<std::string>{"cube"});
+    EXPECT_TRUE(render::map_layout_linked("cascades") && render::map_layout_linked("cube"));  // natively, all
+    // The shader lab's splice: named by the exercise whose page has the lab's panel.
+    for (const auto& x : exercise_list()) EXPECT_EQ(x.lab != nullptr, x.name == "w09p2c") << x.name;
+}
 
 // A browser page links only the technique and effect modules and the frame shapes its exercise
 // names: they cover every technique, effect and shape its frame, its controls and its defaults

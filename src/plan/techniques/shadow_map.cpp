@@ -8,11 +8,14 @@
 #include "plan/techniques/map_size.h"
 #include "plan/techniques/reports.h"
 #include "plan/techniques/shadow_lookup.h"
+#include "plan/techniques/shadow_map_parts.h"
 #include "plan/techniques/technique.h"
 #include "shadow/cube.h"
 #include "shadow/pcf.h"
 
 namespace penumbra::render {
+
+using namespace map_parts;
 
 namespace {
 
@@ -21,7 +24,6 @@ constexpr int kShadowUnit = 0;
 // Below 16 texels the one or few texels hold the nearest caster's depth for everything behind it
 // and the whole frame falls into shadow: that is no longer a shadow map.
 constexpr int kMinMap = 16;
-constexpr const char* kMap = "shadow-map";
 
 std::string number(double v) {
     char b[32];
@@ -42,31 +44,6 @@ gl::Cull map_cull(MapFaces faces, const scene::Scene& scene, const Draw& d) {
     if (faces == MapFaces::Both) return gl::Cull::None;
     const bool mirrored = glm::determinant(glm::mat3(d.world)) < 0.0f;
     return (faces == MapFaces::Front) != mirrored ? gl::Cull::Back : gl::Cull::Front;
-}
-
-// "back 2, both 1": how many casters put which faces into the map.
-std::string faces_summary(const Pass& p) {
-    int n[3] = {0, 0, 0};  // front (cull back), back (cull front), both (cull none)
-    for (const Draw& d : p.draws) {
-        const gl::Cull c = d.cull.value_or(p.state.cull);
-        ++n[c == gl::Cull::Back ? 0 : c == gl::Cull::Front ? 1 : 2];
-    }
-    const char* names[3] = {"front", "back", "both"};
-    std::string out;
-    for (int i = 0; i < 3; ++i)
-        if (n[i]) out += std::string(out.empty() ? "" : ", ") + names[i] + " " + std::to_string(n[i]);
-    return out;
-}
-
-std::string percent(float share) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.1f%%", 100.0 * static_cast<double>(share));
-    return b;
-}
-
-std::string caster_count(size_t drawn, size_t all) {
-    return drawn == all ? std::to_string(all) + " caster(s)"
-                        : std::to_string(drawn) + " of " + std::to_string(all) + " caster(s)";
 }
 
 // A pass drawing `casters` (scene objects) into a map from the light: depth in the encoding, each
@@ -97,6 +74,35 @@ Pass map_pass(const PlanContext& c, const std::vector<int>& casters, int& cut_ou
     p.state.cull = p.draws.empty() ? gl::Cull::None : *p.draws.front().cull;  // the first group's
     for (Draw& dr : p.draws) if (dr.cull == p.state.cull) dr.cull.reset();
     return p;
+}
+
+}  // namespace
+
+namespace map_parts {
+
+// "back 2, both 1": how many casters put which faces into the map.
+std::string faces_summary(const Pass& p) {
+    int n[3] = {0, 0, 0};  // front (cull back), back (cull front), both (cull none)
+    for (const Draw& d : p.draws) {
+        const gl::Cull c = d.cull.value_or(p.state.cull);
+        ++n[c == gl::Cull::Back ? 0 : c == gl::Cull::Front ? 1 : 2];
+    }
+    const char* names[3] = {"front", "back", "both"};
+    std::string out;
+    for (int i = 0; i < 3; ++i)
+        if (n[i]) out += std::string(out.empty() ? "" : ", ") + names[i] + " " + std::to_string(n[i]);
+    return out;
+}
+
+std::string percent(float share) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.1f%%", 100.0 * static_cast<double>(share));
+    return b;
+}
+
+std::string caster_count(size_t drawn, size_t all) {
+    return drawn == all ? std::to_string(all) + " caster(s)"
+                        : std::to_string(drawn) + " of " + std::to_string(all) + " caster(s)";
 }
 
 // A pass into one tile of an atlas (a cascade, a cube face): `fit_casters` index
@@ -168,6 +174,10 @@ CascadesReport& cascades_report(PlanContext& c) {
     return c.plan.put(CascadesReport{});
 }
 
+}  // namespace map_parts
+
+namespace {
+
 // --cascades N > 1 or auto (0): how many this frame has and why; the cascades report says it.
 int cascade_count(PlanContext& c, const ShadowBounds& b) {
     const int asked = c.settings.cascades;
@@ -181,6 +191,20 @@ int cascade_count(PlanContext& c, const ShadowBounds& b) {
     return asked;
 }
 
+}  // namespace
+
+// In the browser a page's module links a layout only where its exercise names it
+// (Exercise::layouts); the others are null here.
+PENUMBRA_WEAK_IN_PAGES const MapLayout& cascades_layout();
+PENUMBRA_WEAK_IN_PAGES const MapLayout& cube_layout();
+
+namespace {
+
+using LayoutGetter = const MapLayout& (*)();
+LayoutGetter cascades_getter() { return &cascades_layout; }
+LayoutGetter cube_getter() { return &cube_layout; }
+const MapLayout* cascades_layout_ref() { return cascades_getter() ? &cascades_getter()() : nullptr; }
+const MapLayout* cube_layout_ref() { return cube_getter() ? &cube_getter()() : nullptr; }
 
 class ShadowMapModule : public Module {
 public:
@@ -272,9 +296,10 @@ public:
         c.add_pass(std::move(p));
     }
 
-    // --cascades N > 1 with a directional light: N maps, tiles of one atlas (2x1 or 2x2 tiles of
-    // `size`), one pass each into its tile. false: one map (the count is 1, or the cascades
-    // cannot be made here and a note says why).
+    // --cascades N > 1 with a directional light: N maps, tiles of one atlas; --cascades cube, or
+    // auto with a point light among what it lights: a cube's faces (each a MapLayout in its own
+    // file). false: one map (the count is 1, or the layout cannot be made here and a note says
+    // why).
     bool cascaded(PlanContext& c, int& size) const {
         const Settings& s = c.settings;
         if (s.cascades == 1) return false;  // one map: nothing to decide (the default's frame does no more work)
@@ -286,68 +311,12 @@ public:
             return false;
         const int n = cascade_count(c, b);
         if (n <= 1) return false;
-        int columns = 1, rows = 1;
-        shadow::atlas_layout(n, columns, rows);
-        const int max = c.caps.max_target_size();
-        if (size * columns > max) {
-            c.plan.notes.push_back("--map-size " + std::to_string(size) + " with " + std::to_string(n) +
-                                   " cascades: each map cut to " + std::to_string(max / columns) +
-                                   " so the atlas fits this context's maximum of " + std::to_string(max));
-            size = max / columns;
-        }
-        shadow::CascadeOptions o;
-        o.count = n;
-        o.split = s.cascade_split;
-        o.snap = s.cascade_snap;
-        o.blend = s.cascade_blend;
-        o.tile = size;
-        std::string why;
-        shadow::CascadeFit fit =
-            shadow::fit_cascades(c.light, b.receivers, b.casters, c.plan.camera.view, c.plan.camera.proj, o, &why);
-        if (fit.cascades.empty()) {
-            c.plan.notes.push_back(cascades_report(c).why + ": one map instead, " + why);
-            cascades_report(c).why += " -> one map (" + why + ")";
-            return false;
-        }
-        c.plan.put(LightViewReport{fit.cascades.front().frustum, shadow::texel_use(fit.cascades.front().frustum, fit.visible)});
-
-        // Each cascade's tile has its own key: one whose window and casters are where they were in
-        // the last frame is not drawn again, so a caster that moves redraws only the cascades that
-        // draw it.
-        const int r = c.add_resource(map_desc(c, fit.atlas_width, fit.atlas_height), "",
-                                     "the depth seen from the light, " + std::to_string(n) + " cascades side by side");
-        const size_t first = c.plan.passes.size();
-        const std::vector<char> keep = shadowing_casters(c);
-        for (size_t i = 0; i < fit.cascades.size(); ++i) {
-            const shadow::Cascade& k = fit.cascades[i];
-            int cut_outs = 0;
-            Pass p = tile_pass(c, k.casters, keep, c.named(kMap) + " cascade " + std::to_string(i), {r, size, size, k.tile_x, k.tile_y, true},
-                               k.frustum.view_proj(), cut_outs);
-            ContentKey key;
-            key.add(p.view_proj);
-            for (const Draw& d : p.draws) key.add_placement(c.scene, d.object);
-            add_packing(key, c);
-            p.content = key.str();
-            char depths[96];
-            std::snprintf(depths, sizeof depths, "view depth %.3g..%.3g, texel %.3g", static_cast<double>(k.begin),
-                          static_cast<double>(k.end), static_cast<double>(k.texel));
-            p.detail = std::to_string(size) + "x" + std::to_string(size) + " tile at (" + std::to_string(k.tile_x) +
-                       ", " + std::to_string(k.tile_y) + ") " + std::string(shadow::to_string(s.encoding)) + ", " +
-                       depths + ", " + caster_count(p.draws.size(), c.casters.size()) + ", faces " + faces_summary(p) +
-                       (s.cascade_snap ? ", snapped" : ", not snapped") +
-                       (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
-            c.add_pass(std::move(p));
-        }
-        clear_atlas_once(c, first);
-        cascades_report(c).list = std::move(fit.cascades);
-        return true;
+        return laid_out(c, cascades_layout_ref(), b, n, size);
     }
 
-    // --cascades cube, or auto with a point light among what it lights (shadow::cube_wanted): six
-    // faces of `size`, tiles of one atlas (3 x 2), one pass into each face that sees a visible
-    // receiver, each with its own content key (a still face is not drawn again). false: one map
-    // (a note says why when the cube was asked for).
-    // `forced`: auto's reason for a spot light's cube, found by the one map's fit.
+    // Whether a cube is wanted (--cascades cube; auto with a point light among what it lights,
+    // shadow::cube_wanted; `forced`: auto's reason for a spot light's cube, found by the one map's
+    // fit), and then its faces. false: one map (a note says why when the cube was asked for).
     bool cubed(PlanContext& c, const ShadowBounds& b, int size, const std::string& forced = {}) const {
         const Settings& s = c.settings;
         bool want = s.cascades == Settings::kCube || !forced.empty();
@@ -360,79 +329,16 @@ public:
             want = shadow::cube_wanted(c.light, b.receivers, b.casters, why);
             cascades_report(c).why = "auto: " + why;
         }
-        if (!want) return false;
-        bool cube_map = s.cube_map;
-        if (cube_map && s.encoding == shadow::Encoding::DepthTex) {
-            c.plan.notes.push_back("--cube-layout cubemap with --encoding depthtex: the atlas instead (WebGL 1 and GLES 2 "
-                                   "have no cube-map depth texture)");
-            cube_map = false;
-        }
-        const int across = cube_map ? 1 : 3;  // faces side by side in the texture
-        int max = c.caps.max_target_size();
-        if (cube_map && c.caps.max_cube_map_size > 0) max = std::min(max, c.caps.max_cube_map_size);
-        if (size * across > max) {
-            c.plan.notes.push_back("--map-size " + std::to_string(size) + " with a cube: each face cut to " +
-                                   std::to_string(max / across) +
-                                   (cube_map ? " (this context's largest cube map)"
-                                             : " so the atlas (3 x 2 faces) fits this context's maximum of " +
-                                                   std::to_string(max)));
-            size = max / across;
-        }
-        std::string why;
-        shadow::CubeFit fit = shadow::fit_cube(c.light, b.receivers, b.casters, c.plan.camera.view_proj, size,
-                                               cube_guard(s, size), &why, cube_map);
-        if (s.map_size == Settings::kAutoMapSize && fit.drawn() > 0) {
-            // The faces' size from what each serves, then the cube again at that size where it
-            // differs (the guard band, and so each face's field of view, follows the size).
-            const int first = size;
-            size = auto_map_size(c, b, fit);
-            if (size != first)
-                fit = shadow::fit_cube(c.light, b.receivers, b.casters, c.plan.camera.view_proj, size, cube_guard(s, size),
-                                       &why, cube_map);
-        }
-        if (fit.drawn() == 0) {
-            c.plan.notes.push_back(cascades_report(c).why + ": one map instead, " + why);
-            cascades_report(c).why += " -> one map (" + why + ")";
-            return false;
-        }
-        ResourceDesc desc = map_desc(c, fit.atlas_width, fit.atlas_height);
-        desc.cube = cube_map;
-        const int r = c.add_resource(desc, "",
-                                     cube_map ? "the depth seen from the light, the six faces of a cube map"
-                                              : "the depth seen from the light, the six faces of a cube side by side (3 x 2)");
-        const size_t first = c.plan.passes.size();
-        const std::vector<char> keep = shadowing_casters(c);
-        for (int f = 0; f < shadow::kCubeFaces; ++f) {
-            const shadow::CubeFace& face = fit.faces[static_cast<size_t>(f)];
-            if (!face.drawn) continue;
-            if (!light_frustum_of(c.plan)) c.plan.put(LightViewReport{face.frustum, std::nullopt});
-            int cut_outs = 0;
-            Pass p = tile_pass(c, face.casters, keep, c.named(kMap) + " face " + shadow::cube_face_name(f),
-                               {r, size, size, face.tile_x, face.tile_y, true, f}, face.frustum.view_proj(), cut_outs);
-            ContentKey key;
-            key.add(p.view_proj);
-            for (const Draw& d : p.draws) key.add_placement(c.scene, d.object);
-            add_packing(key, c);
-            p.content = key.str();
-            char depths[64];
-            std::snprintf(depths, sizeof depths, "depth %.3g..%.3g", static_cast<double>(fit.znear),
-                          static_cast<double>(fit.zfar));
-            const std::string where = cube_map ? "cube-map face"
-                                               : "tile at (" + std::to_string(face.tile_x) + ", " +
-                                                     std::to_string(face.tile_y) + ")";
-            const std::string wide = cube_map ? "perspective 90 degrees (drawn for receivers within " +
-                                                    std::to_string(fit.guard) + " texels of it)"
-                                              : "perspective " + percent(fit.tangent - 1.0f) + " wider than 90 degrees (" +
-                                                    std::to_string(fit.guard) + " texel guard)";
-            p.detail = std::to_string(size) + "x" + std::to_string(size) + " " + where + " " +
-                       std::string(shadow::to_string(s.encoding)) + ", " + wide + ", " + depths + ", " +
-                       caster_count(p.draws.size(), c.casters.size()) + ", faces " + faces_summary(p) +
-                       (cut_outs ? ", " + std::to_string(cut_outs) + " alpha-tested" : "");
-            c.add_pass(std::move(p));
-        }
-        if (!cube_map) clear_atlas_once(c, first);  // a cube map's faces are whole framebuffers
-        c.plan.put(CubeReport{std::move(fit)});
-        return true;
+        return want && laid_out(c, cube_layout_ref(), b, 0, size);
+    }
+
+    // The layout's passes where this program has its code; else one map and a note why.
+    static bool laid_out(PlanContext& c, const MapLayout* layout, const ShadowBounds& b, int count, int& size) {
+        if (layout) return layout->plan(c, b, count, size);
+        const std::string what = count ? "cascades" : "a cube";
+        c.plan.notes.push_back(cascades_report(c).why + ": one map instead, " + what + " not in this page's code");
+        cascades_report(c).why += " -> one map (" + what + " not in this page's code)";
+        return false;
     }
 
     bool own_view(PlanContext& c) const override {
@@ -565,6 +471,12 @@ public:
 const Module& shadow_map_module() {
     static const ShadowMapModule m;
     return m;
+}
+
+bool map_layout_linked(std::string_view name) {
+    if (name == "cascades") return cascades_getter() != nullptr;
+    if (name == "cube") return cube_getter() != nullptr;
+    return false;
 }
 
 }  // namespace penumbra::render

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "plan/plan.h"
+#include "plan/weak_in_pages.h"
 
 namespace penumbra::render {
 
@@ -198,14 +199,16 @@ const Module& gooch_module();       // gooch.cpp
 const Module& outline_module();     // outline.cpp
 const Module& mirror_module();      // mirror.cpp
 const Module& portal_module();      // portal.cpp
-// Marks a redeclaration of such a getter in the file that picks among them (techniques.cpp, the
-// frame shapes' forward.cpp): weak in the browser, where wasm-ld resolves a weak function that no
-// linked object defines to a null address; an ordinary reference elsewhere.
-#ifdef __EMSCRIPTEN__
-#define PENUMBRA_WEAK_IN_PAGES __attribute__((weak))
-#else
-#define PENUMBRA_WEAK_IN_PAGES
-#endif
+// The shadow map's layouts beside one map (shadow_map_parts.h), each in its own file: cascades
+// (a directional light's depth range split into several maps) and a cube (a point light's six
+// faces, or those a wide spot light's cone reaches). The module reaches them by references weak
+// in the browser: a page links one only where its exercise names it (Exercise::layouts), and
+// elsewhere plans one map with a note.
+struct MapLayout;
+const MapLayout& cascades_layout();  // map_cascades.cpp
+const MapLayout& cube_layout();      // map_cube.cpp
+// Whether the layout named `name` ("cascades", "cube") is in this program (always, but in a page's).
+bool map_layout_linked(std::string_view name);
 // Whether the module of technique `t` (effect `e`) is in this program (always, but in a page's).
 bool technique_linked(Technique t);
 bool effect_linked(Effect e);
