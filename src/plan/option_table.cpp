@@ -10,6 +10,19 @@
 #include "plan/options.h"
 #include "plan/post.h"
 
+// A browser page never shows an option's help: its controls carry their own hints, and the
+// pages' tooltips come from the catalogue, which is built with it. So a page's module keeps only
+// a text option's, which messages quote as what its value may be (web/CMakeLists.txt sets
+// PENUMBRA_OPTION_HELP=0 for the pages' library; the help's literals then fold away).
+#ifndef PENUMBRA_OPTION_HELP
+#define PENUMBRA_OPTION_HELP 1
+#endif
+#if !PENUMBRA_OPTION_HELP
+#define make_option_info(name, part, type, help, ...)                                                        \
+    make_option_info(name, part, type, (type) == OptionType::Text ? std::string_view(help) : std::string_view(), \
+                     __VA_ARGS__)
+#endif
+
 namespace penumbra::render {
 namespace {
 
