@@ -12,8 +12,9 @@
 
 namespace penumbra::render {
 
-// The lab's splice (plan/snippets.cpp) is in a page's module only where the lab's exports are
-// (the pages with its panel): no other page makes a LAB variant (Settings::lab is the panel's).
+// The lab's splice (plan/snippet_block.cpp) is in a page's module only where its exercise names it
+// (Exercise::lab, the page with the lab's panel): no other page makes a LAB variant (Settings::lab
+// is the panel's).
 PENUMBRA_WEAK_IN_PAGES std::string snippet_block(std::string_view text, shadow::Encoding e);
 
 namespace {
