@@ -75,7 +75,7 @@ bool plan_cascades(PlanContext& c, const ShadowBounds& b, int n, int& size) {
 }  // namespace
 
 const MapLayout& cascades_layout() {
-    static const MapLayout layout{"cascades", plan_cascades};
+    static const MapLayout layout{plan_cascades};
     return layout;
 }
 

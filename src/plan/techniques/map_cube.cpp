@@ -99,7 +99,7 @@ bool plan_cube(PlanContext& c, const ShadowBounds& b, int, int& asked) {
 }  // namespace
 
 const MapLayout& cube_layout() {
-    static const MapLayout layout{"cube", plan_cube};
+    static const MapLayout layout{plan_cube};
     return layout;
 }
 

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "plan/techniques/reports.h"
@@ -13,12 +12,12 @@ namespace penumbra::render {
 
 // A layout of the shadow map beside one map (technique.h: cascades_layout, cube_layout).
 struct MapLayout {
-    std::string_view name;  // "cascades", "cube"
     // The layout's map passes at `size` texels a tile (cascades: `count` of them; a cube: its
     // faces, `count` unused). false: one map instead, a note saying why. Cascades may return
     // `size` smaller (their atlas cut to the context's largest texture), for the one map too.
     bool (*plan)(PlanContext& c, const ShadowBounds& b, int count, int& size);
 };
+
 namespace map_parts {
 
 inline constexpr const char* kMap = "shadow-map";
