@@ -1,6 +1,7 @@
-// The course exercises' time budget's predicted error and their error target (exercises.h:
-// budget-ms, max-error): what each frame's settings are chosen by, measured on frames drawn again
-// offscreen after the window's frame is timed.
+// The course exercises' time budget and error target (exercises.h: budget-ms, max-error): what
+// each frame's settings are chosen by, measured on frames drawn again offscreen after the window's
+// frame is timed. The host reaches all of it through course_trade()'s hooks, so that a browser
+// page's module has it only where its exercise offers the controls (Exercise::trade).
 #include <chrono>
 #include <optional>
 #include <utility>
@@ -39,14 +40,6 @@ void CourseApp::predict_budget_error(int width, int height) {
     budget_error_ = render::predicted_error_pct(f, budget_->map_size(budget_->rung()));
 }
 
-void CourseApp::reset_error_target() {
-    error_ladder_.reset();
-    error_choice_.reset();
-    error_refusal_.clear();
-    error_age_ = 0;
-    error_choices_ = 0;
-}
-
 void CourseApp::choose_for_error(int width, int height) {
     // Two frames drawn offscreen for a still frame would choose what they chose before.
     const EdgesFrame frame = edges_frame(width, height);
@@ -70,6 +63,30 @@ void CourseApp::choose_for_error(int width, int height) {
     renderer_->gpu_timer().enable(gpu_timing_);
     if (c && in_use >= 0) render::keep_rung(*c, in_use, max_error_, kErrorKeep);
     error_choice_ = std::move(c);
+}
+
+void CourseApp::start_trade() {
+    if (budget_ms_ > 0.0 && !budget_)
+        budget_.emplace(budget_ms_, exercise_settings(), renderer_->caps().depth_texture, renderer_->caps().max_target_size());
+}
+
+render::Settings CourseApp::traded(render::Settings s) const {
+    if (budget_ && render::budget_refusal(s).empty()) s = budget_->apply(s);
+    if (error_choice_ && render::max_error_refusal(s).empty()) s = error_ladder_->at_rung(error_choice_->rung().rung, s);
+    return s;
+}
+
+void CourseApp::after_trade(double ms, int width, int height) {
+    if (budget_) {
+        budget_->observe(ms);
+        predict_budget_error(width, height);  // after the frame's time: it is not part of it
+    }
+    if (max_error_ > 0.0) choose_for_error(width, height);  // for the next frame, after this one's time
+}
+
+const CourseTrade& course_trade() {
+    static const CourseTrade hooks{&CourseApp::start_trade, &CourseApp::traded, &CourseApp::after_trade};
+    return hooks;
 }
 
 }  // namespace penumbra::examples

@@ -119,6 +119,15 @@ protected:
 
 using OptionValues = std::vector<std::pair<std::string_view, std::string_view>>;
 
+// budget-ms and max-error's code: the hooks it gives the exercises' host (exercises.h,
+// examples/exercise_budget.cpp). The catalogue (catalog_main.cpp) has no host and never draws;
+// there the name is weak and null.
+struct CourseTrade;
+#ifdef PENUMBRA_CATALOG_ONLY
+__attribute__((weak))
+#endif
+const CourseTrade& course_trade();
+
 // One exercise: its page, its controls, its keys and its frame.
 struct Exercise {
     std::string_view name;    // "w09p1": the page (w09p1.html) and --exercise
@@ -165,6 +174,10 @@ struct Exercise {
     // The shader lab's splice (render::snippet_block) where the exercise's page has the lab's panel
     // (web/pages.py's LAB_EXERCISES): only then does a page's module link the lab's GLSL scan.
     std::string (*lab)(std::string_view text, shadow::Encoding e) = nullptr;
+    // budget-ms and max-error's code (course_trade) where the exercise offers their control: only
+    // then does a page's module link it; elsewhere a page refuses them by name. The desktop app
+    // has it for every exercise.
+    const CourseTrade& (*trade)() = nullptr;
 };
 // Whether the exercise's camera flies (a scene of its own).
 inline bool flies(const Exercise& x) { return x.make_scene != nullptr; }

@@ -11,13 +11,26 @@
 #include "plan/json.h"
 #include "plan/options.h"
 #include "plan/techniques/technique.h"
+#include "plan/weak_in_pages.h"
 #include "scene/eye.h"
 #include "scenes/portal_scene.h"
 #include "shadow/encoding.h"
 
 namespace penumbra::examples {
 
+// In the browser a page's module has budget-ms and max-error's code only where its exercise
+// names it (Exercise::trade); null here otherwise.
+PENUMBRA_WEAK_IN_PAGES const CourseTrade& course_trade();
+
 namespace {
+
+const CourseTrade& (*trade_getter())() { return &course_trade; }
+
+// A trade option set on in a page without its code.
+std::string trade_not_linked(std::string_view option, std::string_view value) {
+    return std::string(option) + " " + std::string(value) +
+           ": not in this page's code (each page loads only what it offers; an exercise page that offers it has it)";
+}
 
 // The job options the exercises take: time (both clocks, paused), the eye, the time budget and the
 // error target.
@@ -243,6 +256,7 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
     if (name == "budget-ms") {
         render::Options t;
         if (std::string err = render::parse_option(t, name, value); !err.empty()) return without_dashes(err);
+        if (t.job.budget_ms > 0.0 && !trade()) return trade_not_linked(name, value);
         if (t.job.budget_ms > 0.0)
             if (std::string why = render::budget_refusal(exercise_settings()); !why.empty()) return without_dashes(why);
         budget_ms_ = t.job.budget_ms;
@@ -258,6 +272,7 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
     if (name == "max-error") {
         render::Options t;
         if (std::string err = render::parse_option(t, name, value); !err.empty()) return without_dashes(err);
+        if (t.job.max_error > 0.0 && !trade()) return trade_not_linked(name, value);
         if (t.job.max_error > 0.0)
             if (std::string why = render::max_error_refusal(exercise_settings()); !why.empty()) return without_dashes(why);
         max_error_ = t.job.max_error;
@@ -359,6 +374,19 @@ void CourseApp::create_gl(const platform::Platform& context) {
     renderer_->set_snippets(snippets_);  // the lab's: they passed the scan (set_snippets)
 }
 
+const CourseTrade* CourseApp::trade() const {
+    const auto get = trade_getter();
+    return get ? &get() : nullptr;
+}
+
+void CourseApp::reset_error_target() {
+    error_ladder_.reset();
+    error_choice_.reset();
+    error_refusal_.clear();
+    error_age_ = 0;
+    error_choices_ = 0;
+}
+
 // The objects died with the context; deleting their names on a lost context does nothing.
 void CourseApp::drop_gl() {
     renderer_.reset();
@@ -403,8 +431,7 @@ void CourseApp::render_plan(const scene::Scene& sc, const render::Settings& s, c
 render::Settings CourseApp::frame_settings() const {
     render::Settings s = exercise_settings();
     // The budget's choice before the lab's: the lab keeps its own packing (render::lab_settings).
-    if (budget_ && render::budget_refusal(s).empty()) s = budget_->apply(s);
-    if (error_choice_ && render::max_error_refusal(s).empty()) s = error_ladder_->at_rung(error_choice_->rung().rung, s);
+    if (const CourseTrade* t = trade()) s = (this->*t->apply)(s);
     if (lab_ && !own_scene()) {
         const render::Settings lab = render::lab_settings(s);
         if (render::lab_refusal(lab).empty()) return lab;
@@ -491,8 +518,8 @@ render::FrameInputs CourseApp::light_view(render::Output output, bool ortho, con
 
 void CourseApp::draw(int width, int height) {
     if (!renderer_) throw std::runtime_error("no GL context");
-    if (budget_ms_ > 0.0 && !budget_)
-        budget_.emplace(budget_ms_, exercise_settings(), renderer_->caps().depth_texture, renderer_->caps().max_target_size());
+    const CourseTrade* trade_code = trade();
+    if (trade_code) (this->*trade_code->start)();
     const auto start = std::chrono::steady_clock::now();
     scene::animate_course(course_, clock_.light, clock_.jump);
     // The eye: the scene's camera, or (where the light now is) inside the teapot's shadow.
@@ -519,11 +546,7 @@ void CourseApp::draw(int width, int height) {
     renderer_->read_window(0, 0, 1, 1);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     timing_.add(ms);
-    if (budget_) {
-        budget_->observe(ms);
-        predict_budget_error(width, height);  // after the frame's time: it is not part of it
-    }
-    if (max_error_ > 0.0) choose_for_error(width, height);  // for the next frame, after this one's time
+    if (trade_code) (this->*trade_code->after)(ms, width, height);
     // The GPU times that have arrived (a few frames old), without waiting.
     timing_.add_gpu(timer.take(false));
 }

@@ -289,6 +289,20 @@ private:
     double error_ms_ = 0.0;
     void reset_error_target();
     void choose_for_error(int width, int height);
+    // budget-ms and max-error's code (exercise_budget.cpp), reached through trade(): null in a
+    // page whose exercise does not name it (Exercise::trade).
+    friend const CourseTrade& course_trade();
+    const CourseTrade* trade() const;
+    void start_trade();                                 // before a frame: the budget's controller
+    render::Settings traded(render::Settings s) const;  // the frame's settings with their choice
+    void after_trade(double ms, int width, int height);  // after the frame's time: what they measure
+};
+
+// The hooks course_trade() gives CourseApp.
+struct CourseTrade {
+    void (CourseApp::*start)();
+    render::Settings (CourseApp::*apply)(render::Settings s) const;
+    void (CourseApp::*after)(double ms, int width, int height);
 };
 
 }  // namespace penumbra::examples

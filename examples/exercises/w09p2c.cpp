@@ -62,6 +62,7 @@ Exercise w09p2c() {
     x.defaults = {{"light-fit", "tight"}, {"map-size", "1024"}};
     x.modules = {render::shadow_map_module};
     x.lab = render::snippet_block;
+    x.trade = course_trade;
     return x;
 }
 

@@ -154,6 +154,17 @@ TEST(ExerciseList, EachExerciseNamesTheMapLayoutsItsFramesTake) {
     for (const auto& x : exercise_list()) EXPECT_EQ(x.lab != nullptr, x.name == "w09p2c") << x.name;
 }
 
+// budget-ms and max-error's code: named by the exercises that offer either control, and by no
+// other (a page links it only where named). W09P2c offers them, so the rule is not empty.
+TEST(ExerciseList, TheExercisesThatOfferTheBudgetOrTheErrorTargetNameTheirCode) {
+    using namespace penumbra::examples;
+    const auto offers_trade = [](const Exercise& x) { return offers(x, "budget-ms") || offers(x, "max-error"); };
+    for (const auto& x : exercise_list()) EXPECT_EQ(x.trade != nullptr, offers_trade(x)) << x.name;
+    const Exercise& w09p2c = *find_exercise("w09p2c");
+    EXPECT_TRUE(offers(w09p2c, "budget-ms") && offers(w09p2c, "max-error"));
+    EXPECT_TRUE(w09p2c.trade == &course_trade);
+}
+
 // A browser page links only the technique and effect modules and the frame shapes its exercise
 // names: they cover every technique, effect and shape its frame, its controls and its defaults
 // reach (the controls: the stencil exercise without its mirror, soft without Gooch or the light

@@ -3,7 +3,8 @@
 // the URL keeps the budget, and the extremes hold whatever SwiftShader's speed: a second a frame
 // climbs to the largest map, a microsecond stays at the smallest and says it is over; the readout
 // gives the model's predicted error, more for the smallest map than the largest. A value the
-// select does not list (from the URL or the module) is taken as it is. Never a timing check.
+// select does not list (from the URL or the module) is taken as it is. A page whose exercise offers
+// no such control refuses it by name. Never a timing check.
 import { runTest, openPage, waitFrames, check } from './harness.mjs';
 
 const state = (page) => page.evaluate(() => window.penumbra.state());
@@ -81,4 +82,18 @@ await runTest('web.budget', async ({ server, browser }) => {
   check((await state(again.page)).options['budget-ms'] === '16', JSON.stringify((await state(again.page)).options));
   check(again.problems.length === 0, again.problems.join('; '));
   await again.context.close();
+
+  // A page whose exercise offers neither control has neither's code (Exercise::trade): W09P1's
+  // refuses both by name and runs on, where this page (the control, above) takes them.
+  const other = await openPage(browser, `${server.url}/w09p1.html`);
+  for (const [name, value] of [['budget-ms', '16'], ['max-error', '0.1']]) {
+    const refused = await other.page.evaluate(([n, v]) => window.penumbra.setOption(n, v), [name, value]);
+    check(new RegExp(`^${name} ${value}: not in this page's code`).test(refused), `w09p1 took ${name}=${value}: '${refused}'`);
+  }
+  await waitFrames(other.page, 3);
+  const rest = await state(other.page);
+  check(rest.status === 'running' && rest.budget === null && rest.errorTarget === null && !('budget-ms' in rest.options),
+        `w09p1 after the refusals: ${JSON.stringify({ status: rest.status, budget: rest.budget, errorTarget: rest.errorTarget })}`);
+  check(other.problems.length === 0, other.problems.join('; '));
+  await other.context.close();
 });
