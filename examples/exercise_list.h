@@ -19,6 +19,7 @@
 #include "fly_camera.h"
 #include "plan/options.h"
 #include "plan/plan.h"
+#include "scene/scene.h"
 
 namespace penumbra::gl {
 struct Caps;
@@ -178,6 +179,11 @@ struct Exercise {
     // then does a page's module link it; elsewhere a page refuses them by name. The desktop app
     // has it for every exercise.
     const CourseTrade& (*trade)() = nullptr;
+    // The course's portal scene (scene::make_course_portal) where the exercise's frames take the
+    // portal effect (render::portal_module among `modules`), and the eye moved into a shadow
+    // (scene::place_eye_in_shadow) where it offers `eye`: only then does a page's module link them.
+    scene::Portal (*portal)() = nullptr;
+    bool (*eye_in_shadow)(scene::Scene& scene) = nullptr;
 };
 // Whether the exercise's camera flies (a scene of its own).
 inline bool flies(const Exercise& x) { return x.make_scene != nullptr; }

@@ -16,18 +16,25 @@
 #include "scenes/portal_scene.h"
 #include "shadow/encoding.h"
 
+// In the browser a page's module has these only where its exercise names them (Exercise::trade,
+// portal, eye_in_shadow); null here otherwise.
+namespace penumbra::scene {
+PENUMBRA_WEAK_IN_PAGES Portal make_course_portal();
+PENUMBRA_WEAK_IN_PAGES bool place_eye_in_shadow(Scene& scene);
+}  // namespace penumbra::scene
+
 namespace penumbra::examples {
 
-// In the browser a page's module has budget-ms and max-error's code only where its exercise
-// names it (Exercise::trade); null here otherwise.
 PENUMBRA_WEAK_IN_PAGES const CourseTrade& course_trade();
 
 namespace {
 
 const CourseTrade& (*trade_getter())() { return &course_trade; }
+scene::Portal (*portal_getter())() { return &scene::make_course_portal; }
+bool (*eye_getter())(scene::Scene&) { return &scene::place_eye_in_shadow; }
 
-// A trade option set on in a page without its code.
-std::string trade_not_linked(std::string_view option, std::string_view value) {
+// An option set on in a page without its code.
+std::string not_in_page(std::string_view option, std::string_view value) {
     return std::string(option) + " " + std::string(value) +
            ": not in this page's code (each page loads only what it offers; an exercise page that offers it has it)";
 }
@@ -250,13 +257,14 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
     if (name == "eye") {
         render::Options t;
         if (std::string err = render::parse_option(t, name, value); !err.empty()) return without_dashes(err);
+        if (t.job.eye_in_shadow && !eye_getter()) return not_in_page(name, value);
         eye_in_shadow_ = t.job.eye_in_shadow;
         return {};
     }
     if (name == "budget-ms") {
         render::Options t;
         if (std::string err = render::parse_option(t, name, value); !err.empty()) return without_dashes(err);
-        if (t.job.budget_ms > 0.0 && !trade()) return trade_not_linked(name, value);
+        if (t.job.budget_ms > 0.0 && !trade()) return not_in_page(name, value);
         if (t.job.budget_ms > 0.0)
             if (std::string why = render::budget_refusal(exercise_settings()); !why.empty()) return without_dashes(why);
         budget_ms_ = t.job.budget_ms;
@@ -272,7 +280,7 @@ std::string CourseApp::set_option(std::string_view name, std::string_view value)
     if (name == "max-error") {
         render::Options t;
         if (std::string err = render::parse_option(t, name, value); !err.empty()) return without_dashes(err);
-        if (t.job.max_error > 0.0 && !trade()) return trade_not_linked(name, value);
+        if (t.job.max_error > 0.0 && !trade()) return not_in_page(name, value);
         if (t.job.max_error > 0.0)
             if (std::string why = render::max_error_refusal(exercise_settings()); !why.empty()) return without_dashes(why);
         max_error_ = t.job.max_error;
@@ -402,7 +410,9 @@ int CourseApp::gpu_discarded() const { return renderer_ ? renderer_->gpu_timer()
 // ---- drawing --------------------------------------------------------------------------------
 
 const scene::Scene& CourseApp::course_scene_for(const render::Settings& s) {
-    if (s.has(render::Effect::Portal) && !course_.scene.portal) course_.scene.portal = scene::make_course_portal();
+    // (A page without the portal's scene refuses the effect: render::unlinked_problem.)
+    if (s.has(render::Effect::Portal) && !course_.scene.portal)
+        if (const auto make = portal_getter()) course_.scene.portal = make();
     return course_.scene;
 }
 
@@ -524,7 +534,8 @@ void CourseApp::draw(int width, int height) {
     scene::animate_course(course_, clock_.light, clock_.jump);
     // The eye: the scene's camera, or (where the light now is) inside the teapot's shadow.
     course_.scene.camera = scene_camera_;
-    if (eye_in_shadow_) scene::place_eye_in_shadow(course_.scene);
+    if (eye_in_shadow_)
+        if (const auto place = eye_getter()) place(course_.scene);
     width_ = width;
     height_ = height;
     plan_text_.clear();

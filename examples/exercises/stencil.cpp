@@ -1,5 +1,6 @@
 // Stencil effects: the outline, the mirror and the portal, with any shadow technique.
 #include "common.h"
+#include "scenes/portal_scene.h"
 
 namespace penumbra::examples::exercises {
 
@@ -40,6 +41,7 @@ Exercise stencil() {
            "planar and volumes keep their shadows in the stencil too"})},
          {{"effects", "outline"}}};
     x.draw = draw_colour;
+    x.portal = scene::make_course_portal;
     x.modules = {render::shadow_map_module, render::planar_module, render::volumes_module, render::outline_module,
                  render::mirror_module, render::portal_module};
     return x;

@@ -2,6 +2,7 @@
 // drawn over the image, the stencil count in false colour, and the eye moved into the teapot's
 // shadow (where depth-pass fails).
 #include "common.h"
+#include "scene/eye.h"
 
 namespace penumbra::examples::exercises {
 
@@ -40,6 +41,7 @@ Exercise volumes() {
     x.frame = {{"technique", "volumes"}};
     x.draw = draw;
     x.modules = {render::volumes_module};
+    x.eye_in_shadow = scene::place_eye_in_shadow;
     return x;
 }
 

@@ -4,6 +4,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "plan/weak_in_pages.h"
 #include "scene/marble.h"
 #include "scenes/portal_scene.h"
 #include "scene/primitives.h"
@@ -11,7 +12,14 @@
 
 namespace penumbra::scene {
 
+// The pages make the course scene without its portal, and a page's module has the portal's scene
+// only where its exercise names it (examples/exercise_list.h: Exercise::portal); null there otherwise.
+PENUMBRA_WEAK_IN_PAGES Portal make_course_portal();
+
 namespace {
+
+Portal (*portal_getter())() { return &make_course_portal; }
+
 constexpr float kTableSize = 4.0f;       // the table top is a 4 x 4 square at y = 0
 constexpr float kTeapotScale = 0.25f;    // the Newell teapot is about 3.15 units tall: 0.79 here
 constexpr float kLightRadius = 2.0f;     // the light circles the table's centre...
@@ -92,7 +100,8 @@ CourseScene make_course_scene(int teapot_level, bool portal, bool marble_now) {
     s.camera.yfov = glm::radians(45.0f);
     s.camera.znear = 0.1f;
     s.camera.zfar = 30.0f;
-    if (portal) s.portal = make_course_portal();  // drawn only under --effects portal
+    if (portal)  // drawn only under --effects portal
+        if (const auto make = portal_getter()) s.portal = make();
 
     animate_course(c, 0.0, 0.0);
     return c;

@@ -11,7 +11,9 @@
 #include "exercises.h"
 #include "plan/frames/frame.h"
 #include "plan/techniques/technique.h"
+#include "scene/eye.h"
 #include "scenes/course_scene.h"
+#include "scenes/portal_scene.h"
 #include "../unit/full_caps.h"
 
 using penumbra::examples::CourseApp;
@@ -163,6 +165,21 @@ TEST(ExerciseList, TheExercisesThatOfferTheBudgetOrTheErrorTargetNameTheirCode) 
     const Exercise& w09p2c = *find_exercise("w09p2c");
     EXPECT_TRUE(offers(w09p2c, "budget-ms") && offers(w09p2c, "max-error"));
     EXPECT_TRUE(w09p2c.trade == &course_trade);
+}
+
+// The portal's scene and the eye moved into a shadow: named by the exercises whose frames take the
+// portal effect (the portal module) and that offer `eye`, and by no other. The stencil exercise
+// and volumes have them, so neither rule is empty.
+TEST(ExerciseList, ThePortalAndTheEyeInShadowAreNamedWhereOffered) {
+    using namespace penumbra;
+    using namespace penumbra::examples;
+    for (const auto& x : exercise_list()) {
+        const bool portal = std::find(x.modules.begin(), x.modules.end(), &render::portal_module) != x.modules.end();
+        EXPECT_EQ(x.portal != nullptr, portal) << x.name;
+        EXPECT_EQ(x.eye_in_shadow != nullptr, offers(x, "eye")) << x.name;
+    }
+    EXPECT_TRUE(find_exercise("stencil")->portal == &scene::make_course_portal);
+    EXPECT_TRUE(find_exercise("volumes")->eye_in_shadow == &scene::place_eye_in_shadow);
 }
 
 // A browser page links only the technique and effect modules and the frame shapes its exercise
