@@ -3,7 +3,8 @@
 // eye inside the teapot's shadow at a fixed time, depth-pass's visibility differs from depth-fail's
 // in a large share of the pixels (its count starts one too low) and auto's equals depth-fail's;
 // the eye, the volumes and the stencil count view each change the picture; the browser's frames
-// match `penumbra render`'s (headless EGL) for the eye in the shadow; no console or GL error.
+// match `penumbra render`'s (headless EGL) for the eye in the shadow; no console or GL error; a page
+// whose exercise does not offer the eye (W09P1) refuses it by name.
 // usage: volumes.mjs PENUMBRA_CLI OUT_DIR
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
@@ -114,4 +115,14 @@ await runTest('web.volumes', async ({ server, browser }) => {
     }
     await context.close();
   }
+
+  // The eye moved into a shadow is in this page's module (its exercise offers it) and in no page
+  // whose exercise does not: W09P1's refuses it by name and runs on.
+  const other = await openPage(browser, `${server.url}/w09p1.html`);
+  const refused = await other.page.evaluate(() => window.penumbra.setOption('eye', 'in-shadow'));
+  check(/^eye in-shadow: not in this page's code/.test(refused), `w09p1 took eye=in-shadow: '${refused}'`);
+  check((await other.page.evaluate(() => window.penumbra.setOption('eye', 'scene'))) === '', 'w09p1 refused eye=scene');
+  check((await other.page.evaluate(() => window.penumbra.state())).status === 'running', 'w09p1 stopped after the refusal');
+  check(other.problems.length === 0, other.problems.join('; '));
+  await other.context.close();
 });
