@@ -382,18 +382,7 @@ void CourseApp::create_gl(const platform::Platform& context) {
     renderer_->set_snippets(snippets_);  // the lab's: they passed the scan (set_snippets)
 }
 
-const CourseTrade* CourseApp::trade() const {
-    const auto get = trade_getter();
-    return get ? &get() : nullptr;
-}
-
-void CourseApp::reset_error_target() {
-    error_ladder_.reset();
-    error_choice_.reset();
-    error_refusal_.clear();
-    error_age_ = 0;
-    error_choices_ = 0;
-}
+const CourseTrade* CourseApp::trade() const { return trade_getter() ? &trade_getter()() : nullptr; }
 
 // The objects died with the context; deleting their names on a lost context does nothing.
 void CourseApp::drop_gl() {

@@ -287,7 +287,14 @@ private:
     EdgesFrame error_frame_;  // the frame it was made on
     long error_choices_ = 0;
     double error_ms_ = 0.0;
-    void reset_error_target();
+    // (Here, not with the error target's code: every page calls it.)
+    void reset_error_target() {
+        error_ladder_.reset();
+        error_choice_.reset();
+        error_refusal_.clear();
+        error_age_ = 0;
+        error_choices_ = 0;
+    }
     void choose_for_error(int width, int height);
     // budget-ms and max-error's code (exercise_budget.cpp), reached through trade(): null in a
     // page whose exercise does not name it (Exercise::trade).
