@@ -84,7 +84,8 @@ bool frame(const platform::FrameInfo& f) {
     g->width = f.width;
     g->height = f.height;
     // The marble (deferred by main()) once the first frame is on screen: in the second callback,
-    // not the first one, whose frame the browser shows only when it returns.
+    // not the first one, whose frame the browser shows only when it returns. That frame is the
+    // scene lit and unshadowed (CourseApp::draw); the exercise's own frame comes with the marble.
     if (g->callbacks++ > 0) g->app->complete_scene();
     draw_frame();
     return true;

@@ -537,7 +537,14 @@ void CourseApp::draw(int width, int height) {
     // next frame drops it).
     gl::PassTimer& timer = renderer_->gpu_timer();
     timer.begin_group();
-    exercise_->draw(*this, frame_settings(), std::move(in));
+    // A page's first frame (its scene not yet whole: main() deferred the marble) is the scene lit
+    // and unshadowed, one program: on SwiftShader a first frame's time is mostly its programs'
+    // (docs/payload.md). The exercise's own frame comes from the second on, with the marble.
+    render::Settings first;
+    render::parse_option(first, "technique", "none");
+    if (scene_complete()) exercise_->draw(*this, frame_settings(), std::move(in));
+    else if (own_scene()) render_own_scene(first, in);
+    else render_plan(course_.scene, first, in, "");
     timer.end_group();
     timer.set_prefix("");
     // Wait for the frame before the clock stops. glFinish would do on the desktop, but WebGL's
@@ -549,11 +556,6 @@ void CourseApp::draw(int width, int height) {
     if (trade_code) (this->*trade_code->after)(ms, width, height);
     // The GPU times that have arrived (a few frames old), without waiting.
     timing_.add_gpu(timer.take(false));
-}
-
-void CourseApp::set_gpu_timing(bool on) {
-    gpu_timing_ = on;
-    if (renderer_) renderer_->gpu_timer().enable(on);
 }
 
 std::vector<std::uint8_t> CourseApp::read_pixels(int width, int height) {

@@ -147,7 +147,10 @@ public:
     // switched on; on, each frame's plans are timed as one frame (a second plan's passes named
     // "texture: camera", "map view: light-depth view"), read back without waiting a few frames later, and
     // the last kGpuWindow frames kept. It stays on across a context restore.
-    void set_gpu_timing(bool on);
+    void set_gpu_timing(bool on) {
+        gpu_timing_ = on;
+        if (renderer_) renderer_->gpu_timer().enable(on);
+    }
     bool gpu_timing() const { return gpu_timing_; }
     bool gpu_timer_available() const;
     // Each pass's median over the kept frames, and their totals' (frames 0: none read yet).
