@@ -537,11 +537,13 @@ void CourseApp::draw(int width, int height) {
     // next frame drops it).
     gl::PassTimer& timer = renderer_->gpu_timer();
     timer.begin_group();
-    // A page's first frame (its scene not yet whole: main() deferred the marble) is the scene lit
-    // and unshadowed, one program: on SwiftShader a first frame's time is mostly its programs'
-    // (docs/payload.md). The exercise's own frame comes from the second on, with the marble.
-    render::Settings first;
-    render::parse_option(first, "technique", "none");
+    // A page's first frame (main() deferred the marble) is the scene lit and unshadowed, one program:
+    // a first frame's time is mostly its programs' (docs/payload.md). The exercise's comes next.
+    static const render::Settings first = [] {
+        render::Settings f;
+        render::parse_option(f, "technique", "none");
+        return f;
+    }();
     if (scene_complete()) exercise_->draw(*this, frame_settings(), std::move(in));
     else if (own_scene()) render_own_scene(first, in);
     else render_plan(course_.scene, first, in, "");
