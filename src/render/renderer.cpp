@@ -20,7 +20,7 @@ void set_uniform(const gl::Program& p, const Uniform& u) {
 
 }  // namespace
 
-Renderer::Renderer(gl::Caps caps) : caps_(std::move(caps)), timer_(caps_.timer_query) { probe_unorm_rounding(); }
+Renderer::Renderer(gl::Caps caps) : caps_(std::move(caps)), timer_(caps_.timer_query) {}
 Renderer::~Renderer() = default;
 
 void Renderer::probe_unorm_rounding() {
@@ -55,7 +55,8 @@ void Renderer::probe_unorm_rounding() {
     caps_.unorm_probe = {px[0], px[1], px[2]};
 }
 
-std::string Renderer::unorm_report() const {
+std::string Renderer::unorm_report() {
+    if (caps_.unorm_probe[0] < 0) probe_unorm_rounding();
     const auto& b = caps_.unorm_probe;
     const std::string kind = caps_.unorm_rounds()   ? "round"
                              : caps_.unorm_floors() ? "floor"

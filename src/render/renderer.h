@@ -26,7 +26,8 @@ namespace penumbra::render {
 class Renderer {
 public:
     // `caps` from gl::probe_caps on the current context; the renderer adds what its unorm8 probe
-    // finds (Caps::unorm_probe).
+    // finds (Caps::unorm_probe) when unorm_report() first asks, not here: the probe is a program
+    // compiled, drawn and read back, which a page's first frame would wait for (docs/payload.md).
     explicit Renderer(gl::Caps caps);
     ~Renderer();
     Renderer(const Renderer&) = delete;
@@ -73,10 +74,10 @@ public:
     // GPU time per pass (EXT_disjoint_timer_query, where Caps::timer_query): off until enabled;
     // each frame executed while it is on brackets its passes that draw, and take() reads them.
     gl::PassTimer& gpu_timer() { return timer_; }
-    // How this context converts float to unorm8, found by a probe when the renderer was made, in
-    // one line for `penumbra caps` and `render -v` (the packing stores the same bytes either way):
+    // How this context converts float to unorm8, found by a probe on the first call, in one line
+    // for `penumbra caps` and `render -v` (the packing stores the same bytes either way):
     // "float -> unorm8 conversion: round (probed: ... stored as 1, 129, 255; ...)".
-    std::string unorm_report() const;
+    std::string unorm_report();
     // Triangle lists (Draw::triangles: shadow volumes) uploaded since the renderer was made, and
     // those held on the context now: a list a later plan keeps (the same pointer) is drawn from
     // its buffer, not uploaded again.

@@ -316,7 +316,7 @@ int run_shaders(const std::string& dir) {
 int run_caps() {
     auto ctx = make_context();
     std::printf("%s\n%s\n", ctx->description().c_str(), gl::probe_caps(*ctx).summary().c_str());
-    const render::Renderer r(gl::probe_caps(*ctx));
+    render::Renderer r(gl::probe_caps(*ctx));
     std::printf("%s\n", r.unorm_report().c_str());
     tools::print_implementation(*ctx, gl::probe_caps(*ctx));
     return 0;
