@@ -39,6 +39,16 @@ inline constexpr bool kErrorQueryWaits = true;
 inline constexpr bool kErrorQueryWaits = false;
 #endif
 
+// After making or filling a GL object (a buffer, a texture, a render target): natively a
+// check_errors() now; in the browser nothing, and the frame's one check names any error with a
+// wider span. There each check would wait for the GPU process to run what came before, and a page
+// makes its scene's buffers and textures one after the other while it starts: the main thread
+// would wait for every upload instead of going on to the first frame (docs/payload.md).
+inline void check_made(const char* what, const char* file = nullptr, int line = 0) {
+    if constexpr (!kErrorQueryWaits) check_errors(what, file, line);
+    else (void)what, (void)file, (void)line;
+}
+
 // Checked builds (Debug, or PENUMBRA_GL_CHECKS=1): a glGetError after every GL call (PENUMBRA_GL)
 // and state change, and uniforms the program does not declare refused.
 #if defined(PENUMBRA_GL_CHECKS) || !defined(NDEBUG)

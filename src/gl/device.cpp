@@ -78,7 +78,7 @@ void Device::invalidate() {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     program_ = 0;
     glUseProgram(0);
-    check_errors("Device::invalidate", __FILE__, __LINE__);
+    check_made("Device::invalidate", __FILE__, __LINE__);
 }
 
 MeshBuffers Device::upload_mesh(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,

@@ -34,7 +34,7 @@ Buffer::Buffer(BufferKind kind, const void* data, std::size_t bytes, const char*
     const GLenum target = kind == BufferKind::Vertex ? GL_ARRAY_BUFFER : GL_ELEMENT_ARRAY_BUFFER;
     PENUMBRA_GL(glBindBuffer(target, id));
     PENUMBRA_GL(glBufferData(target, static_cast<GLsizeiptr>(bytes), data, dynamic ? GL_DYNAMIC_DRAW : GL_STATIC_DRAW));
-    check_errors(label, __FILE__, __LINE__);
+    check_made(label, __FILE__, __LINE__);
 }
 
 void Buffer::update(const void* data, std::size_t bytes) {
@@ -75,7 +75,7 @@ Texture::Texture(const TextureDesc& d) : width_(d.width), height_(d.height), for
     const GLint wrap = d.wrap == Wrap::Repeat && !d.cube ? GL_REPEAT : GL_CLAMP_TO_EDGE;
     PENUMBRA_GL(glTexParameteri(target, GL_TEXTURE_WRAP_S, wrap));
     PENUMBRA_GL(glTexParameteri(target, GL_TEXTURE_WRAP_T, wrap));
-    check_errors(d.label, __FILE__, __LINE__);
+    check_made(d.label, __FILE__, __LINE__);
 }
 
 unsigned int Texture::bind_target() const { return cube_ ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D; }
@@ -97,19 +97,19 @@ void Texture::set_level(int level, int width, int height, const std::uint8_t* rg
     if (format_ != TextureFormat::RGBA8) throw Error("Texture::set_level: only RGBA8 textures have levels set here");
     PENUMBRA_GL(glBindTexture(GL_TEXTURE_2D, id()));
     PENUMBRA_GL(glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba));
-    check_errors("Texture::set_level", __FILE__, __LINE__);
+    check_made("Texture::set_level", __FILE__, __LINE__);
 }
 
 void Texture::generate_mipmap() {
     PENUMBRA_GL(glBindTexture(GL_TEXTURE_2D, id()));
     PENUMBRA_GL(glGenerateMipmap(GL_TEXTURE_2D));
-    check_errors("glGenerateMipmap", __FILE__, __LINE__);
+    check_made("glGenerateMipmap", __FILE__, __LINE__);
 }
 
 void Texture::copy_framebuffer(int level, int x, int y, int width, int height, bool alpha) {
     PENUMBRA_GL(glBindTexture(GL_TEXTURE_2D, id()));
     PENUMBRA_GL(glCopyTexImage2D(GL_TEXTURE_2D, level, alpha ? GL_RGBA : GL_RGB, x, y, width, height, 0));
-    check_errors("glCopyTexImage2D", __FILE__, __LINE__);
+    check_made("glCopyTexImage2D", __FILE__, __LINE__);
     if (level == 0) {
         width_ = width;
         height_ = height;
@@ -138,7 +138,7 @@ Renderbuffer::Renderbuffer(RenderbufferFormat format, int width, int height, con
     h_ = Handle<RenderbufferDeleter>(id);
     PENUMBRA_GL(glBindRenderbuffer(GL_RENDERBUFFER, id));
     PENUMBRA_GL(glRenderbufferStorage(GL_RENDERBUFFER, internal, width, height));
-    check_errors(label, __FILE__, __LINE__);
+    check_made(label, __FILE__, __LINE__);
 }
 
 std::size_t Renderbuffer::bytes() const {
@@ -241,7 +241,7 @@ Framebuffer::Framebuffer(const FramebufferDesc& d) {
         throw Error(std::string(d.label) + ": framebuffer incomplete: " + enum_name(status) + (meaning.empty() ? "" : ": " + meaning) +
                     " (attached: " + attachments(d) + ")");
     }
-    check_errors(d.label, __FILE__, __LINE__);
+    check_made(d.label, __FILE__, __LINE__);
 }
 
 // ---- Program --------------------------------------------------------------------------------

@@ -167,12 +167,13 @@ void Renderer::run(const scene::Scene& scene, const FramePlan& plan) {
         timer_.end_pass();
         if (!gl::kErrorQueryWaits && !pass.skipped) gl::check_errors(("the " + pass.name + " pass").c_str());
     }
-    // In the browser one check for the whole frame (each is a stall: gl/check.h).
+    // In the browser one check for the whole frame (each is a stall: gl/check.h), which also
+    // takes what the objects made since the last one raised (gl::check_made).
     if (gl::kErrorQueryWaits) {
         std::string passes;
         for (const Pass& pass : plan.passes)
             if (!pass.skipped) passes += (passes.empty() ? "" : ", ") + pass.name;
-        gl::check_errors(("the frame's passes (" + passes + ")").c_str());
+        gl::check_errors(("the frame's passes (" + passes + ") or the GL objects made for them").c_str());
     }
     timer_.end_frame();
     device_.apply(gl::PipelineState{});
