@@ -422,8 +422,8 @@ int main(int argc, char** argv) {
     // The marble's noise waits for the first frame: it is most of the course scene's making, and the
     // page shows the table in the marble's white until the second frame (docs/payload.md).
     g->app = std::make_unique<examples::CourseApp>(exercise, true);
-    g->app->set_gpu_timing(true);
-    g->app->set_keep_plans(true);  // penumbra_tile_lines  // the readout's GPU time per pass, where the context has a timer
+    g->app->set_gpu_timing(true);  // the readout's GPU time per pass, where the context has a timer
+    g->app->set_keep_plans(true);  // penumbra_tile_lines
     std::string error;
     g->platform = platform::create_web_canvas(platform::CanvasOptions{}, error);
     if (!g->platform) {

@@ -52,6 +52,7 @@
   let lastStatus = '';
   let firstFrameMs = null; // navigation start to the first frame drawn
   let readyMs = null; // navigation start to the scene whole (ready)
+  let bound = false; // the controls bound and set from the module (after the first frame: start)
   let fixedSize = false; // the test hook set the backing store's size
   let capped = false;
   let resolveReady;
@@ -398,25 +399,33 @@
     const search = location.search.length > 8194 ? location.search.slice(0, 8194) : location.search;
     const notes = api.setQuery(search);
     const problems = notes ? notes.split('\n') : [];
-    bindControls();
-    bindFly();
-    bindLab();
-    syncControls();
-    updateUrl();
-    if (problems.length) {
-      console.warn('penumbra: from the URL: ' + problems.join('; '));
-      setNote('from the URL: ' + problems.join('; '));
-    }
-    poll();
+    // The controls are bound and set from the module's state once the first frame is painted, not
+    // before it: that takes the main thread for 30 to 90 ms on a page's start here, and the first
+    // frame needs none of it (the module holds its options, the URL's among them). The module's loop
+    // asked for its animation frame in main(), before this one, so this callback runs after the
+    // first frame's; the timeout lets that frame be painted first (docs/payload.md).
+    requestAnimationFrame(() => setTimeout(() => {
+      bindControls();
+      bindFly();
+      bindLab();
+      syncControls();
+      updateUrl();
+      if (problems.length) {
+        console.warn('penumbra: from the URL: ' + problems.join('; '));
+        setNote('from the URL: ' + problems.join('; '));
+      }
+      poll();
+      setInterval(poll, 250);
+      bound = true;
+    }, 0));
     watchFirstFrame();
-    setInterval(poll, 250);
     watchComplete();
   }
 
   // The module draws its first frame before the scene is whole (the marble's noise comes after it:
   // examples/course_web.cpp); the page is ready, for a student and for the tests, once it is.
   function watchComplete() {
-    if (Module._penumbra_scene_complete()) {
+    if (bound && Module._penumbra_scene_complete()) {
       readyMs = performance.now();
       readyEl.textContent = Math.round(readyMs) + ' ms';
       resolveReady();
