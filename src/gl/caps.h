@@ -53,8 +53,8 @@ struct Caps {
     // How the context turns float colours into unorm8: the bytes it stored for 0.6/255,
     // 128.6/255 and 254.6/255 (1, 129, 255 when it rounds; 0, 128, 254 when it truncates;
     // GLES 3.0 2.1.6.2 allows either of the two closest), found by the renderer's probe
-    // (Renderer::unorm_report), not by probe_caps; -1 until it runs. Informative only: the packing shaders write bytes
-    // that any of these stores keeps (pack.glsl's UNORM_OFFSET).
+    // (Renderer::unorm_report), not by probe_caps; -1 until it runs. Informative only: the
+    // packing shaders write bytes that any of these stores keeps (pack.glsl's UNORM_OFFSET).
     std::array<int, 3> unorm_probe{-1, -1, -1};
     bool unorm_rounds() const { return unorm_probe == std::array<int, 3>{1, 129, 255}; }
     bool unorm_floors() const { return unorm_probe == std::array<int, 3>{0, 128, 254}; }
