@@ -423,7 +423,8 @@
   }
 
   // The module draws its first frame before the scene is whole (the marble's noise comes after it:
-  // examples/course_web.cpp); the page is ready, for a student and for the tests, once it is.
+  // examples/course_web.cpp); the page is ready, for a student and for the tests, once it is and
+  // its controls are bound (start).
   function watchComplete() {
     if (bound && Module._penumbra_scene_complete()) {
       readyMs = performance.now();

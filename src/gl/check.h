@@ -39,7 +39,8 @@ inline constexpr bool kErrorQueryWaits = true;
 inline constexpr bool kErrorQueryWaits = false;
 #endif
 
-// After making or filling a GL object (a buffer, a texture, a render target): natively a
+// After making or filling a GL object (a buffer, a texture, a render target), or setting the
+// device's whole state (gl::Device::invalidate, when a context is new): natively a
 // check_errors() now; in the browser nothing, and the frame's one check names any error with a
 // wider span. There each check would wait for the GPU process to run what came before, and a page
 // makes its scene's buffers and textures one after the other while it starts: the main thread
