@@ -72,7 +72,8 @@ if "$penumbra" truth --help > /dev/null 2>&1; then
       python3 -c 'import json, sys; print(json.loads(sys.stdin.read().strip().splitlines()[-1])["error_pct"])'
   }
   e=$(score chosen.png)
-  python3 -c "import sys; sys.exit(0 if 0 < $e <= 0.1 else 1)" && ok "the chosen frame: $e % of the truth" || bad "chosen: $e %"
+  # 0 where shadow volumes were chosen (timed cheaper than the map on a busy machine): exact.
+  python3 -c "import sys; sys.exit(0 if 0 <= $e <= 0.1 else 1)" && ok "the chosen frame: $e % of the truth" || bad "chosen: $e %"
   "$penumbra" render --time 0.6 --encoding depthtex --filter hard --map-size 128 --aov visibility --out cheapest.png 2> /dev/null
   e=$(score cheapest.png)
   python3 -c "import sys; sys.exit(0 if $e > 0.1 else 1)" && ok "control: map 128 is $e %, over 0.1 %" || bad "control: $e %"
@@ -80,14 +81,18 @@ else
   echo "skipped: the truth (built without Embree)"
 fi
 
-# plan: the line is the first note, and the plan's map is the choice.
+# plan: the line is the first note, and the plan is the choice: map 128, or shadow volumes (as
+# above, where they were timed cheaper) with no map.
 "$penumbra" plan --size 128x128 --max-error 100 --json > plan.json 2> plan.err || bad "plan: exit $?: $(cat plan.err)"
 python3 -c '
 import json
 p = json.load(open("plan.json"))
 assert p["notes"] and p["notes"][0].startswith("max-error 100.000 %"), p["notes"]
 maps = [r for r in p["resources"] if r["name"] == "shadow-map"]
-assert maps and maps[0]["width"] == 128, maps' && ok "plan: the note and the map" || bad "plan: $(head -c 600 plan.json)"
+if p["notes"][0].startswith("max-error 100.000 %: shadow volumes,"):
+    assert not maps and p["settings"]["technique"] == "volumes", (maps, p["settings"]["technique"])
+else:
+    assert maps and maps[0]["width"] == 128, maps' && ok "plan: the note and the map" || bad "plan: $(head -c 600 plan.json)"
 
 expect_refusal() {  # expect_refusal WHAT PATTERN ARGS...
   local what=$1 pattern=$2; shift 2

@@ -57,7 +57,9 @@ await runTest('web.bulb', async ({ server, browser }) => {
     const walked = Math.hypot(c.x - start.x, c.y - start.y, c.z - start.z);
     check(c.moved && Math.abs(walked - 0.5) < 0.01, `two steps of 0.25 m moved the camera ${walked.toFixed(3)} m`);
     const want = { cascades: '1', 'map-size': '1024', 'cube-layout': 'cubemap', filter: 'pcf4x4', 'light-radius': '0.1', aov: 'visibility' };
-    await page.waitForFunction(() => /camera=/.test(location.search), null, { timeout: 5000 });
+    // The URL follows the camera 200 ms after a move, so a later move's update may still be pending
+    // when the first one has put camera= there: wait for the module's whole query.
+    await page.waitForFunction(() => location.search === '?' + window.penumbra.query(), null, { timeout: 5000 });
     const params = new URL(page.url()).searchParams;
     for (const [k, v] of Object.entries(want)) check(params.get(k) === v, `URL ${page.url()}: ${k} is not ${v}`);
     for (const [k, v] of Object.entries(want)) check(s.options[k] === v, `module: ${k} = ${s.options[k]}, not ${v}`);
