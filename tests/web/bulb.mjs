@@ -8,7 +8,7 @@
 // usage: bulb.mjs PENUMBRA_CLI OUT_DIR
 import { mkdirSync } from 'node:fs';
 import path from 'node:path';
-import { runTest, openPage, frameAt, compare, check, checkNoGlErrors, checkMatchesCli, loopMs, setOptions, savePng, waitFrames, tintShares, loseAndRestore, cliFrame, FACE_TINTS }
+import { runTest, openPage, waitForUrlQuery, frameAt, compare, check, checkNoGlErrors, checkMatchesCli, loopMs, setOptions, savePng, waitFrames, tintShares, loseAndRestore, cliFrame, FACE_TINTS }
   from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
@@ -57,9 +57,7 @@ await runTest('web.bulb', async ({ server, browser }) => {
     const walked = Math.hypot(c.x - start.x, c.y - start.y, c.z - start.z);
     check(c.moved && Math.abs(walked - 0.5) < 0.01, `two steps of 0.25 m moved the camera ${walked.toFixed(3)} m`);
     const want = { cascades: '1', 'map-size': '1024', 'cube-layout': 'cubemap', filter: 'pcf4x4', 'light-radius': '0.1', aov: 'visibility' };
-    // The URL follows the camera 200 ms after a move, so a later move's update may still be pending
-    // when the first one has put camera= there: wait for the module's whole query.
-    await page.waitForFunction(() => location.search === '?' + window.penumbra.query(), null, { timeout: 5000 });
+    await waitForUrlQuery(page);
     const params = new URL(page.url()).searchParams;
     for (const [k, v] of Object.entries(want)) check(params.get(k) === v, `URL ${page.url()}: ${k} is not ${v}`);
     for (const [k, v] of Object.entries(want)) check(s.options[k] === v, `module: ${k} = ${s.options[k]}, not ${v}`);

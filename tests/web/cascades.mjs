@@ -11,7 +11,7 @@
 // usage: cascades.mjs PENUMBRA_CLI OUT_DIR
 import { mkdirSync } from 'node:fs';
 import path from 'node:path';
-import { runTest, openPage, frameAt, compare, check, checkNoGlErrors, checkMatchesCli, loopMs, setOptions, savePng, waitFrames, tintShares, loseAndRestore, cliFrame, CASCADE_TINTS }
+import { runTest, openPage, waitForUrlQuery, frameAt, compare, check, checkNoGlErrors, checkMatchesCli, loopMs, setOptions, savePng, waitFrames, tintShares, loseAndRestore, cliFrame, CASCADE_TINTS }
   from './harness.mjs';
 
 const [cli, outDir] = process.argv.slice(2);
@@ -81,9 +81,7 @@ await runTest('web.cascades', async ({ server, browser }) => {
     check(/heading/.test(await page.textContent('#camera')), `the camera readout: '${await page.textContent('#camera')}'`);
     const want = { cascades: '2', 'cascade-split': '0.5', 'cascade-blend': '0.15', 'cascade-snap': 'off', 'map-size': '2048',
                    aov: 'color' };
-    // The URL follows the camera 200 ms after a move, so a later move's update may still be pending
-    // when the first one has put camera= there: wait for the module's whole query.
-    await page.waitForFunction(() => location.search === '?' + window.penumbra.query(), null, { timeout: 5000 });
+    await waitForUrlQuery(page);
     const params = new URL(page.url()).searchParams;
     for (const [k, v] of Object.entries(want)) check(params.get(k) === v, `URL ${page.url()}: ${k} is not ${v}`);
     check(params.get('camera') === s.options.camera, `URL camera ${params.get('camera')}, module ${s.options.camera}`);

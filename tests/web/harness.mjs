@@ -137,9 +137,19 @@ export function check(condition, message) {
 }
 
 // The page's pending GL errors (window.penumbra.glError until 0; at most 16).
+// Waits until the page's URL holds its module's whole query. The URL follows a camera move 200 ms
+// later, so after several moves it may hold an earlier one's query for a while.
+export async function waitForUrlQuery(page) {
+  await page.waitForFunction(() => {
+    const q = window.penumbra.query();
+    return location.search === (q ? '?' + q : '');
+  }, null, { timeout: 5000 });
+}
+
 // The options `want` (name -> value) in the page's URL and its module's state, and again after a
 // reload from that URL: what a student's link keeps.
 export async function checkKeptOverReload(page, want) {
+  await waitForUrlQuery(page);
   const params = new URL(page.url()).searchParams;
   for (const [k, v] of Object.entries(want)) check(params.get(k) === v, `URL ${page.url()}: ${k} is not ${v}`);
   let s = await page.evaluate(() => window.penumbra.state());
