@@ -136,7 +136,6 @@ export function check(condition, message) {
   if (!condition) throw new Error(message);
 }
 
-// The page's pending GL errors (window.penumbra.glError until 0; at most 16).
 // Waits until the page's URL holds its module's whole query. The URL follows a camera move 200 ms
 // later, so after several moves it may hold an earlier one's query for a while.
 export async function waitForUrlQuery(page) {
@@ -161,6 +160,7 @@ export async function checkKeptOverReload(page, want) {
   return s;
 }
 
+// The page's pending GL errors (window.penumbra.glError until 0; at most 16).
 export async function glErrors(page) {
   return page.evaluate(() => {
     const out = [];
