@@ -302,7 +302,7 @@ float shadowVisibility(vec4 shadowCoord, vec3 normal) {
     // the cone from the receiver to the light's disc at d. Their mean depth sizes the filter, so a
     // receiver under stacked casters, or beside a pole's foot, gets the penumbra of the layer over
     // it rather than of all the depths around. With no tap inside (too few taps for a narrow
-    // cone), the mean of all blockers, as Fernando's.
+    // cone), the blocker nearest the light (below).
     vec2 search = coneTexels(zr, SHADOW_SLOPE.z);
     float bias = shadowBias(normal, c);
 #ifdef PCSS_LAYERED
@@ -317,6 +317,19 @@ float shadowVisibility(vec4 shadowCoord, vec3 normal) {
 #endif
     float blockers = 0.0;
     float sum = 0.0;
+#ifdef PCSS_LAYERED
+    // The texel on the receiver's own ray to the light's centre: a blocker there is inside the
+    // cone whatever its depth. The Vogel taps start a sixth of the search's radius out, so a
+    // thin caster across the ray (a pole, a bar) was missed and sized from the casters beside it.
+    float centre = shadowDepth(c.xy);
+    float nearest = 1.0;  // the blockers' least window depth
+    if (c.z > MP(centre + bias)) {
+        inCone = 1.0;
+        sumIn = centre;
+        blockers = 1.0;
+        nearest = centre;
+    }
+#endif
     vec2 dir = start;
     for (int i = 0; i < PCSS_SEARCH_TAPS; ++i) {
         float r = sqrt((float(i) + 0.5) / float(PCSS_SEARCH_TAPS));
@@ -335,15 +348,23 @@ float shadowVisibility(vec4 shadowCoord, vec3 normal) {
 #endif
             blockers += 1.0;
             sum += d;
+#ifdef PCSS_LAYERED
+            nearest = min(nearest, d);
+#endif
         }
         dir = turnGolden(dir);
     }
     if (blockers == 0.0) return 1.0;
 #ifdef PCSS_LAYERED
-    if (inCone > 0.0) {
-        sum = sumIn;
-        blockers = inCone;
+    // None inside any cone: the blockers found lie beside it, and a caster inside it was missed
+    // between the taps. The nearest to the light has the widest cone, so its penumbra is the
+    // widest: the filter then reaches furthest for what the search missed, and counts it soft.
+    if (inCone == 0.0) {
+        sumIn = nearest;
+        inCone = 1.0;
     }
+    sum = sumIn;
+    blockers = inCone;
 #endif
 
     // (2) The penumbra's half-width from the blockers' mean depth; (3) the filter over it.

@@ -71,17 +71,18 @@ PcssConeDepth pcss_cone_depth(float light_size, bool perspective, float receiver
 
 float pcss_blocker_depth(const std::vector<PcssBlocker>& blockers, const PcssConeDepth& cone, bool layered) {
     if (blockers.empty()) return -1.0f;
-    float all = 0.0f, inside = 0.0f;
+    float all = 0.0f, inside = 0.0f, nearest = blockers.front().depth;
     int n_inside = 0;
     for (const PcssBlocker& b : blockers) {
         all += b.depth;
+        nearest = std::min(nearest, b.depth);
         if (b.depth <= cone.deepest(b.rho)) {
             inside += b.depth;
             ++n_inside;
         }
     }
-    if (layered && n_inside > 0) return inside / static_cast<float>(n_inside);
-    return all / static_cast<float>(blockers.size());
+    if (!layered) return all / static_cast<float>(blockers.size());
+    return n_inside > 0 ? inside / static_cast<float>(n_inside) : nearest;
 }
 
 bool pcf_is_corner(Filter filter, glm::vec2 offset) {

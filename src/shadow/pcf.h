@@ -65,7 +65,9 @@ struct PcssBlocker {
 };
 // The window depth that sizes the penumbra (--pcss-blockers): layered, the mean depth of the
 // blockers inside the cone (those that can hide part of the light from this receiver; if none
-// is, all of them); mean, of all of them (Fernando 2005). No blockers: -1 (the receiver is lit).
+// is, the least depth of all: the widest penumbra, so that the filter reaches furthest for a
+// caster the taps missed); mean, of all of them (Fernando 2005). No blockers: -1 (the receiver is
+// lit). The shader's search adds a tap on the receiver's own ray, at rho 0, always inside.
 float pcss_blocker_depth(const std::vector<PcssBlocker>& blockers, const PcssConeDepth& cone, bool layered);
 
 bool pcf_is_corner(Filter filter, glm::vec2 offset);

@@ -337,10 +337,18 @@ TEST(Pcss, StackedCastersTheLayerOverTheReceiverSizesThePenumbra) {
     // The mean lies between the layers: its penumbra is too narrow for the caster over the receiver.
     const auto eye = [&](float w) { return n / (1.0f - w * (f - n) / f); };
     EXPECT_LT(shadow::pcss_radii(size, true, zr, eye(mean), n).penumbra, 0.5f * shadow::pcss_radii(size, true, zr, 4.0f, n).penumbra);
-    // The low caster alone (nothing inside the cone): the mean of all, as Fernando's; none: lit.
-    const std::vector<shadow::PcssBlocker> low(taps.begin() + 3, taps.end());
+    // The low caster alone (nothing inside the cone): its depth; none: lit.
+    std::vector<shadow::PcssBlocker> low(taps.begin() + 3, taps.end());
     EXPECT_FLOAT_EQ(shadow::pcss_blocker_depth(low, cone, true), window(7.5f));
     EXPECT_EQ(shadow::pcss_blocker_depth({}, cone, true), -1.0f);
+    // Beside it a caster nearer the light, also outside the cone (at eye depth 6, 0.1 from the
+    // ray where the cone's radius is 0.6 * 2 / 48 = 0.025): nothing inside, so the nearest sizes
+    // the widest penumbra, where the search may have missed a thin caster between its taps. The
+    // mean of all would be the narrower penumbra between them (the control).
+    low.push_back({window(6.0f), 0.1f});
+    ASSERT_GT(window(6.0f), cone.deepest(0.1f));
+    EXPECT_FLOAT_EQ(shadow::pcss_blocker_depth(low, cone, true), window(6.0f));
+    EXPECT_GT(shadow::pcss_blocker_depth(low, cone, false), window(6.0f) + 0.001f);
 }
 
 TEST(Pcss, RadiiFollowFromSimilarTriangles) {
