@@ -319,8 +319,8 @@ float shadowVisibility(vec4 shadowCoord, vec3 normal) {
     float sum = 0.0;
 #ifdef PCSS_LAYERED
     // The texel on the receiver's own ray to the light's centre: a blocker there is inside the
-    // cone whatever its depth. The Vogel taps start a sixth of the search's radius out, so a
-    // thin caster across the ray (a pole, a bar) was missed and sized from the casters beside it.
+    // cone whatever its depth. The Vogel taps start about a sixth of the search's radius out, and
+    // a thin caster across the ray (a pole, a bar) falls between them.
     float centre = shadowDepth(c.xy);
     float nearest = 1.0;  // the blockers' least window depth
     if (c.z > MP(centre + bias)) {
