@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 namespace penumbra::shadow {
 
@@ -26,25 +27,35 @@ std::array<HalfSpace, 6> clip_volume_half_spaces(const glm::mat4& m) {
             normalized(w - row(1)), normalized(w + row(2)), normalized(w - row(2))};
 }
 
-std::vector<glm::vec3> clip_polygon(const std::vector<glm::vec3>& poly, const HalfSpace& h, float eps) {
-    std::vector<glm::vec3> out;
-    const size_t n = poly.size();
-    if (n == 0) return out;
-    out.reserve(n + 1);
+namespace {
+
+// Sutherland-Hodgman into `out` (room for 2n points: each edge gives at most two), the points of
+// the n at `in` inside `h`; returns how many. clip_polygon and clip_box_by share it, so both
+// give the same points to the bit.
+size_t clip_into(const glm::vec3* in, size_t n, const HalfSpace& h, float eps, glm::vec3* out) {
+    size_t m = 0;
     for (size_t i = 0; i < n; ++i) {
-        const glm::vec3& a = poly[i];
-        const glm::vec3& b = poly[(i + 1) % n];
+        const glm::vec3& a = in[i];
+        const glm::vec3& b = in[(i + 1) % n];
         const float da = signed_distance(h, a);
         const float db = signed_distance(h, b);
         const bool ina = da >= -eps;
         const bool inb = db >= -eps;
-        if (ina) out.push_back(a);
+        if (ina) out[m++] = a;
         if (ina != inb) {
             // One side is beyond eps outside, so da - db is not zero; the crossing is at the plane.
             const float t = std::clamp(da / (da - db), 0.0f, 1.0f);
-            out.push_back(a + t * (b - a));
+            out[m++] = a + t * (b - a);
         }
     }
+    return m;
+}
+
+}  // namespace
+
+std::vector<glm::vec3> clip_polygon(const std::vector<glm::vec3>& poly, const HalfSpace& h, float eps) {
+    std::vector<glm::vec3> out(2 * poly.size());
+    out.resize(clip_into(poly.data(), poly.size(), h, eps, out.data()));
     return out;
 }
 
@@ -87,21 +98,39 @@ std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& p
     // The face loop below builds the six faces whole; with every corner inside every half-space by
     // more than twice the tolerance, nothing clips them and no half-space's plane comes within the
     // tolerance of the box: the result is the six faces as they are, the same points, unclipped.
-    const bool inside = std::all_of(hs.begin(), hs.end(), [&](const HalfSpace& h) {
-        return std::all_of(corners.begin(), corners.end(), [&](const glm::vec3& p) { return signed_distance(h, p) > 2.0f * eps; });
-    });
+    // The same test plane by plane: a plane with every corner inside by more than twice the
+    // tolerance clips nothing of the box (what the loops below make lies within the tolerance of
+    // the box, so at least that far inside it) and its own polygon, beyond the box, is clipped
+    // away whole. Only the others are clipped by, and give polygons: the result is the same
+    // points in the same order, at the cost of the planes that cut the box. A receiver clipped
+    // again by each tile of a map (resolution.cpp) is inside most of the tile's and the camera's
+    // planes, and the 64 tiles' clips were most of --map-size auto's planning time.
+    std::vector<size_t> cut;
+    cut.reserve(hs.size());
+    for (size_t j = 0; j < hs.size(); ++j)
+        if (!std::all_of(corners.begin(), corners.end(), [&](const glm::vec3& p) { return signed_distance(hs[j], p) > 2.0f * eps; }))
+            cut.push_back(j);
+    const bool inside = cut.empty();
 
     const std::array<HalfSpace, 6> box_hs = {HalfSpace(1, 0, 0, -lo.x), HalfSpace(-1, 0, 0, hi.x), HalfSpace(0, 1, 0, -lo.y),
                                              HalfSpace(0, -1, 0, hi.y), HalfSpace(0, 0, 1, -lo.z), HalfSpace(0, 0, -1, hi.z)};
-    const auto clip_all = [&](std::vector<glm::vec3> poly, size_t skip, bool with_box) {
+    // Two buffers swapped from clip to clip, reused by every polygon of the box: no allocation a
+    // clip, of which a tile's planning makes hundreds (clip_into needs room for twice the points).
+    std::vector<glm::vec3> a, b;
+    a.reserve(2 * (10 + cut.size()));
+    b.reserve(2 * (10 + cut.size()));
+    const auto clip_all = [&](std::initializer_list<glm::vec3> start, size_t skip, bool with_box) {
+        a.assign(start);
+        const auto by = [&](const HalfSpace& h) {
+            b.resize(2 * a.size());
+            b.resize(clip_into(a.data(), a.size(), h, eps, b.data()));
+            std::swap(a, b);
+        };
         if (with_box)
-            for (const HalfSpace& h : box_hs) {
-                if (poly.empty()) break;
-                poly = clip_polygon(poly, h, eps);
-            }
-        for (size_t j = 0; j < hs.size() && !poly.empty(); ++j)
-            if (j != skip) poly = clip_polygon(poly, hs[j], eps);
-        out.insert(out.end(), poly.begin(), poly.end());
+            for (size_t j = 0; j < box_hs.size() && !a.empty(); ++j) by(box_hs[j]);
+        for (size_t k = 0; k < cut.size() && !a.empty(); ++k)
+            if (cut[k] != skip) by(hs[cut[k]]);
+        out.insert(out.end(), a.begin(), a.end());
     };
 
     // The box's faces (they satisfy the box's own half-spaces already).
@@ -113,11 +142,11 @@ std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& p
     faces.reserve(24);
     box_face_corners(box, [&](const glm::vec3& p) { faces.push_back(p); });
     if (inside) return faces;
-    for (size_t f = 0; f < faces.size(); f += 4) clip_all({faces.begin() + f, faces.begin() + f + 4}, hs.size(), false);
+    for (size_t f = 0; f < faces.size(); f += 4) clip_all({faces[f], faces[f + 1], faces[f + 2], faces[f + 3]}, hs.size(), false);
     // Each half-space's plane: a square around the box centre's foot on it, larger than the
     // box's section (which lies within `radius` of that foot), clipped by the box and the others.
     const float half = 1.01f * radius + 1e-4f * scale + 1e-30f;
-    for (size_t i = 0; i < hs.size(); ++i) {
+    for (const size_t i : cut) {
         const glm::vec3 n(hs[i]);
         const glm::vec3 foot = centre - signed_distance(hs[i], centre) * n;
         const glm::vec3 t1 = glm::normalize(glm::cross(n, std::fabs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));

@@ -194,6 +194,66 @@ TEST(Convex, ABoxInViewWholeGivesItsCornersOnceOrItsFaces) {
     EXPECT_FALSE(whole);
 }
 
+// clip_box_by as it was before it skipped the planes that hold the whole box: every face clipped
+// by every plane, and a square on every plane clipped by the box and the others.
+std::vector<glm::vec3> clip_by_every_plane(const scene::Bounds& b, const std::vector<HalfSpace>& hs) {
+    const float radius = 0.5f * glm::length(b.max - b.min);
+    const float scale = std::max({radius, std::fabs(b.min.x), std::fabs(b.min.y), std::fabs(b.min.z), std::fabs(b.max.x),
+                                  std::fabs(b.max.y), std::fabs(b.max.z)});
+    const float eps = 1e-5f * scale;
+    const std::vector<HalfSpace> box_hs = {{1, 0, 0, -b.min.x}, {-1, 0, 0, b.max.x}, {0, 1, 0, -b.min.y},
+                                           {0, -1, 0, b.max.y}, {0, 0, 1, -b.min.z}, {0, 0, -1, b.max.z}};
+    std::vector<glm::vec3> out;
+    const auto clip_all = [&](std::vector<glm::vec3> poly, size_t skip, bool with_box) {
+        if (with_box)
+            for (const HalfSpace& h : box_hs)
+                if (!poly.empty()) poly = clip_polygon(poly, h, eps);
+        for (size_t j = 0; j < hs.size() && !poly.empty(); ++j)
+            if (j != skip) poly = clip_polygon(poly, hs[j], eps);
+        out.insert(out.end(), poly.begin(), poly.end());
+    };
+    std::vector<glm::vec3> faces;
+    box_face_corners(b, [&](const glm::vec3& p) { faces.push_back(p); });
+    for (size_t f = 0; f < faces.size(); f += 4) clip_all({faces.begin() + f, faces.begin() + f + 4}, hs.size(), false);
+    const float half = 1.01f * radius + 1e-4f * scale + 1e-30f;
+    for (size_t i = 0; i < hs.size(); ++i) {
+        const glm::vec3 n(hs[i]);
+        const glm::vec3 foot = b.center() - signed_distance(hs[i], b.center()) * n;
+        const glm::vec3 t1 = glm::normalize(glm::cross(n, std::fabs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
+        const glm::vec3 t2 = glm::cross(n, t1);
+        clip_all({foot - half * t1 - half * t2, foot + half * t1 - half * t2, foot + half * t1 + half * t2, foot - half * t1 + half * t2},
+                 i, true);
+    }
+    return out;
+}
+
+TEST(Convex, PlanesThatHoldTheWholeBoxChangeNothingOfItsClip) {
+    // A receiver clipped by one tile of a map (resolution.cpp) lies inside most of the camera's
+    // and the tile's planes; clip_box_by clips by the others only. The same points, in the same
+    // order, as clipping by every plane, over random boxes and planes, many of them beside the box.
+    std::mt19937 gen(56);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    int clipped = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        const glm::vec3 c(4.0f * u(gen), 4.0f * u(gen), 4.0f * u(gen));
+        const glm::vec3 e(1.0f + u(gen), 1.0f + u(gen), 0.5f + 0.5f * u(gen));
+        const scene::Bounds b = box(c - e, c + e);
+        std::vector<HalfSpace> hs;
+        const int planes = 1 + trial % 12;
+        for (int k = 0; k < planes; ++k) {
+            const glm::vec3 n = glm::normalize(glm::vec3(u(gen), u(gen), u(gen)) + glm::vec3(0.0f, 0.0f, 1e-3f));
+            // Through a point near the box: some cut it, some hold all of it.
+            const glm::vec3 at = c + 3.0f * glm::vec3(u(gen), u(gen), u(gen)) - 2.5f * n;
+            hs.emplace_back(n, -glm::dot(n, at));
+        }
+        const std::vector<glm::vec3> expected = clip_by_every_plane(b, clip_planes(hs).unit);
+        ASSERT_EQ(clip_box_by(b, clip_planes(hs)), expected) << "trial " << trial;
+        clipped += !expected.empty() && expected.size() != 24;
+    }
+    // The control that the trials reach the case: most boxes are cut by some plane.
+    EXPECT_GT(clipped, 100);
+}
+
 TEST(Convex, ManyPointsHaveTheHullOfTheirHulls) {
     // Past 1024 points convex_hull drops the points deep inside first; the hull must not change.
     // Its reference: the hull of the parts' hulls, each part too small to be filtered.
