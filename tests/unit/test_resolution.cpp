@@ -149,6 +149,23 @@ TEST(ResolutionPlan, AutoFollowsTheImagesSizeAndAFixedSizeDoesNot) {
     EXPECT_EQ(course_plan(256, 256, "1024").find<render::MapSizeReport>(), nullptr);
 }
 
+TEST(ResolutionPlan, AFrameWithTheSameInputsTakesThePreviousPlansMatch) {
+    // The previous plan's match, marked so that a reuse shows: a size the match would not choose.
+    render::FramePlan before = course_plan(512, 512, "auto");
+    render::MapSizeReport* m = before.find<render::MapSizeReport>();
+    ASSERT_NE(m, nullptr);
+    ASSERT_NE(m->size, 256);
+    m->size = 256;
+    m->why = "marked";
+    const render::FramePlan still = course_plan(512, 512, "auto", &before);
+    EXPECT_EQ(map_width(still), 256) << "the same light, receivers, camera and image: the match taken, not made again";
+    EXPECT_EQ(still.find<render::MapSizeReport>()->why, "marked");
+    // The controls: another image, or no previous plan, and the match is made.
+    EXPECT_EQ(map_width(course_plan(600, 600, "auto", &before)), map_width(course_plan(600, 600, "auto")));
+    EXPECT_NE(map_width(course_plan(600, 600, "auto", &before)), 256);
+    EXPECT_NE(map_width(course_plan(512, 512, "auto")), 256);
+}
+
 TEST(ResolutionPlan, ACubesFacesAreMatchedToo) {
     const scene::LoadResult r = scene::load_gltf(test::test_data_dir() + "/bulb_room.gltf");
     ASSERT_TRUE(r.ok) << r.error;

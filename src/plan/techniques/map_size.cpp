@@ -32,22 +32,59 @@ int auto_largest(const PlanContext& c, int tiles) {
 // and read it at the wrong texel scale. So the frame's first match holds for its later maps.
 const MapSizeReport* matched_before(const PlanContext& c) { return c.plan.find<MapSizeReport>(); }
 
+// Everything the match reads but the maps' windows, which the callers add: the light, the
+// receivers, the camera, the image and the bound. Hashing them is O(n) with a small constant,
+// where the match clips each receiver again by each of a map's 64 tiles: a still frame should
+// not pay for that again (docs/resolution.md has what it cost).
+ContentKey match_inputs(const PlanContext& c, const ShadowBounds& b, const shadow::MatchedImage& image, int largest) {
+    ContentKey key;
+    key.add(c.light.type);
+    key.add(c.light.position);
+    key.add(c.light.direction);
+    key.add(c.light.spot_outer_cone);
+    key.add(c.plan.camera.view_proj);
+    key.add(image.width);
+    key.add(image.height);
+    key.add(image.scaled);
+    key.add(largest);
+    if (!b.receivers.empty()) key.add(b.receivers.data(), b.receivers.size() * sizeof(scene::Bounds));
+    return key;
+}
+
+// The previous plan's match where its inputs were these (a still frame): the same function of the
+// same inputs, so the same size and reasons, without the clipping.
+const MapSizeReport* same_inputs_before(const PlanContext& c, const std::string& inputs) {
+    const MapSizeReport* r = c.previous ? c.previous->find<MapSizeReport>() : nullptr;
+    return r && r->inputs == inputs ? r : nullptr;
+}
+
 }  // namespace
 
 int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrustum& f) {
     if (const MapSizeReport* before = matched_before(c)) return before->size;
     const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
+    ContentKey key = match_inputs(c, b, image, auto_largest(c, 1));
+    key.add(f.view_proj());
+    const std::string inputs = key.str();
+    if (const MapSizeReport* same = same_inputs_before(c, inputs)) return c.plan.put(*same).size;
     const shadow::Demand d =
         shadow::receiver_demand(c.light, b.receivers, c.plan.camera.view_proj, image.width, image.height, f.view_proj());
     const shadow::MatchedSize m = shadow::matched_map_size(static_cast<float>(d.pixels), static_cast<float>(d.share), 1,
                                                            kAutoSmallest, auto_largest(c, 1), d.dense, image.scaled);
-    c.plan.put(MapSizeReport{m.size, m.wanted, m.why});
+    c.plan.put(MapSizeReport{m.size, m.wanted, m.why, inputs});
     return m.size;
 }
 
 int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& fit) {
     if (const MapSizeReport* before = matched_before(c)) return before->size;
     const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
+    ContentKey key = match_inputs(c, b, image, auto_largest(c, shadow::kCubeFaces));
+    for (const shadow::CubeFace& face : fit.faces) {
+        key.add(face.drawn);
+        if (face.drawn) key.add(face.frustum.view_proj());
+    }
+    const std::string inputs = key.str();
+    if (const MapSizeReport* same = same_inputs_before(c, inputs)) return c.plan.put(*same).size;
     shadow::MatchedSize best;
     int face_index = -1;
     for (int i = 0; i < shadow::kCubeFaces; ++i) {
@@ -62,7 +99,7 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& 
     }
     best.why += std::string(" (face ") + shadow::cube_face_name(face_index) + ", the most of the " +
                 std::to_string(fit.drawn()) + " drawn)";
-    c.plan.put(MapSizeReport{best.size, best.wanted, best.why});
+    c.plan.put(MapSizeReport{best.size, best.wanted, best.why, inputs});
     return best.size;
 }
 

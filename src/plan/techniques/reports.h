@@ -43,6 +43,8 @@ struct MapSizeReport {
     int size = 0;
     int wanted = 0;  // the texels a side two texels a pixel want (MatchedSize::wanted; 0: nothing in view)
     std::string why;
+    // The match's inputs (map_size.cpp): a later plan with the same key takes this match.
+    std::string inputs;
     static std::string text(const MapSizeReport& r);
     static std::string json(const MapSizeReport& r);
 };
