@@ -97,10 +97,7 @@ bool may_shadow(const scene::Bounds& caster, const std::vector<glm::vec3>& point
     return may_shadow(caster_spans(caster, light), point_spans(points, light));
 }
 
-std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& light,
-                                                      const std::vector<scene::Bounds>& receivers,
-                                                      const glm::mat4& camera_view_proj, std::vector<char>& whole,
-                                                      const std::vector<glm::vec4>& also) {
+ClipPlanes visible_clip_planes(const scene::Light& light, const glm::mat4& camera_view_proj, const std::vector<glm::vec4>& also) {
     const std::array<HalfSpace, 6> camera = clip_volume_half_spaces(camera_view_proj);
     std::vector<HalfSpace> hs(camera.begin(), camera.end());
     hs.insert(hs.end(), also.begin(), also.end());
@@ -121,7 +118,14 @@ std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& ligh
             hs.emplace_back(n, -glm::dot(n, light.position));
         }
     }
-    const ClipPlanes planes = clip_planes(hs);
+    return clip_planes(hs);
+}
+
+std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& light,
+                                                      const std::vector<scene::Bounds>& receivers,
+                                                      const glm::mat4& camera_view_proj, std::vector<char>& whole,
+                                                      const std::vector<glm::vec4>& also) {
+    const ClipPlanes planes = visible_clip_planes(light, camera_view_proj, also);
     std::vector<std::vector<glm::vec3>> out;
     out.reserve(receivers.size());
     whole.assign(receivers.size(), 0);

@@ -2,6 +2,7 @@
 #include "shadow/convex.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
 
@@ -51,6 +52,27 @@ size_t clip_into(const glm::vec3* in, size_t n, const HalfSpace& h, float eps, g
     return m;
 }
 
+// Tolerance for "on the plane" about `box`, relative to its coordinates' magnitude (float
+// rounding).
+float box_tolerance(const scene::Bounds& box) {
+    const float radius = 0.5f * glm::length(box.max - box.min);
+    return 1e-5f * std::max({radius, max_abs_component(box.min), max_abs_component(box.max)});
+}
+
+// A square on the plane of unit `h` around the box centre's foot on it, larger than the box's
+// section (which lies within the box's radius of that foot), in order.
+std::array<glm::vec3, 4> plane_square(const scene::Bounds& box, const HalfSpace& h) {
+    const float radius = 0.5f * glm::length(box.max - box.min);
+    const float scale = std::max({radius, max_abs_component(box.min), max_abs_component(box.max)});
+    const float half = 1.01f * radius + 1e-4f * scale + 1e-30f;
+    const glm::vec3 centre = box.center();
+    const glm::vec3 n(h);
+    const glm::vec3 foot = centre - signed_distance(h, centre) * n;
+    const glm::vec3 t1 = glm::normalize(glm::cross(n, std::fabs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
+    const glm::vec3 t2 = glm::cross(n, t1);
+    return {foot - half * t1 - half * t2, foot + half * t1 - half * t2, foot + half * t1 + half * t2, foot - half * t1 + half * t2};
+}
+
 }  // namespace
 
 std::vector<glm::vec3> clip_polygon(const std::vector<glm::vec3>& poly, const HalfSpace& h, float eps) {
@@ -82,11 +104,7 @@ std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& p
     if (box.empty() || planes.nothing) return out;
     const glm::vec3 lo = box.min;
     const glm::vec3 hi = box.max;
-    const glm::vec3 centre = box.center();
-    const float radius = 0.5f * glm::length(hi - lo);
-    // Tolerance for "on the plane", relative to the coordinates' magnitude (float rounding).
-    const float scale = std::max({radius, max_abs_component(lo), max_abs_component(hi)});
-    const float eps = 1e-5f * scale;
+    const float eps = box_tolerance(box);
     const std::vector<HalfSpace>& hs = planes.unit;
 
     // A half-space with every corner beyond it: nothing of the box is inside.
@@ -143,19 +161,31 @@ std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& p
     box_face_corners(box, [&](const glm::vec3& p) { faces.push_back(p); });
     if (inside) return faces;
     for (size_t f = 0; f < faces.size(); f += 4) clip_all({faces[f], faces[f + 1], faces[f + 2], faces[f + 3]}, hs.size(), false);
-    // Each half-space's plane: a square around the box centre's foot on it, larger than the
-    // box's section (which lies within `radius` of that foot), clipped by the box and the others.
-    const float half = 1.01f * radius + 1e-4f * scale + 1e-30f;
+    // Each cutting half-space's plane: a square holding the box's section, clipped by the box and
+    // the others.
     for (const size_t i : cut) {
-        const glm::vec3 n(hs[i]);
-        const glm::vec3 foot = centre - signed_distance(hs[i], centre) * n;
-        const glm::vec3 t1 = glm::normalize(glm::cross(n, std::fabs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
-        const glm::vec3 t2 = glm::cross(n, t1);
-        clip_all({foot - half * t1 - half * t2, foot + half * t1 - half * t2, foot + half * t1 + half * t2,
-                  foot - half * t1 + half * t2},
-                 i, true);
+        const std::array<glm::vec3, 4> q = plane_square(box, hs[i]);
+        clip_all({q[0], q[1], q[2], q[3]}, i, true);
     }
     return out;
+}
+
+std::vector<glm::vec3> clip_box_section(const scene::Bounds& box, const ClipPlanes& planes, const HalfSpace& h) {
+    if (box.empty() || planes.nothing) return {};
+    const float eps = box_tolerance(box);
+    const glm::vec3 lo = box.min, hi = box.max;
+    const std::array<HalfSpace, 6> box_hs = {HalfSpace(1, 0, 0, -lo.x), HalfSpace(-1, 0, 0, hi.x), HalfSpace(0, 1, 0, -lo.y),
+                                             HalfSpace(0, -1, 0, hi.y), HalfSpace(0, 0, 1, -lo.z), HalfSpace(0, 0, -1, hi.z)};
+    const std::array<glm::vec3, 4> q = plane_square(box, normalized(h));
+    std::vector<glm::vec3> a(q.begin(), q.end()), b;
+    const auto by = [&](const HalfSpace& c) {
+        b.resize(2 * a.size());
+        b.resize(clip_into(a.data(), a.size(), c, eps, b.data()));
+        std::swap(a, b);
+    };
+    for (size_t j = 0; j < box_hs.size() && !a.empty(); ++j) by(box_hs[j]);
+    for (size_t j = 0; j < planes.unit.size() && !a.empty(); ++j) by(planes.unit[j]);
+    return a;
 }
 
 // ---- 2D ----------------------------------------------------------------------------------------

@@ -46,6 +46,12 @@ ClipPlanes clip_planes(const std::vector<HalfSpace>& half_spaces);
 // (box_face_corners) tells them apart.
 std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& planes, bool* whole = nullptr);
 
+// The section of the polytope box & `planes` by the plane of `h` (which need not be among them): a
+// convex polygon on that plane, in order, as clip_box_by makes one for each plane that cuts the
+// box. Empty where the plane misses the polytope. resolution.cpp cuts a receiver's part by the
+// planes between a map's tiles with it, once for all the tiles along each plane.
+std::vector<glm::vec3> clip_box_section(const scene::Bounds& box, const ClipPlanes& planes, const HalfSpace& h);
+
 // The box's six faces, four corners each, in the order clip_box lists them for a box that nothing
 // clips: fn(corner) 24 times.
 template <typename F>

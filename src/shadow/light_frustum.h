@@ -8,6 +8,7 @@
 
 #include "scene/scene.h"
 #include "shadow/casting.h"
+#include "shadow/convex.h"
 
 namespace penumbra::shadow {
 
@@ -65,6 +66,9 @@ std::vector<std::vector<glm::vec3>> visible_points_each(const scene::Light& ligh
                                                       const std::vector<scene::Bounds>& receivers,
                                                       const glm::mat4& camera_view_proj, std::vector<char>& whole,
                                                       const std::vector<glm::vec4>& also = {});
+// The half-spaces visible_points_each clips each receiver by: the camera's clip volume, the
+// pyramid around a spot light's cone, and `also`.
+ClipPlanes visible_clip_planes(const scene::Light& light, const glm::mat4& camera_view_proj, const std::vector<glm::vec4>& also = {});
 // Where the fits aim: the mean of the receivers' visible points, a box in view whole counted as
 // its six faces' 24 corners (in clip_box's order, as the fits counted them before boxes were kept
 // whole: the aim, and so every plan, stays the same to the bit).

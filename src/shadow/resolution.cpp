@@ -13,17 +13,6 @@ namespace penumbra::shadow {
 
 namespace {
 
-// The clip space of the part [x0, x1] x [y0, y1] (NDC) of `vp`'s window, as a matrix of its own:
-// its clip volume is that tile's frustum.
-glm::mat4 tile_view_proj(const glm::mat4& vp, float x0, float x1, float y0, float y1) {
-    glm::mat4 s(1.0f);
-    s[0][0] = 2.0f / (x1 - x0);
-    s[3][0] = -(x1 + x0) / (x1 - x0);
-    s[1][1] = 2.0f / (y1 - y0);
-    s[3][1] = -(y1 + y0) / (y1 - y0);
-    return s * vp;
-}
-
 // The share of clip space's square [-1, 1]^2 covered by the convex hull of `points` through `vp`
 // (points at or behind its eye plane left out, the rest held to the square: a part is clipped to
 // the window already, so only rounding lies outside). Monotone chain over `scratch`, so the many
@@ -64,28 +53,41 @@ double part_share(const glm::mat4& vp, const std::vector<glm::vec3>& points, std
 Demand receiver_demand(const scene::Light& light, const std::vector<scene::Bounds>& receivers, const glm::mat4& camera_view_proj,
                        int width, int height, const glm::mat4& map_view_proj) {
     const std::array<HalfSpace, 6> window = clip_volume_half_spaces(map_view_proj);
+    const std::vector<glm::vec4> window_planes(window.begin(), window.end());
     std::vector<char> whole;
-    const std::vector<std::vector<glm::vec3>> seen =
-        visible_points_each(light, receivers, camera_view_proj, whole, {window.begin(), window.end()});
+    const std::vector<std::vector<glm::vec3>> seen = visible_points_each(light, receivers, camera_view_proj, whole, window_planes);
+    const ClipPlanes planes = visible_clip_planes(light, camera_view_proj, window_planes);
     constexpr int n = kDenseTiles;
     struct Tile {
         double pixels = 0.0, share = 0.0;
-        std::vector<scene::Bounds> across;  // receivers whose part spans this tile and others
     };
     std::vector<Tile> tiles(static_cast<size_t>(n * n));
     const double image = static_cast<double>(width) * static_cast<double>(height);
     std::vector<glm::vec2> scratch;
     const auto tile_of = [](float v) { return std::clamp(static_cast<int>((v + 1.0f) * 0.5f * static_cast<float>(n)), 0, n - 1); };
+    const auto at = [](int i) { return -1.0f + 2.0f * static_cast<float>(i) / static_cast<float>(n); };
+    // The map's x >= a (axis 0) or y >= a (axis 1) as a half-space of world space (w > 0 in the
+    // window): row `axis` - a row 3 of the matrix.
+    const auto beyond = [&map_view_proj](int axis, float a) {
+        const glm::vec4 r(map_view_proj[0][axis] - a * map_view_proj[0][3], map_view_proj[1][axis] - a * map_view_proj[1][3],
+                          map_view_proj[2][axis] - a * map_view_proj[2][3], map_view_proj[3][axis] - a * map_view_proj[3][3]);
+        const ClipPlanes unit = clip_planes({r});
+        return unit.unit.empty() ? HalfSpace(0.0f, 0.0f, 0.0f, 1.0f) : unit.unit[0];
+    };
+    std::vector<glm::vec3> points;
+    std::vector<int> tile_index;
     for (size_t k = 0; k < seen.size(); ++k) {
         if (seen[k].empty()) continue;
         glm::vec2 lo(1.0f), hi(-1.0f);
-        for (const glm::vec3& p : seen[k]) {
-            const glm::vec4 c = map_view_proj * glm::vec4(p, 1.0f);
+        tile_index.assign(seen[k].size(), -1);
+        for (size_t v = 0; v < seen[k].size(); ++v) {
+            const glm::vec4 c = map_view_proj * glm::vec4(seen[k][v], 1.0f);
             if (!(c.w > 0.0f)) continue;
             const glm::vec2 q = glm::clamp(glm::vec2(c) / c.w, glm::vec2(-1.0f), glm::vec2(1.0f));
             if (!std::isfinite(q.x) || !std::isfinite(q.y)) continue;
             lo = glm::min(lo, q);
             hi = glm::max(hi, q);
+            tile_index[v] = tile_of(q.y) * n + tile_of(q.x);
         }
         if (lo.x > hi.x || lo.y > hi.y) continue;
         const int x0 = tile_of(lo.x), x1 = tile_of(hi.x), y0 = tile_of(lo.y), y1 = tile_of(hi.y);
@@ -95,32 +97,50 @@ Demand receiver_demand(const scene::Light& light, const std::vector<scene::Bound
             t.share += part_share(map_view_proj, seen[k], scratch);
             continue;
         }
+        // A part across tiles, cut by each: the part within a tile has for vertices the part's own
+        // vertices in it and those of the part's sections by the planes between tiles, each
+        // section cut to the tile's side. So the sections are made once a plane (x0 < i <= x1,
+        // y0 < j <= y1), not the part clipped again by each tile's frustum.
+        std::vector<HalfSpace> xs(static_cast<size_t>(n + 1)), ys(static_cast<size_t>(n + 1));
+        std::vector<std::vector<glm::vec3>> x_sections(static_cast<size_t>(n + 1)), y_sections(static_cast<size_t>(n + 1));
+        for (int i = x0; i <= x1 + 1; ++i) xs[static_cast<size_t>(i)] = beyond(0, at(i));
+        for (int j = y0; j <= y1 + 1; ++j) ys[static_cast<size_t>(j)] = beyond(1, at(j));
+        for (int i = x0 + 1; i <= x1; ++i)
+            x_sections[static_cast<size_t>(i)] = clip_box_section(receivers[k], planes, xs[static_cast<size_t>(i)]);
+        for (int j = y0 + 1; j <= y1; ++j)
+            y_sections[static_cast<size_t>(j)] = clip_box_section(receivers[k], planes, ys[static_cast<size_t>(j)]);
+        // A section's piece on one tile's side: between the two planes across it.
+        const auto side = [&points](std::vector<glm::vec3> piece, const HalfSpace& from, const HalfSpace& to) {
+            if (!piece.empty()) piece = clip_polygon(piece, from);
+            if (!piece.empty()) piece = clip_polygon(piece, -to);
+            points.insert(points.end(), piece.begin(), piece.end());
+        };
         for (int ty = y0; ty <= y1; ++ty)
-            for (int tx = x0; tx <= x1; ++tx) tiles[static_cast<size_t>(ty * n + tx)].across.push_back(receivers[k]);
+            for (int tx = x0; tx <= x1; ++tx) {
+                points.clear();
+                const int index = ty * n + tx;
+                for (size_t v = 0; v < seen[k].size(); ++v)
+                    if (tile_index[v] == index) points.push_back(seen[k][v]);
+                const size_t x = static_cast<size_t>(tx), y = static_cast<size_t>(ty);
+                if (tx > x0) side(x_sections[x], ys[y], ys[y + 1]);
+                if (tx < x1) side(x_sections[x + 1], ys[y], ys[y + 1]);
+                if (ty > y0) side(y_sections[y], xs[x], xs[x + 1]);
+                if (ty < y1) side(y_sections[y + 1], xs[x], xs[x + 1]);
+                Tile& t = tiles[static_cast<size_t>(index)];
+                t.pixels += part_share(camera_view_proj, points, scratch) * image;
+                t.share += part_share(map_view_proj, points, scratch);
+            }
     }
     Demand d;
     struct Need {
         double wanted, pixels;
     };
     std::vector<Need> needs;
-    for (int ty = 0; ty < n; ++ty)
-        for (int tx = 0; tx < n; ++tx) {
-            Tile& t = tiles[static_cast<size_t>(ty * n + tx)];
-            if (!t.across.empty()) {
-                // Those across tiles clipped again by this one's frustum (most span two to four).
-                const auto at = [](int i) { return -1.0f + 2.0f * static_cast<float>(i) / static_cast<float>(n); };
-                const std::array<HalfSpace, 6> planes =
-                    clip_volume_half_spaces(tile_view_proj(map_view_proj, at(tx), at(tx + 1), at(ty), at(ty + 1)));
-                for (const std::vector<glm::vec3>& part :
-                     visible_points_each(light, t.across, camera_view_proj, whole, {planes.begin(), planes.end()})) {
-                    t.pixels += part_share(camera_view_proj, part, scratch) * image;
-                    t.share += part_share(map_view_proj, part, scratch);
-                }
-            }
-            d.pixels += t.pixels;
-            d.share += t.share;
-            if (t.pixels >= 1.0 && t.share > 0.0) needs.push_back({kDenseTexelsPerPixel * std::sqrt(t.pixels / t.share), t.pixels});
-        }
+    for (const Tile& t : tiles) {
+        d.pixels += t.pixels;
+        d.share += t.share;
+        if (t.pixels >= 1.0 && t.share > 0.0) needs.push_back({kDenseTexelsPerPixel * std::sqrt(t.pixels / t.share), t.pixels});
+    }
     if (needs.empty()) return d;
     std::sort(needs.begin(), needs.end(), [](const Need& a, const Need& b) { return a.wanted < b.wanted; });
     double total = 0.0, served = 0.0;

@@ -254,6 +254,29 @@ TEST(Convex, PlanesThatHoldTheWholeBoxChangeNothingOfItsClip) {
     EXPECT_GT(clipped, 100);
 }
 
+TEST(Convex, ASectionOfTheClippedBoxIsItsPolygonOnThePlane) {
+    const scene::Bounds b = box(glm::vec3(-1.0f), glm::vec3(1.0f));
+    // By x = 0 with nothing else: the square [-1, 1]^2 on it, in order (area 4 from its y, z).
+    const auto square = clip_box_section(b, clip_planes({}), HalfSpace(1, 0, 0, 0));
+    ASSERT_GE(square.size(), 4u);
+    float area = 0.0f;
+    for (size_t i = 0; i < square.size(); ++i) {
+        const glm::vec3& p = square[i];
+        const glm::vec3& q = square[(i + 1) % square.size()];
+        EXPECT_NEAR(p.x, 0.0f, 1e-5f);
+        area += p.y * q.z - q.y * p.z;
+    }
+    EXPECT_NEAR(std::fabs(area) / 2.0f, 4.0f, 1e-4f);
+    // The planes given cut it too: z <= 0 leaves half.
+    const auto half = clip_box_section(b, clip_planes({HalfSpace(0, 0, -1, 0)}), HalfSpace(1, 0, 0, 0));
+    for (const glm::vec3& p : half) EXPECT_LE(p.z, 1e-5f);
+    EXPECT_TRUE(has_point(half, {0, 1, -1}));
+    EXPECT_TRUE(has_point(half, {0, -1, 0}));
+    // A plane beside the box, or planes that hold nothing: no section.
+    EXPECT_TRUE(clip_box_section(b, clip_planes({}), HalfSpace(1, 0, 0, -5)).empty());
+    EXPECT_TRUE(clip_box_section(b, clip_planes({HalfSpace(0, 0, 0, -1)}), HalfSpace(1, 0, 0, 0)).empty());
+}
+
 TEST(Convex, ManyPointsHaveTheHullOfTheirHulls) {
     // Past 1024 points convex_hull drops the points deep inside first; the hull must not change.
     // Its reference: the hull of the parts' hulls, each part too small to be filtered.

@@ -2,7 +2,9 @@
 // for at two texels a pixel, and the plan's choice as the image and the view change.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -12,6 +14,7 @@
 #include "plan/techniques/reports.h"
 #include "scene/gltf_loader.h"
 #include "scenes/course_scene.h"
+#include "shadow/light_frustum.h"
 #include "shadow/resolution.h"
 #include "../test_paths.h"
 
@@ -115,6 +118,61 @@ TEST(Resolution, AnImageUnder512ASideIsMatchedAsIfThatLarge) {
     EXPECT_EQ(m.width, 1920);
     EXPECT_FALSE(m.scaled);
     EXPECT_FALSE(shadow::matched_image(512, 512).scaled);
+}
+
+TEST(Resolution, APartAcrossTilesIsWhatEachTilesFrustumCutsOfIt) {
+    // receiver_demand cuts a receiver across tiles by the planes between tiles, once a plane. The
+    // definition it must keep: the part within each tile's frustum, clipped tile by tile. A table
+    // and a teapot-sized box under a point light's perspective map, a camera at a slant.
+    scene::Light lamp;
+    lamp.type = scene::LightType::Point;
+    lamp.position = glm::vec3(1.0f, 4.0f, 0.5f);
+    const std::vector<scene::Bounds> receivers = {scene::Bounds::around({-2.0f, -0.1f, -1.5f}, {2.0f, 0.0f, 1.5f}),
+                                                  scene::Bounds::around({-0.5f, 0.0f, -0.4f}, {0.6f, 0.8f, 0.4f})};
+    const glm::mat4 map = glm::perspective(glm::radians(80.0f), 1.0f, 1.0f, 10.0f) *
+                          glm::lookAt(lamp.position, glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f));
+    const glm::mat4 camera = glm::perspective(glm::radians(50.0f), 1.0f, 0.1f, 30.0f) *
+                             glm::lookAt(glm::vec3(0.5f, 2.0f, 4.5f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    const shadow::Demand d = shadow::receiver_demand(lamp, receivers, camera, 512, 512, map);
+    // The reference: every receiver clipped again by every tile's frustum.
+    constexpr int n = shadow::kDenseTiles;
+    double pixels = 0.0, share = 0.0;
+    std::vector<std::pair<double, double>> needs;  // (wanted, pixels)
+    for (int ty = 0; ty < n; ++ty)
+        for (int tx = 0; tx < n; ++tx) {
+            const auto at = [](int i) { return -1.0f + 2.0f * static_cast<float>(i) / static_cast<float>(n); };
+            const float x0 = at(tx), x1 = at(tx + 1), y0 = at(ty), y1 = at(ty + 1);
+            glm::mat4 s(1.0f);
+            s[0][0] = 2.0f / (x1 - x0);
+            s[3][0] = -(x1 + x0) / (x1 - x0);
+            s[1][1] = 2.0f / (y1 - y0);
+            s[3][1] = -(y1 + y0) / (y1 - y0);
+            const auto planes = shadow::clip_volume_half_spaces(s * map);
+            std::vector<char> whole;
+            double tp = 0.0, ts = 0.0;
+            for (const auto& part : shadow::visible_points_each(lamp, receivers, camera, whole, {planes.begin(), planes.end()})) {
+                tp += static_cast<double>(shadow::hull_share(camera, part)) * 512.0 * 512.0;
+                ts += static_cast<double>(shadow::hull_share(map, part));
+            }
+            pixels += tp;
+            share += ts;
+            if (tp >= 1.0 && ts > 0.0) needs.emplace_back(std::sqrt(tp / ts), tp);
+        }
+    ASSERT_GT(pixels, 10000.0);
+    EXPECT_NEAR(d.pixels, pixels, 1e-3 * pixels);
+    EXPECT_NEAR(d.share, share, 1e-3 * share);
+    std::sort(needs.begin(), needs.end());
+    double served = 0.0, dense = 0.0;
+    for (const auto& need : needs) {
+        served += need.second;
+        dense = need.first;
+        if (served >= shadow::kDenseShare * pixels) break;
+    }
+    EXPECT_NEAR(d.dense, dense, 1e-3 * dense);
+    // The control: the same receivers over a map half as wide ask for other tiles' densities.
+    const glm::mat4 narrow = glm::perspective(glm::radians(45.0f), 1.0f, 1.0f, 10.0f) *
+                             glm::lookAt(lamp.position, glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f));
+    EXPECT_GT(std::fabs(shadow::receiver_demand(lamp, receivers, camera, 512, 512, narrow).dense - dense), 0.05 * dense);
 }
 
 render::FramePlan course_plan(int width, int height, const char* map_size, const render::FramePlan* previous = nullptr) {
