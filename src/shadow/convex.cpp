@@ -113,27 +113,34 @@ std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& p
         if (std::all_of(corners.begin(), corners.end(), [&](const glm::vec3& p) { return signed_distance(h, p) < -eps; }))
             return out;
 
-    // The face loop below builds the six faces whole; with every corner inside every half-space by
-    // more than twice the tolerance, nothing clips them and no half-space's plane comes within the
-    // tolerance of the box: the result is the six faces as they are, the same points, unclipped.
-    // The same test plane by plane: a plane with every corner inside by more than twice the
-    // tolerance clips nothing of the box (what the loops below make lies within the tolerance of
-    // the box, so at least that far inside it) and its own polygon, beyond the box, is clipped
-    // away whole. Only the others are clipped by, and give polygons: the result is the same
-    // points in the same order, at the cost of the planes that cut the box. A receiver clipped
-    // again by each tile of a map (resolution.cpp) is inside most of the tile's and the camera's
-    // planes, and the 64 tiles' clips were most of --map-size auto's planning time.
+    // A half-space with every corner inside it by more than twice the tolerance clips nothing of
+    // the box (what the loops below make lies within the tolerance of the box, so at least that
+    // far inside it), and its own polygon, beyond the box, is clipped away whole.
+    const auto holds = [&](const HalfSpace& h) {
+        return std::all_of(corners.begin(), corners.end(), [&](const glm::vec3& p) { return signed_distance(h, p) > 2.0f * eps; });
+    };
+    // Every half-space holds it: the result is the six faces as they are, unclipped (the face loop
+    // below would build them whole), or its corners.
+    if (std::all_of(hs.begin(), hs.end(), holds)) {
+        if (whole) {
+            *whole = true;
+            return corners;
+        }
+        box_face_corners(box, [&](const glm::vec3& p) { out.push_back(p); });
+        return out;
+    }
+    // Otherwise only those that cut the box are clipped by and give polygons: the same points in
+    // the same order as with all of them, at the cost of the planes that cut the box. A receiver
+    // clipped again by a map's tile (the fits, --map-size auto) lies inside most of the camera's
+    // and the tile's planes.
     std::vector<size_t> cut;
-    cut.reserve(hs.size());
     for (size_t j = 0; j < hs.size(); ++j)
-        if (!std::all_of(corners.begin(), corners.end(), [&](const glm::vec3& p) { return signed_distance(hs[j], p) > 2.0f * eps; }))
-            cut.push_back(j);
-    const bool inside = cut.empty();
+        if (!holds(hs[j])) cut.push_back(j);
 
     const std::array<HalfSpace, 6> box_hs = {HalfSpace(1, 0, 0, -lo.x), HalfSpace(-1, 0, 0, hi.x), HalfSpace(0, 1, 0, -lo.y),
                                              HalfSpace(0, -1, 0, hi.y), HalfSpace(0, 0, 1, -lo.z), HalfSpace(0, 0, -1, hi.z)};
     // Two buffers swapped from clip to clip, reused by every polygon of the box: no allocation a
-    // clip, of which a tile's planning makes hundreds (clip_into needs room for twice the points).
+    // clip (clip_into needs room for twice the points).
     std::vector<glm::vec3> a, b;
     a.reserve(2 * (10 + cut.size()));
     b.reserve(2 * (10 + cut.size()));
@@ -152,14 +159,9 @@ std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& p
     };
 
     // The box's faces (they satisfy the box's own half-spaces already).
-    if (inside && whole) {
-        *whole = true;
-        return corners;
-    }
     std::vector<glm::vec3> faces;
     faces.reserve(24);
     box_face_corners(box, [&](const glm::vec3& p) { faces.push_back(p); });
-    if (inside) return faces;
     for (size_t f = 0; f < faces.size(); f += 4) clip_all({faces[f], faces[f + 1], faces[f + 2], faces[f + 3]}, hs.size(), false);
     // Each cutting half-space's plane: a square holding the box's section, clipped by the box and
     // the others.
