@@ -52,19 +52,26 @@ size_t clip_into(const glm::vec3* in, size_t n, const HalfSpace& h, float eps, g
     return m;
 }
 
-// Tolerance for "on the plane" about `box`, relative to its coordinates' magnitude (float
-// rounding).
-float box_tolerance(const scene::Bounds& box) {
-    const float radius = 0.5f * glm::length(box.max - box.min);
-    return 1e-5f * std::max({radius, max_abs_component(box.min), max_abs_component(box.max)});
+// The box's radius and the magnitude of its coordinates, which its tolerances scale with.
+float box_radius(const scene::Bounds& box) { return 0.5f * glm::length(box.max - box.min); }
+float box_scale(const scene::Bounds& box) {
+    return std::max({box_radius(box), max_abs_component(box.min), max_abs_component(box.max)});
+}
+
+// Tolerance for "on the plane" about `box` (float rounding).
+float box_tolerance(const scene::Bounds& box) { return 1e-5f * box_scale(box); }
+
+// The box's own six half-spaces.
+std::array<HalfSpace, 6> box_half_spaces(const scene::Bounds& box) {
+    const glm::vec3 lo = box.min, hi = box.max;
+    return {HalfSpace(1, 0, 0, -lo.x), HalfSpace(-1, 0, 0, hi.x), HalfSpace(0, 1, 0, -lo.y),
+            HalfSpace(0, -1, 0, hi.y), HalfSpace(0, 0, 1, -lo.z), HalfSpace(0, 0, -1, hi.z)};
 }
 
 // A square on the plane of unit `h` around the box centre's foot on it, larger than the box's
 // section (which lies within the box's radius of that foot), in order.
 std::array<glm::vec3, 4> plane_square(const scene::Bounds& box, const HalfSpace& h) {
-    const float radius = 0.5f * glm::length(box.max - box.min);
-    const float scale = std::max({radius, max_abs_component(box.min), max_abs_component(box.max)});
-    const float half = 1.01f * radius + 1e-4f * scale + 1e-30f;
+    const float half = 1.01f * box_radius(box) + 1e-4f * box_scale(box) + 1e-30f;
     const glm::vec3 centre = box.center();
     const glm::vec3 n(h);
     const glm::vec3 foot = centre - signed_distance(h, centre) * n;
@@ -72,6 +79,23 @@ std::array<glm::vec3, 4> plane_square(const scene::Bounds& box, const HalfSpace&
     const glm::vec3 t2 = glm::cross(n, t1);
     return {foot - half * t1 - half * t2, foot + half * t1 - half * t2, foot + half * t1 + half * t2, foot - half * t1 + half * t2};
 }
+
+// A convex polygon clipped by one half-space after another, between two buffers swapped from clip
+// to clip: reused by every polygon of a box, no allocation a clip.
+struct Clipper {
+    float eps = 0.0f;
+    std::vector<glm::vec3> a, b;
+    void start(std::initializer_list<glm::vec3> polygon) { a.assign(polygon); }
+    void by(const HalfSpace& h) {
+        b.resize(2 * a.size());  // clip_into's bound
+        b.resize(clip_into(a.data(), a.size(), h, eps, b.data()));
+        std::swap(a, b);
+    }
+    template <typename It>
+    void by_each(It first, It last) {
+        for (; first != last && !a.empty(); ++first) by(*first);
+    }
+};
 
 }  // namespace
 
@@ -102,8 +126,6 @@ std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& p
     std::vector<glm::vec3> out;
     if (whole) *whole = false;
     if (box.empty() || planes.nothing) return out;
-    const glm::vec3 lo = box.min;
-    const glm::vec3 hi = box.max;
     const float eps = box_tolerance(box);
     const std::vector<HalfSpace>& hs = planes.unit;
 
@@ -137,25 +159,16 @@ std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& p
     for (size_t j = 0; j < hs.size(); ++j)
         if (!holds(hs[j])) cut.push_back(j);
 
-    const std::array<HalfSpace, 6> box_hs = {HalfSpace(1, 0, 0, -lo.x), HalfSpace(-1, 0, 0, hi.x), HalfSpace(0, 1, 0, -lo.y),
-                                             HalfSpace(0, -1, 0, hi.y), HalfSpace(0, 0, 1, -lo.z), HalfSpace(0, 0, -1, hi.z)};
-    // Two buffers swapped from clip to clip, reused by every polygon of the box: no allocation a
-    // clip (clip_into needs room for twice the points).
-    std::vector<glm::vec3> a, b;
-    a.reserve(2 * (10 + cut.size()));
-    b.reserve(2 * (10 + cut.size()));
+    const std::array<HalfSpace, 6> box_hs = box_half_spaces(box);
+    Clipper clip{eps, {}, {}};
+    clip.a.reserve(2 * (10 + cut.size()));
+    clip.b.reserve(2 * (10 + cut.size()));
     const auto clip_all = [&](std::initializer_list<glm::vec3> start, size_t skip, bool with_box) {
-        a.assign(start);
-        const auto by = [&](const HalfSpace& h) {
-            b.resize(2 * a.size());
-            b.resize(clip_into(a.data(), a.size(), h, eps, b.data()));
-            std::swap(a, b);
-        };
-        if (with_box)
-            for (size_t j = 0; j < box_hs.size() && !a.empty(); ++j) by(box_hs[j]);
-        for (size_t k = 0; k < cut.size() && !a.empty(); ++k)
-            if (cut[k] != skip) by(hs[cut[k]]);
-        out.insert(out.end(), a.begin(), a.end());
+        clip.start(start);
+        if (with_box) clip.by_each(box_hs.begin(), box_hs.end());
+        for (size_t k = 0; k < cut.size() && !clip.a.empty(); ++k)
+            if (cut[k] != skip) clip.by(hs[cut[k]]);
+        out.insert(out.end(), clip.a.begin(), clip.a.end());
     };
 
     // The box's faces (they satisfy the box's own half-spaces already).
@@ -174,20 +187,13 @@ std::vector<glm::vec3> clip_box_by(const scene::Bounds& box, const ClipPlanes& p
 
 std::vector<glm::vec3> clip_box_section(const scene::Bounds& box, const ClipPlanes& planes, const HalfSpace& h) {
     if (box.empty() || planes.nothing) return {};
-    const float eps = box_tolerance(box);
-    const glm::vec3 lo = box.min, hi = box.max;
-    const std::array<HalfSpace, 6> box_hs = {HalfSpace(1, 0, 0, -lo.x), HalfSpace(-1, 0, 0, hi.x), HalfSpace(0, 1, 0, -lo.y),
-                                             HalfSpace(0, -1, 0, hi.y), HalfSpace(0, 0, 1, -lo.z), HalfSpace(0, 0, -1, hi.z)};
+    const std::array<HalfSpace, 6> box_hs = box_half_spaces(box);
     const std::array<glm::vec3, 4> q = plane_square(box, normalized(h));
-    std::vector<glm::vec3> a(q.begin(), q.end()), b;
-    const auto by = [&](const HalfSpace& c) {
-        b.resize(2 * a.size());
-        b.resize(clip_into(a.data(), a.size(), c, eps, b.data()));
-        std::swap(a, b);
-    };
-    for (size_t j = 0; j < box_hs.size() && !a.empty(); ++j) by(box_hs[j]);
-    for (size_t j = 0; j < planes.unit.size() && !a.empty(); ++j) by(planes.unit[j]);
-    return a;
+    Clipper clip{box_tolerance(box), {}, {}};
+    clip.start({q[0], q[1], q[2], q[3]});
+    clip.by_each(box_hs.begin(), box_hs.end());
+    clip.by_each(planes.unit.begin(), planes.unit.end());
+    return clip.a;
 }
 
 // ---- 2D ----------------------------------------------------------------------------------------

@@ -76,6 +76,10 @@ Demand receiver_demand(const scene::Light& light, const std::vector<scene::Bound
     };
     std::vector<glm::vec3> points;
     std::vector<int> tile_index;
+    // The planes between tiles and a receiver's sections by them, reused from receiver to receiver
+    // (only those between the tiles a receiver spans are made and read).
+    std::vector<HalfSpace> xs(static_cast<size_t>(n + 1)), ys(static_cast<size_t>(n + 1));
+    std::vector<std::vector<glm::vec3>> x_sections(static_cast<size_t>(n + 1)), y_sections(static_cast<size_t>(n + 1));
     for (size_t k = 0; k < seen.size(); ++k) {
         if (seen[k].empty()) continue;
         glm::vec2 lo(1.0f), hi(-1.0f);
@@ -101,8 +105,6 @@ Demand receiver_demand(const scene::Light& light, const std::vector<scene::Bound
         // vertices in it and those of the part's sections by the planes between tiles, each
         // section cut to the tile's side. So the sections are made once a plane (x0 < i <= x1,
         // y0 < j <= y1), not the part clipped again by each tile's frustum.
-        std::vector<HalfSpace> xs(static_cast<size_t>(n + 1)), ys(static_cast<size_t>(n + 1));
-        std::vector<std::vector<glm::vec3>> x_sections(static_cast<size_t>(n + 1)), y_sections(static_cast<size_t>(n + 1));
         for (int i = x0; i <= x1 + 1; ++i) xs[static_cast<size_t>(i)] = beyond(0, at(i));
         for (int j = y0; j <= y1 + 1; ++j) ys[static_cast<size_t>(j)] = beyond(1, at(j));
         for (int i = x0 + 1; i <= x1; ++i)

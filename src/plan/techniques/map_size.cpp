@@ -63,14 +63,15 @@ const MapSizeReport* same_inputs_before(const PlanContext& c, const std::string&
 int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrustum& f) {
     if (const MapSizeReport* before = matched_before(c)) return before->size;
     const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
-    ContentKey key = match_inputs(c, b, image, auto_largest(c, 1));
+    const int largest = auto_largest(c, 1);
+    ContentKey key = match_inputs(c, b, image, largest);
     key.add(f.view_proj());
     const std::string inputs = key.str();
     if (const MapSizeReport* same = same_inputs_before(c, inputs)) return c.plan.put(*same).size;
     const shadow::Demand d =
         shadow::receiver_demand(c.light, b.receivers, c.plan.camera.view_proj, image.width, image.height, f.view_proj());
     const shadow::MatchedSize m = shadow::matched_map_size(static_cast<float>(d.pixels), static_cast<float>(d.share), 1,
-                                                           kAutoSmallest, auto_largest(c, 1), d.dense, image.scaled);
+                                                           kAutoSmallest, largest, d.dense, image.scaled);
     c.plan.put(MapSizeReport{m.size, m.wanted, m.why, inputs});
     return m.size;
 }
@@ -78,7 +79,8 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrus
 int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& fit) {
     if (const MapSizeReport* before = matched_before(c)) return before->size;
     const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
-    ContentKey key = match_inputs(c, b, image, auto_largest(c, shadow::kCubeFaces));
+    const int largest = auto_largest(c, shadow::kCubeFaces);
+    ContentKey key = match_inputs(c, b, image, largest);
     for (const shadow::CubeFace& face : fit.faces) {
         key.add(face.drawn);
         if (face.drawn) key.add(face.frustum.view_proj());
@@ -94,7 +96,7 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& 
                                                          image.height, face.frustum.view_proj());
         const shadow::MatchedSize m =
             shadow::matched_map_size(static_cast<float>(d.pixels), static_cast<float>(d.share), 1, kAutoSmallest,
-                                     auto_largest(c, shadow::kCubeFaces), d.dense, image.scaled);
+                                     largest, d.dense, image.scaled);
         if (face_index < 0 || m.wanted > best.wanted) best = m, face_index = i;
     }
     best.why += std::string(" (face ") + shadow::cube_face_name(face_index) + ", the most of the " +
