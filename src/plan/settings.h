@@ -119,9 +119,10 @@ struct Settings {
     // PCF 4x4's corners-first early exit, or every tap (the course's kernel); shadow/pcf.h.
     shadow::PcfKernel pcf_kernel = shadow::PcfKernel::EarlyExit;
     // Texels a side; with cascades each cascade's map (the atlas holds them side by side), with a
-    // cube each face's. kAutoMapSize: matched to the screen pixels the map serves (shadow/resolution.h).
-    int map_size = 1024;
+    // cube each face's. kAutoMapSize, the default: matched to the screen pixels the map serves
+    // (shadow/resolution.h), so a larger image or a shadow filling more of it gets more texels.
     static constexpr int kAutoMapSize = 0;
+    int map_size = kAutoMapSize;
     // What a part that takes a fixed size uses under auto (the cascades, Gooch's texture, W09P2b).
     int fixed_map_size() const { return map_size == kAutoMapSize ? 1024 : map_size; }
     // --cascades: the camera's depth range split into this many shadow maps, 1..4 (1: one map);

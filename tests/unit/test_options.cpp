@@ -97,7 +97,8 @@ TEST(Options, DefaultsAreAutoBiasWithTheSheetsConstantsOneChoiceAway) {
     const Options o;
     EXPECT_EQ(o.job.scene, "teapot");
     EXPECT_EQ(o.settings.technique, Technique::ShadowMap);
-    EXPECT_EQ(o.settings.map_size, 1024);
+    // The map matched to the pixels it serves (issue 56); --map-size N fixes it.
+    EXPECT_EQ(o.settings.map_size, Settings::kAutoMapSize);
     // PCF 4x4 takes the early exit unless --pcf-kernel full asks for the course's kernel.
     EXPECT_EQ(o.settings.pcf_kernel, penumbra::shadow::PcfKernel::EarlyExit);
     EXPECT_TRUE(o.settings.bias_auto);
@@ -167,12 +168,12 @@ TEST(Options, ArgsLabelTheResult) {
     o.settings.encoding = Encoding::R8;
     EXPECT_EQ(to_args(o),
               "--scene teapot --time 0 --size 512x512 --encoding r8 --filter hard --pcf-kernel early-exit "
-              "--map-size 1024 --cascades auto --cascade-split 0.95 --cascade-snap on --cascade-blend 0.1 --cube-layout atlas --bias auto --map-faces auto --light-fit shadows --precision highp --volume-method auto "
+              "--map-size auto --cascades auto --cascade-split 0.95 --cascade-snap on --cascade-blend 0.1 --cube-layout atlas --bias auto --map-faces auto --light-fit shadows --precision highp --volume-method auto "
               "--show-volumes off --light-radius scene --pcss-search 16 --pcss-taps 16 --pcss-blockers layered --area-samples 1 --area-per-frame 0 --area-interleave 1 "
               "--gooch-planes 8 --gooch-method planes --blend-shadows off --effects none --outline-color ff8c00 "
               "--outline-width 3 --reflectivity 0.5 --post none --shading forward --lights 0 --aov color --technique shadowmap --eye scene --frames 1");
     EXPECT_EQ(to_args(o.settings),
-              "--encoding r8 --filter hard --pcf-kernel early-exit --map-size 1024 --cascades auto --cascade-split 0.95 --cascade-snap on --cascade-blend 0.1 --cube-layout atlas --bias auto --map-faces auto "
+              "--encoding r8 --filter hard --pcf-kernel early-exit --map-size auto --cascades auto --cascade-split 0.95 --cascade-snap on --cascade-blend 0.1 --cube-layout atlas --bias auto --map-faces auto "
               "--light-fit shadows --precision highp --volume-method auto --show-volumes off --light-radius scene "
               "--pcss-search 16 --pcss-taps 16 --pcss-blockers layered --area-samples 1 --area-per-frame 0 --area-interleave 1 --gooch-planes 8 --gooch-method planes "
               "--blend-shadows off "

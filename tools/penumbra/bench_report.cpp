@@ -90,11 +90,12 @@ std::vector<const Row*> select(const Sweep& w, bool (*pred)(const Row&)) {
     return out;
 }
 
-// A run at the settings before issue 9 (bench.cpp, before_rows).
-bool is_before(const std::string& technique) {
-    const std::string suffix = kBeforeSuffix;
+bool ends_with(const std::string& technique, const std::string& suffix) {
     return technique.size() > suffix.size() && technique.compare(technique.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
+
+// A run at the settings before issue 9 (bench.cpp, before_rows).
+bool is_before(const std::string& technique) { return ends_with(technique, kBeforeSuffix); }
 
 // y: the error % (false shadow + false lit), or with `mae` the mean absolute visibility error.
 tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const std::string& title, bool mae,
@@ -123,6 +124,8 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
             break;
         }
     const bool before_rows = std::any_of(keys.begin(), keys.end(), [](const Key& k) { return is_before(k.technique); });
+    const std::string auto_suffix = kAutoSuffix;
+    const bool auto_rows = std::any_of(keys.begin(), keys.end(), [&](const Key& k) { return ends_with(k.technique, auto_suffix); });
     if (before_rows) p.color_legend.push_back({"rgba before issue 9", 5});
     p.marker_legend = {{"hard", Marker::Circle}, {"pcf2x2", Marker::Square}, {"pcf4x4", Marker::Triangle},
                        {"planar", Marker::Diamond}, {"none", Marker::Cross}};
@@ -132,7 +135,7 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
     p.notes = {"marker size: map 256 ... 4096", volumes ? "front: shadow maps and volumes;" : "front: shadow maps only;",
                "planar and none are references", "hover (SVG) for the exact", "settings of each point"};
     if (before_rows)
-        p.notes.insert(p.notes.end(), {"dashed blue ring: the defaults", "and the settings before", "issue 9, at map 1024"});
+        p.notes.insert(p.notes.end(), {"dashed blue ring: the defaults", "(map auto) and the settings", "before issue 9 (map 1024)"});
     // The front is over the shadow-map techniques and the shadow volumes: planar shadows need a
     // flat ground and cast no shadow on anything else, and none is no answer; both are drawn as references.
     std::vector<measure::Point2> pts;
@@ -148,9 +151,13 @@ tools::Plot make_plot(const Sweep& w, const std::vector<const Row*>& rows, const
         const std::string fil = t.find(' ') == std::string::npos ? "" : t.substr(t.find(' ') + 1);
         const bool vol = is_volumes(k.technique);
         pt.color = before ? 5 : enc == "r8" ? 0 : enc == "rgba" ? 1 : enc == "depthtex" ? 2 : vol ? 6 : known(enc) ? 3 : 4;
-        // Where the defaults sit, and where they sat before issue 9 (map 1024).
-        if (before_rows && k.map == 1024 && enc == "rgba" && (fil == "hard" || fil == "pcf4x4"))
-            pt.callout = (before ? "before: " : "default: ") + t + " 1024";
+        // Where the defaults sit (the map matched to the screen, issue 56; a fixed 1024 where the
+        // sweep has no auto rows), and where they sat before issue 9 (map 1024).
+        const bool matched = ends_with(t, auto_suffix);
+        const std::string filter = matched ? fil.substr(0, fil.size() - auto_suffix.size()) : fil;
+        const bool default_map = before ? k.map == 1024 : auto_rows ? matched : k.map == 1024;
+        if (before_rows && default_map && enc == "rgba" && (filter == "hard" || filter == "pcf4x4"))
+            pt.callout = before ? "before: " + t + " 1024" : "default: " + enc + " " + filter + (matched ? ", map auto (" + std::to_string(k.map) + ")" : " 1024");
         pt.marker = vol ? (fil == "zpass" ? Marker::TriangleDown : fil == "zfail" ? Marker::Hexagon : Marker::Star)
                     : fil == "hard" ? Marker::Circle : fil == "pcf2x2" ? Marker::Square : fil == "pcf4x4" ? Marker::Triangle
                     : enc == "planar" ? Marker::Diamond : Marker::Cross;
