@@ -31,10 +31,12 @@ Exercise cascades() {
            "off: the edges shimmer as the camera moves"}),
           here_only({"cascade-blend", "Cascades", K::Slider, {"0", "0.05", "0.1", "0.2", "0.3", "0.5"}, "Blend",
            "of each slice faded into the next", 0.0, 0.5}),
-          {"map-size", "Cascades", K::Select, {"512", "1024", "2048"}, "Map size", "each cascade's"},
+          {"map-size", "Cascades", K::Select, {"512", "1024", "2048", "auto"}, "Map size",
+           "each cascade's; auto: the largest the atlas holds in 64 MiB, for the near slice's ground"},
           {"aov", "View", K::Select, {"cascades", "color", "visibility"}, {},
            "cascades: red, green, blue, yellow from near to far"}},
-         // Each cascade's map keeps a fixed size (auto matches one map or a cube's faces, not cascades).
+         // 1024 each, what auto gives four cascades here too (the near slice asks for more than the
+         // atlas's 64 MiB hold); auto is one choice away, and gives two cascades 2048 each.
          {{"cascades", "4"}, {"map-size", "1024"}, {"aov", "cascades"}}};
     x.make_scene = scene::make_terrain_km_scene;
     x.fly_bounds = terrain_fly_bounds;

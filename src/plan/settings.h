@@ -123,7 +123,8 @@ struct Settings {
     // (shadow/resolution.h), so a larger image or a shadow filling more of it gets more texels.
     static constexpr int kAutoMapSize = 0;
     int map_size = kAutoMapSize;
-    // What a part that takes a fixed size uses under auto (the cascades, Gooch's texture, W09P2b).
+    // What a part that takes a fixed size uses under auto (Gooch's texture, W09P2b) and where the
+    // cascades' fit starts from.
     int fixed_map_size() const { return map_size == kAutoMapSize ? 1024 : map_size; }
     // --cascades: the camera's depth range split into this many shadow maps, 1..4 (1: one map);
     // kCube: a point light's six faces (shadow/cube.h); 0 = auto (one map, cascades or a cube from

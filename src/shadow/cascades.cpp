@@ -82,6 +82,13 @@ void slice_sphere(const glm::mat4& proj, float a, float b, float& centre_depth, 
     radius = std::max(near_r, far_r);
 }
 
+glm::mat4 slice_projection(const glm::mat4& proj, float a, float b) {
+    glm::mat4 p = proj;
+    p[2][2] = -(b + a) / (b - a);
+    p[3][2] = -2.0f * b * a / (b - a);
+    return p;
+}
+
 glm::mat4 light_axes(const glm::vec3& direction) {
     const float len = glm::length(direction);
     const glm::vec3 dir = len > 1e-12f && std::isfinite(len) ? direction / len : glm::vec3(0.0f, -1.0f, 0.0f);

@@ -59,6 +59,10 @@ std::vector<float> cascade_splits(float near, float far, int count, float lambda
 // and the radius. Depends on a, b and the projection alone.
 void slice_sphere(const glm::mat4& proj, float a, float b, float& centre_depth, float& radius);
 
+// The perspective projection `proj` with its near and far planes moved to the view depths a and
+// b (0 < a < b): the same image (x and y do not depend on them), clipped to the slice between.
+glm::mat4 slice_projection(const glm::mat4& proj, float a, float b);
+
 // The light's view with fixed axes: the eye at the world's origin looking along `direction`, up
 // +y (or +z when the light is within 8 degrees of vertical).
 glm::mat4 light_axes(const glm::vec3& direction);

@@ -199,6 +199,23 @@ TEST(CascadeFit, AutoCountFollowsTheDepthRange) {
     EXPECT_EQ(why, "one map: the light is not directional");
 }
 
+TEST(CascadeSpheres, ASlicesProjectionKeepsTheImageAndClipsToTheSlice) {
+    const glm::mat4 slice = shadow::slice_projection(kProj, 10.0f, 100.0f);
+    const auto ndc = [](const glm::mat4& m, const glm::vec3& v) {
+        const glm::vec4 c = m * glm::vec4(v, 1.0f);
+        return glm::vec3(c) / c.w;
+    };
+    // View space looks down -z: the slice's near plane at depth 10, its far plane at 100.
+    EXPECT_NEAR(ndc(slice, {0.0f, 0.0f, -10.0f}).z, -1.0f, 1e-5f);
+    EXPECT_NEAR(ndc(slice, {0.0f, 0.0f, -100.0f}).z, 1.0f, 1e-4f);
+    for (const glm::vec3 v : {glm::vec3(3.0f, -2.0f, -7.0f), glm::vec3(-40.0f, 12.0f, -60.0f), glm::vec3(5.0f, 5.0f, -300.0f)}) {
+        EXPECT_NEAR(ndc(slice, v).x, ndc(kProj, v).x, 1e-5f);
+        EXPECT_NEAR(ndc(slice, v).y, ndc(kProj, v).y, 1e-5f);
+    }
+    // The control: the whole frustum's projection puts depth 10 well inside, not on its near plane.
+    EXPECT_GT(ndc(kProj, {0.0f, 0.0f, -10.0f}).z, -0.99f);
+}
+
 TEST(CascadeAtlas, TwoSideBySideThreeAndFourInTwoRows) {
     int c = 0, r = 0;
     shadow::atlas_layout(2, c, r);
@@ -339,6 +356,41 @@ TEST_F(CascadePlan, TheAtlasIsCutToTheContextsMaximum) {
     bool noted = false;
     for (const auto& n : p.notes) noted = noted || n.find("each map cut to 4096") != std::string::npos;
     EXPECT_TRUE(noted);
+}
+
+TEST_F(CascadePlan, AutoMatchesTheCascadesToTheirSlicesWithinTheAtlassBound) {
+    // Each cascade is matched to the receivers in view within its slice; the nearest slice's
+    // ground, a few pixels from the camera, asks for far more texels than a tile can have, so the
+    // tiles get the largest the atlas allows: 64 MiB at 6 bytes a texel, 2048 for 2 tiles and
+    // 1024 for 4, each within the context's largest target.
+    ASSERT_EQ(render::parse_option(settings, "map-size", "auto"), "");
+    ASSERT_EQ(render::parse_option(settings, "cascades", "2"), "");
+    render::FramePlan p = make();
+    ASSERT_EQ(render::cascades_of(p).size(), 2u);
+    const render::MapSizeReport* m = p.find<render::MapSizeReport>();
+    ASSERT_NE(m, nullptr);
+    EXPECT_EQ(m->size, 2048);
+    EXPECT_EQ(p.resource("shadow-map")->desc.width, 4096);
+    EXPECT_GT(m->wanted, 2048);
+    // The nearest slice asks the most: matched against the whole view instead, the farthest
+    // cascade's window would hold the near ground too, at a far finer density on screen.
+    EXPECT_NE(m->why.find("(cascade 0, the most of the 2)"), std::string::npos) << m->why;
+    ASSERT_EQ(render::parse_option(settings, "cascades", "4"), "");
+    p = make();
+    ASSERT_EQ(render::cascades_of(p).size(), 4u);
+    EXPECT_EQ(p.find<render::MapSizeReport>()->size, 1024);
+    EXPECT_NE(p.find<render::MapSizeReport>()->why.find("(cascade 0, the most of the 4)"), std::string::npos);
+    // A context whose largest target is 2048: two tiles side by side of 1024 each.
+    ASSERT_EQ(render::parse_option(settings, "cascades", "2"), "");
+    caps.max_texture_size = caps.max_renderbuffer_size = caps.max_viewport_width = caps.max_viewport_height = 2048;
+    p = make();
+    EXPECT_EQ(p.find<render::MapSizeReport>()->size, 1024);
+    EXPECT_EQ(p.resource("shadow-map")->desc.width, 2048);
+    // The control: a fixed size is kept, and no match is made.
+    settings.map_size = 512;
+    p = make();
+    EXPECT_EQ(p.resource("shadow-map")->desc.width, 1024);
+    EXPECT_EQ(p.find<render::MapSizeReport>(), nullptr);
 }
 
 TEST_F(CascadePlan, TheCascadesAovNeedsTheShadowMap) {

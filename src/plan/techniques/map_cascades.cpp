@@ -1,8 +1,10 @@
 // Cascaded shadow maps (the cascades exercise): a directional light's view depth range split into
 // N maps, tiles of one atlas, each fitted to its slice. Reached through the shadow-map module's
 // weak reference in a page (shadow_map_parts.h): linked where an exercise names it.
+#include <algorithm>
 #include <cstdio>
 
+#include "plan/techniques/map_size.h"
 #include "plan/techniques/shadow_map_parts.h"
 #include "shadow/cascades.h"
 
@@ -18,6 +20,8 @@ bool plan_cascades(PlanContext& c, const ShadowBounds& b, int n, int& size) {
     int columns = 1, rows = 1;
     shadow::atlas_layout(n, columns, rows);
     const int max = c.caps.max_target_size();
+    const bool auto_size = s.map_size == Settings::kAutoMapSize;
+    if (auto_size) size = std::min(auto_first_guess(c), max / columns);
     if (size * columns > max) {
         c.plan.notes.push_back("--map-size " + std::to_string(size) + " with " + std::to_string(n) +
                                " cascades: each map cut to " + std::to_string(max / columns) +
@@ -33,6 +37,16 @@ bool plan_cascades(PlanContext& c, const ShadowBounds& b, int n, int& size) {
     std::string why;
     shadow::CascadeFit fit =
         shadow::fit_cascades(c.light, b.receivers, b.casters, c.plan.camera.view, c.plan.camera.proj, o, &why);
+    if (auto_size && !fit.cascades.empty()) {
+        // The tiles' size from what each cascade serves, then the cascades again at that size
+        // where it differs (each window's snap and texel follow the size).
+        const int first = size;
+        size = auto_map_size(c, b, fit);
+        if (size != first) {
+            o.tile = size;
+            fit = shadow::fit_cascades(c.light, b.receivers, b.casters, c.plan.camera.view, c.plan.camera.proj, o, &why);
+        }
+    }
     if (fit.cascades.empty()) {
         c.plan.notes.push_back(cascades_report(c).why + ": one map instead, " + why);
         cascades_report(c).why += " -> one map (" + why + ")";

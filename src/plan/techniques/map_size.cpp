@@ -17,11 +17,10 @@ constexpr int kAutoSmallest = 128;
 constexpr int kAutoLargest = 4096;
 constexpr double kAutoBytes = 64.0 * 1024.0 * 1024.0;
 
-// Within the context's largest target (a cube's atlas is 3 faces wide) and 64 MiB for the
-// whole atlas at 6 bytes a texel (RGBA8 and a 16-bit depth buffer): one map at most 2048, a
-// cube's faces 1024.
-int auto_largest(const PlanContext& c, int tiles) {
-    const int across = tiles > 1 ? 3 : 1;
+// Within the context's largest target (an atlas `across` tiles wide: a cube's 3 faces, 2
+// cascades) and 64 MiB for the whole atlas of `tiles` at 6 bytes a texel (RGBA8 and a 16-bit
+// depth buffer): one map or 2 cascades at most 2048, a cube's faces and 3 or 4 cascades 1024.
+int auto_largest(const PlanContext& c, int across, int tiles) {
     int largest = std::min(kAutoLargest, c.caps.max_target_size() / across);
     while (largest > kAutoSmallest && 6.0 * tiles * largest * static_cast<double>(largest) > kAutoBytes) largest /= 2;
     return largest;
@@ -63,7 +62,7 @@ const MapSizeReport* same_inputs_before(const PlanContext& c, const std::string&
 int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrustum& f) {
     if (const MapSizeReport* before = matched_before(c)) return before->size;
     const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
-    const int largest = auto_largest(c, 1);
+    const int largest = auto_largest(c, 1, 1);
     ContentKey key = match_inputs(c, b, image, largest);
     key.add(f.view_proj());
     const std::string inputs = key.str();
@@ -79,7 +78,7 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrus
 int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& fit) {
     if (const MapSizeReport* before = matched_before(c)) return before->size;
     const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
-    const int largest = auto_largest(c, shadow::kCubeFaces);
+    const int largest = auto_largest(c, 3, shadow::kCubeFaces);
     ContentKey key = match_inputs(c, b, image, largest);
     for (const shadow::CubeFace& face : fit.faces) {
         key.add(face.drawn);
@@ -103,6 +102,41 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& 
                 std::to_string(fit.drawn()) + " drawn)";
     c.plan.put(MapSizeReport{best.size, best.wanted, best.why, inputs});
     return best.size;
+}
+
+int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CascadeFit& fit) {
+    if (const MapSizeReport* before = matched_before(c)) return before->size;
+    const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
+    const int largest = auto_largest(c, fit.columns, fit.columns * fit.rows);
+    ContentKey key = match_inputs(c, b, image, largest);
+    for (const shadow::Cascade& k : fit.cascades) {
+        key.add(k.frustum.view_proj());
+        key.add(k.fit_begin);
+        key.add(k.end);
+    }
+    const std::string inputs = key.str();
+    if (const MapSizeReport* same = same_inputs_before(c, inputs)) return c.plan.put(*same).size;
+    shadow::MatchedSize best;
+    size_t index = 0;
+    for (size_t i = 0; i < fit.cascades.size(); ++i) {
+        const shadow::Cascade& k = fit.cascades[i];
+        // The camera clipped to the depths the cascade serves: its slice and the previous
+        // cascade's band blended into it (served by both, so counted in both).
+        const glm::mat4 slice = shadow::slice_projection(c.plan.camera.proj, k.fit_begin, k.end) * c.plan.camera.view;
+        const shadow::Demand d =
+            shadow::receiver_demand(c.light, b.receivers, slice, image.width, image.height, k.frustum.view_proj());
+        const shadow::MatchedSize m = shadow::matched_map_size(static_cast<float>(d.pixels), static_cast<float>(d.share), 1,
+                                                               kAutoSmallest, largest, d.dense, image.scaled);
+        if (i == 0 || m.wanted > best.wanted) best = m, index = i;
+    }
+    best.why += " (cascade " + std::to_string(index) + ", the most of the " + std::to_string(fit.cascades.size()) + ")";
+    c.plan.put(MapSizeReport{best.size, best.wanted, best.why, inputs});
+    return best.size;
+}
+
+int auto_first_guess(const PlanContext& c) {
+    const MapSizeReport* r = c.previous ? c.previous->find<MapSizeReport>() : nullptr;
+    return r ? r->size : c.settings.fixed_map_size();
 }
 
 }  // namespace penumbra::render

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "plan/techniques/technique.h"
+#include "shadow/cascades.h"
 #include "shadow/cube.h"
 
 namespace penumbra::render {
@@ -14,5 +15,11 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrus
 // would be under-sampled by a mean over the faces (bulb_room.gltf at 512x512: faces of 512 and
 // 0.130 % of error by the mean, 1024 and 0.056 % by the largest).
 int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& fit);
+// Cascades: each matched to the receivers in view within its slice of the camera's depth range,
+// in its window; the largest size any asks for (the atlas's tiles share one size), as for a cube.
+int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CascadeFit& fit);
+// The size a cascades' fit starts from under auto: the previous plan's match where it made one
+// (so a frame that keeps its size fits once), else the fixed default's.
+int auto_first_guess(const PlanContext& c);
 
 }  // namespace penumbra::render
