@@ -224,6 +224,32 @@ TEST(ResolutionPlan, AFrameWithTheSameInputsTakesThePreviousPlansMatch) {
     EXPECT_NE(map_width(course_plan(512, 512, "auto")), 256);
 }
 
+TEST(ResolutionPlan, TheSizeGoesUpAtOnceAndDownOnlyOnceTheWantIsWellUnderTheSmallerSize) {
+    // The course at t = 0.6 wants about 712 texels at 512x512, in proportion to the image's side.
+    const render::FramePlan large = course_plan(1024, 1024, "auto");
+    ASSERT_EQ(map_width(large), 2048);
+    // A want just under 1024 after a frame of 2048: the size stays.
+    const render::FramePlan near = course_plan(719, 719, "auto", &large);
+    const render::MapSizeReport* m = near.find<render::MapSizeReport>();
+    ASSERT_NE(m, nullptr);
+    ASSERT_GT(m->wanted, 0.9 * 1024);
+    ASSERT_LE(m->wanted, 1024);
+    EXPECT_EQ(map_width(near), 2048) << m->why;
+    EXPECT_EQ(m->size, 2048);
+    EXPECT_EQ(m->why.rfind("auto 2048: ", 0), 0u) << m->why;
+    EXPECT_NE(m->why.find("kept at 2048 from the last frame: the want is within 10% under 1024"), std::string::npos) << m->why;
+    // The controls: with no frame before it the same want is 1024, and a want well under 1024
+    // goes down.
+    EXPECT_EQ(map_width(course_plan(719, 719, "auto")), 1024);
+    const render::FramePlan far = course_plan(633, 633, "auto", &large);
+    ASSERT_LT(far.find<render::MapSizeReport>()->wanted, 0.9 * 1024);
+    EXPECT_EQ(map_width(far), 1024);
+    // Up at once: after a frame of 1024, a want just over it takes 2048.
+    const render::FramePlan up = course_plan(740, 740, "auto", &far);
+    ASSERT_GT(up.find<render::MapSizeReport>()->wanted, 1024);
+    EXPECT_EQ(map_width(up), 2048);
+}
+
 TEST(ResolutionPlan, ACubesFacesAreMatchedToo) {
     const scene::LoadResult r = scene::load_gltf(test::test_data_dir() + "/bulb_room.gltf");
     ASSERT_TRUE(r.ok) << r.error;

@@ -3,6 +3,7 @@
 #include "plan/techniques/map_size.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "plan/techniques/reports.h"
@@ -57,6 +58,22 @@ const MapSizeReport* same_inputs_before(const PlanContext& c, const std::string&
     return r && r->inputs == inputs ? r : nullptr;
 }
 
+// A want just under a power of two would flip the size back and forth as the light or the camera
+// moves (the course at 1280x720: 1032, then 1020 down to 928 and back to 1032 within 0.4 s), each
+// flip a texture made again and the shadow's edges jumping. So the size goes up as soon as the want
+// passes it, and down by one step only once the want is under kDownShare of the smaller size.
+constexpr double kDownShare = 0.9;
+
+void settle(const PlanContext& c, shadow::MatchedSize& m, int largest) {
+    const MapSizeReport* r = c.previous ? c.previous->find<MapSizeReport>() : nullptr;
+    if (!r || r->size != 2 * m.size || r->size > largest || m.wanted < kDownShare * m.size) return;
+    const std::string was = "auto " + std::to_string(m.size);
+    if (m.why.rfind(was, 0) == 0) m.why.replace(0, was.size(), "auto " + std::to_string(r->size));
+    m.why += "; kept at " + std::to_string(r->size) + " from the last frame: the want is within " +
+             std::to_string(static_cast<int>(std::lround(100.0 * (1.0 - kDownShare)))) + "% under " + std::to_string(m.size);
+    m.size = r->size;
+}
+
 }  // namespace
 
 int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrustum& f) {
@@ -69,8 +86,9 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrus
     if (const MapSizeReport* same = same_inputs_before(c, inputs)) return c.plan.put(*same).size;
     const shadow::Demand d =
         shadow::receiver_demand(c.light, b.receivers, c.plan.camera.view_proj, image.width, image.height, f.view_proj());
-    const shadow::MatchedSize m = shadow::matched_map_size(static_cast<float>(d.pixels), static_cast<float>(d.share), 1,
-                                                           kAutoSmallest, largest, d.dense, image.scaled);
+    shadow::MatchedSize m = shadow::matched_map_size(static_cast<float>(d.pixels), static_cast<float>(d.share), 1,
+                                                     kAutoSmallest, largest, d.dense, image.scaled);
+    settle(c, m, largest);
     c.plan.put(MapSizeReport{m.size, m.wanted, m.why, inputs});
     return m.size;
 }
@@ -100,6 +118,7 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& 
     }
     best.why += std::string(" (face ") + shadow::cube_face_name(face_index) + ", the most of the " +
                 std::to_string(fit.drawn()) + " drawn)";
+    settle(c, best, largest);
     c.plan.put(MapSizeReport{best.size, best.wanted, best.why, inputs});
     return best.size;
 }
@@ -130,6 +149,7 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CascadeFi
         if (i == 0 || m.wanted > best.wanted) best = m, index = i;
     }
     best.why += " (cascade " + std::to_string(index) + ", the most of the " + std::to_string(fit.cascades.size()) + ")";
+    settle(c, best, largest);
     c.plan.put(MapSizeReport{best.size, best.wanted, best.why, inputs});
     return best.size;
 }
