@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "plan/techniques/reports.h"
 #include "shadow/resolution.h"
@@ -74,6 +75,42 @@ void settle(const PlanContext& c, shadow::MatchedSize& m, int largest) {
     m.size = r->size;
 }
 
+// One of the maps that share a size (a cube's drawn face, a cascade): the camera as it sees
+// what the map serves, the map's window, and its name for the plan.
+struct Window {
+    glm::mat4 camera, map;
+    std::string name;
+};
+
+// Each window matched to the receivers it serves, the size the most asking one wants: a mean
+// would under-sample the one that sees much of the image in little of its map (map_size.h).
+int most_asking(PlanContext& c, const ShadowBounds& b, int largest, const std::vector<Window>& windows, const char* kind) {
+    if (const MapSizeReport* before = matched_before(c)) return before->size;
+    const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
+    ContentKey key = match_inputs(c, b, image, largest);
+    for (const Window& w : windows) {
+        key.add(w.name.data(), w.name.size());
+        key.add(w.camera);
+        key.add(w.map);
+    }
+    const std::string inputs = key.str();
+    if (const MapSizeReport* same = same_inputs_before(c, inputs)) return c.plan.put(*same).size;
+    shadow::MatchedSize best;
+    size_t most = 0;
+    for (size_t i = 0; i < windows.size(); ++i) {
+        const shadow::Demand d =
+            shadow::receiver_demand(c.light, b.receivers, windows[i].camera, image.width, image.height, windows[i].map);
+        const shadow::MatchedSize m = shadow::matched_map_size(static_cast<float>(d.pixels), static_cast<float>(d.share), 1,
+                                                               kAutoSmallest, largest, d.dense, image.scaled);
+        if (i == 0 || m.wanted > best.wanted) best = m, most = i;
+    }
+    if (!windows.empty())
+        best.why += " (" + windows[most].name + ", the most of the " + std::to_string(windows.size()) + kind + ")";
+    settle(c, best, largest);
+    c.plan.put(MapSizeReport{best.size, best.wanted, best.why, inputs});
+    return best.size;
+}
+
 }  // namespace
 
 int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrustum& f) {
@@ -94,64 +131,24 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrus
 }
 
 int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CubeFit& fit) {
-    if (const MapSizeReport* before = matched_before(c)) return before->size;
-    const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
-    const int largest = auto_largest(c, 3, shadow::kCubeFaces);
-    ContentKey key = match_inputs(c, b, image, largest);
-    for (const shadow::CubeFace& face : fit.faces) {
-        key.add(face.drawn);
-        if (face.drawn) key.add(face.frustum.view_proj());
-    }
-    const std::string inputs = key.str();
-    if (const MapSizeReport* same = same_inputs_before(c, inputs)) return c.plan.put(*same).size;
-    shadow::MatchedSize best;
-    int face_index = -1;
+    std::vector<Window> windows;
     for (int i = 0; i < shadow::kCubeFaces; ++i) {
         const shadow::CubeFace& face = fit.faces[static_cast<size_t>(i)];
-        if (!face.drawn) continue;
-        const shadow::Demand d = shadow::receiver_demand(c.light, b.receivers, c.plan.camera.view_proj, image.width,
-                                                         image.height, face.frustum.view_proj());
-        const shadow::MatchedSize m =
-            shadow::matched_map_size(static_cast<float>(d.pixels), static_cast<float>(d.share), 1, kAutoSmallest,
-                                     largest, d.dense, image.scaled);
-        if (face_index < 0 || m.wanted > best.wanted) best = m, face_index = i;
+        if (face.drawn) windows.push_back({c.plan.camera.view_proj, face.frustum.view_proj(), std::string("face ") + shadow::cube_face_name(i)});
     }
-    best.why += std::string(" (face ") + shadow::cube_face_name(face_index) + ", the most of the " +
-                std::to_string(fit.drawn()) + " drawn)";
-    settle(c, best, largest);
-    c.plan.put(MapSizeReport{best.size, best.wanted, best.why, inputs});
-    return best.size;
+    return most_asking(c, b, auto_largest(c, 3, shadow::kCubeFaces), windows, " drawn");
 }
 
 int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::CascadeFit& fit) {
-    if (const MapSizeReport* before = matched_before(c)) return before->size;
-    const shadow::MatchedImage image = shadow::matched_image(c.camera_target.width, c.camera_target.height);
-    const int largest = auto_largest(c, fit.columns, fit.columns * fit.rows);
-    ContentKey key = match_inputs(c, b, image, largest);
-    for (const shadow::Cascade& k : fit.cascades) {
-        key.add(k.frustum.view_proj());
-        key.add(k.fit_begin);
-        key.add(k.end);
-    }
-    const std::string inputs = key.str();
-    if (const MapSizeReport* same = same_inputs_before(c, inputs)) return c.plan.put(*same).size;
-    shadow::MatchedSize best;
-    size_t index = 0;
+    std::vector<Window> windows;
     for (size_t i = 0; i < fit.cascades.size(); ++i) {
         const shadow::Cascade& k = fit.cascades[i];
         // The camera clipped to the depths the cascade serves: its slice and the previous
         // cascade's band blended into it (served by both, so counted in both).
         const glm::mat4 slice = shadow::slice_projection(c.plan.camera.proj, k.fit_begin, k.end) * c.plan.camera.view;
-        const shadow::Demand d =
-            shadow::receiver_demand(c.light, b.receivers, slice, image.width, image.height, k.frustum.view_proj());
-        const shadow::MatchedSize m = shadow::matched_map_size(static_cast<float>(d.pixels), static_cast<float>(d.share), 1,
-                                                               kAutoSmallest, largest, d.dense, image.scaled);
-        if (i == 0 || m.wanted > best.wanted) best = m, index = i;
+        windows.push_back({slice, k.frustum.view_proj(), "cascade " + std::to_string(i)});
     }
-    best.why += " (cascade " + std::to_string(index) + ", the most of the " + std::to_string(fit.cascades.size()) + ")";
-    settle(c, best, largest);
-    c.plan.put(MapSizeReport{best.size, best.wanted, best.why, inputs});
-    return best.size;
+    return most_asking(c, b, auto_largest(c, fit.columns, fit.columns * fit.rows), windows, "");
 }
 
 int auto_first_guess(const PlanContext& c) {
