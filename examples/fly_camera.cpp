@@ -15,6 +15,10 @@ namespace penumbra::examples {
 namespace {
 
 constexpr double kPiD = 3.14159265358979323846;
+// Degrees to radians in float: yaw and pitch are floats, and float trigonometry keeps the pages'
+// modules free of double-precision sine, cosine and arc tangent (docs/payload.md).
+constexpr float kRadPerDeg = static_cast<float>(kPiD / 180.0);
+constexpr float kDegPerRad = static_cast<float>(180.0 / kPiD);
 constexpr float kMaxPitch = 89.0f;  // the fly camera never looks straight up or down
 
 // Yaw within (-180, 180].
@@ -71,9 +75,8 @@ const FlyBounds& room_fly_bounds() {
 }
 
 glm::vec3 fly_forward(const FlyCamera& c) {
-    const double yaw = static_cast<double>(c.yaw) * kPiD / 180.0, pitch = static_cast<double>(c.pitch) * kPiD / 180.0;
-    return glm::vec3(static_cast<float>(std::sin(yaw) * std::cos(pitch)), static_cast<float>(std::sin(pitch)),
-                     static_cast<float>(-std::cos(yaw) * std::cos(pitch)));
+    const float yaw = c.yaw * kRadPerDeg, pitch = c.pitch * kRadPerDeg;
+    return glm::vec3(std::sin(yaw) * std::cos(pitch), std::sin(pitch), -std::cos(yaw) * std::cos(pitch));
 }
 
 glm::mat4 fly_view(const FlyCamera& c) {
@@ -85,8 +88,8 @@ FlyCamera fly_from_view(const glm::mat4& view) {
     const glm::vec3 f = -glm::normalize(glm::vec3(inv[2]));
     FlyCamera c;
     c.eye = glm::vec3(inv[3]);
-    c.yaw = wrap_degrees(std::atan2(static_cast<double>(f.x), static_cast<double>(-f.z)) * 180.0 / kPiD);
-    c.pitch = static_cast<float>(std::asin(std::clamp(static_cast<double>(f.y), -1.0, 1.0)) * 180.0 / kPiD);
+    c.yaw = wrap_degrees(static_cast<double>(std::atan2(f.x, -f.z) * kDegPerRad));
+    c.pitch = std::asin(std::clamp(f.y, -1.0f, 1.0f)) * kDegPerRad;
     return c;
 }
 
@@ -94,8 +97,8 @@ bool fly_move(FlyCamera& c, const FlyBounds& b, double forward, double right, do
     for (const double v : {forward, right, up, yaw, pitch})
         if (!std::isfinite(v)) return false;
     const glm::vec3 f = fly_forward(c);
-    const double yaw_rad = static_cast<double>(c.yaw) * kPiD / 180.0;
-    const glm::vec3 side(static_cast<float>(std::cos(yaw_rad)), 0.0f, static_cast<float>(std::sin(yaw_rad)));
+    const float yaw_rad = c.yaw * kRadPerDeg;
+    const glm::vec3 side(std::cos(yaw_rad), 0.0f, std::sin(yaw_rad));
     c.eye += static_cast<float>(forward) * f + static_cast<float>(right) * side + glm::vec3(0.0f, static_cast<float>(up), 0.0f);
     c.yaw = wrap_degrees(static_cast<double>(c.yaw) + yaw);
     c.pitch = static_cast<float>(static_cast<double>(c.pitch) + pitch);

@@ -30,6 +30,15 @@ constexpr double kJumpPeriod = 1.5;      // seconds per bounce
 constexpr double kTwoPi = 6.283185307179586;
 constexpr int kMarbleSize = 512;
 constexpr std::uint32_t kMarbleSeed = 7;
+
+// The angle of a turn of `period` seconds at t, in [0, 2 pi): the turns counted in double, so a
+// clock that has run for hours keeps its phase, and the sine taken in float, as the positions are
+// floats. The pages' modules then hold no double-precision sine or cosine (docs/payload.md).
+float turn_angle(double t, double period) {
+    const double turns = t / period;
+    return static_cast<float>(kTwoPi * (turns - std::floor(turns)));
+}
+
 }  // namespace
 
 bool marble_complete(const CourseScene& course) {
@@ -43,13 +52,13 @@ bool complete_marble(CourseScene& course) {
 }
 
 glm::vec3 course_light_position(double t) {
-    const double a = kTwoPi * t / kLightPeriod;
-    return {kLightRadius * static_cast<float>(std::cos(a)), kLightHeight, kLightRadius * static_cast<float>(std::sin(a))};
+    const float a = turn_angle(t, kLightPeriod);
+    return {kLightRadius * std::cos(a), kLightHeight, kLightRadius * std::sin(a)};
 }
 
 float course_teapot_lift(double t) {
     // |sin| bounces: the teapot touches the table at t = 0, 1.5, 3, ... and is highest in between.
-    return kJumpHeight * static_cast<float>(std::fabs(std::sin(kTwoPi * 0.5 * t / kJumpPeriod)));
+    return kJumpHeight * std::fabs(std::sin(turn_angle(t, 2.0 * kJumpPeriod)));
 }
 
 double course_teapot_landing(double t) {

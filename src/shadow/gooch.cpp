@@ -85,9 +85,12 @@ std::vector<glm::vec2> gooch_disc(int k) {
     if (k == 1) return {glm::vec2(0.0f)};
     const double golden = 2.39996322972865332;
     for (int i = 0; i < k; ++i) {
-        const double r = std::sqrt((i + 0.5) / k);
-        const double a = golden * i;
-        out.emplace_back(static_cast<float>(r * std::cos(a)), static_cast<float>(r * std::sin(a)));
+        // The angle reduced to one turn in double, its sine and cosine in float: the points are
+        // floats, and the pages' modules then hold no double-precision trigonometry.
+        const double turns = golden * i / 6.283185307179586;
+        const float r = static_cast<float>(std::sqrt((i + 0.5) / k));
+        const float a = static_cast<float>(6.283185307179586 * (turns - std::floor(turns)));
+        out.emplace_back(r * std::cos(a), r * std::sin(a));
     }
     return out;
 }
