@@ -45,9 +45,25 @@ bool marble_complete(const CourseScene& course) {
     return course.marble < 0 || course.scene.images[static_cast<size_t>(course.marble)].width == kMarbleSize;
 }
 
+namespace {
+
+// The table's material with the marble, or (while it is deferred) in the placeholder's colour and
+// untextured: then the first frame's table and teapot share one program, and a software rasteriser
+// compiles one pipeline for that frame instead of two (docs/payload.md).
+void dress_table(CourseScene& c, bool marble) {
+    Material& m = c.scene.materials[static_cast<size_t>(c.scene.objects[static_cast<size_t>(c.table)].material)];
+    const Image& img = c.scene.images[static_cast<size_t>(c.marble)];
+    m.base_color = marble ? glm::vec4(1.0f)
+                          : glm::vec4(img.rgba[0], img.rgba[1], img.rgba[2], img.rgba[3]) / 255.0f;
+    m.base_color_texture = marble ? c.marble : -1;
+}
+
+}  // namespace
+
 bool complete_marble(CourseScene& course) {
     if (marble_complete(course)) return false;
     course.scene.images[static_cast<size_t>(course.marble)] = make_marble(kMarbleSize, kMarbleSeed);
+    dress_table(course, true);
     return true;
 }
 
@@ -77,8 +93,6 @@ CourseScene make_course_scene(int teapot_level, bool portal, bool marble_now) {
 
     Material marble;
     marble.name = "marble";
-    marble.base_color = glm::vec4(1.0f);
-    marble.base_color_texture = 0;
     marble.specular = 0.35f;
     marble.shininess = 48.0f;
     Material porcelain;
@@ -112,6 +126,7 @@ CourseScene make_course_scene(int teapot_level, bool portal, bool marble_now) {
     if (portal)  // drawn only under --effects portal
         if (const auto make = portal_getter()) s.portal = make();
 
+    dress_table(c, marble_now);
     animate_course(c, 0.0, 0.0);
     return c;
 }

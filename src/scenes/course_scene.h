@@ -17,8 +17,9 @@ struct CourseScene {
 // Geometry, materials and the marble texture; the animated parts at t = 0. With `portal` the
 // scene's portal (--effects portal's frame and the other scene seen through it, portal_scene.h);
 // without it Scene::portal is empty: a page that may never draw it adds it when a frame asks for
-// it (CourseApp::course_scene_for). Without `marble` the table's texture is marble_placeholder()
-// until complete_marble() makes it (the pages draw their first frame before the marble's noise).
+// it (CourseApp::course_scene_for). Without `marble` the table is untextured, in the colour of
+// marble_placeholder() (the image the marble's index holds), until complete_marble() makes the
+// marble and puts it on the table (the pages draw their first frame before the marble's noise).
 CourseScene make_course_scene(int teapot_level = 10, bool portal = true, bool marble = true);
 // Whether the table has its marble texture, and the marble (make_marble(512, 7)) made in place of
 // the placeholder: false if it was there already.

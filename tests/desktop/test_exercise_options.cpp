@@ -558,29 +558,39 @@ TEST(ExerciseValues, TheJumpSwitchedOffLandsTheTeapot) {
 }
 
 // The pages' app defers the marble's noise past the first frame (examples/course_web.cpp): until
-// complete_scene() the table shows a 1 x 1 placeholder; after it, the very marble an app made at
-// once has, byte for byte, so the pages' later frames are the CLI's. The control: an app made at
-// once is complete from the start and has nothing to make.
+// complete_scene() the table is untextured, in the 1 x 1 placeholder's colour (so the first frame's
+// table and teapot share a program); after it, the table has the very marble an app made at once,
+// byte for byte, and the same material, so the pages' later frames are the CLI's. The control: an
+// app made at once is complete from the start and has nothing to make.
 TEST(ExerciseOptions, ADeferredMarbleIsTheSameMarbleOnceMade) {
-    const auto marble = [](const CourseApp& app) -> const penumbra::scene::Image& {
+    const auto table = [](const CourseApp& app) -> const penumbra::scene::Material& {
         const auto& s = app.scene();
         const auto it = std::find_if(s.materials.begin(), s.materials.end(), [](const auto& m) { return m.name == "marble"; });
         EXPECT_NE(it, s.materials.end());
-        return s.images.at(static_cast<size_t>(it->base_color_texture));
+        return *it;
+    };
+    const auto marble = [&](const CourseApp& app) -> const penumbra::scene::Image& {
+        return app.scene().images.at(static_cast<size_t>(table(app).base_color_texture));
     };
     CourseApp at_once("w09p1");
     EXPECT_TRUE(at_once.scene_complete());
     EXPECT_FALSE(at_once.complete_scene());
     EXPECT_EQ(marble(at_once).width, 512);
+    EXPECT_EQ(table(at_once).base_color, glm::vec4(1.0f));
 
     CourseApp deferred("w09p1", true);
     EXPECT_FALSE(deferred.scene_complete());
-    EXPECT_EQ(marble(deferred).width, 1);
-    EXPECT_EQ(marble(deferred).rgba.size(), 4u);
-    EXPECT_NE(marble(deferred).rgba, marble(at_once).rgba);
+    EXPECT_EQ(table(deferred).base_color_texture, -1);
+    const auto& placeholder = deferred.scene().images.at(static_cast<size_t>(table(at_once).base_color_texture));
+    ASSERT_EQ(placeholder.rgba.size(), 4u);
+    for (int c = 0; c < 4; ++c)
+        EXPECT_EQ(table(deferred).base_color[c], static_cast<float>(placeholder.rgba[static_cast<size_t>(c)]) / 255.0f);
+    EXPECT_NE(table(deferred).base_color, glm::vec4(1.0f)) << "the placeholder is the marble's mean grey, not white";
     EXPECT_TRUE(deferred.complete_scene());
     EXPECT_TRUE(deferred.scene_complete());
     EXPECT_FALSE(deferred.complete_scene());
+    EXPECT_EQ(table(deferred).base_color_texture, table(at_once).base_color_texture);
+    EXPECT_EQ(table(deferred).base_color, table(at_once).base_color);
     EXPECT_EQ(marble(deferred).width, marble(at_once).width);
     EXPECT_EQ(marble(deferred).height, marble(at_once).height);
     EXPECT_TRUE(marble(deferred).rgba == marble(at_once).rgba);
