@@ -82,39 +82,6 @@ bool is_closed(const Mesh& mesh) {
     return is_closed(weld(mesh));
 }
 
-bool is_convex(const Topology& t, bool closed) {
-    const size_t tris = t.triangles.size() / 3;
-    if (tris == 0 || t.positions.size() * tris > (size_t{1} << 22)) return false;
-    Bounds b;
-    for (const glm::vec3& p : t.positions) b.add(p);
-    const float tolerance = 1e-5f * glm::length(b.max - b.min);
-    // The planes of the triangles; a flat surface has one (up to the tolerance).
-    bool flat = true, behind = true;
-    const glm::vec3& a0 = t.positions[t.triangles[0]];
-    glm::vec3 n0(0.0f);
-    for (size_t k = 0; k < tris && glm::length(n0) == 0.0f; ++k) {
-        const glm::vec3& a = t.positions[t.triangles[3 * k]];
-        n0 = glm::cross(t.positions[t.triangles[3 * k + 1]] - a, t.positions[t.triangles[3 * k + 2]] - a);
-    }
-    if (!(glm::length(n0) > 0.0f)) return false;
-    n0 = glm::normalize(n0);
-    for (const glm::vec3& p : t.positions) flat = flat && std::fabs(glm::dot(p - a0, n0)) <= tolerance;
-    if (flat) return true;
-    if (!closed) return false;
-    for (size_t k = 0; k < tris && behind; ++k) {
-        const glm::vec3& a = t.positions[t.triangles[3 * k]];
-        const glm::vec3 n = glm::cross(t.positions[t.triangles[3 * k + 1]] - a, t.positions[t.triangles[3 * k + 2]] - a);
-        const float len = glm::length(n);
-        if (!(len > 0.0f)) continue;
-        for (const glm::vec3& p : t.positions)
-            if (glm::dot(p - a, n) > tolerance * len) {
-                behind = false;
-                break;
-            }
-    }
-    return behind;
-}
-
 bool is_faceted(const Mesh& mesh) {
     if (mesh.indices.size() < 3 || mesh.normals.size() != mesh.positions.size()) return false;
     constexpr float kCos = 0.9999995f;  // cos(1e-3)

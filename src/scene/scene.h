@@ -63,8 +63,8 @@ bool is_closed(const Topology& topology);
 // Whether no point of the surface can hide another point of it from a light that the second
 // point faces: every welded vertex lies in one plane (a flat quad, lit from either side), or the
 // surface is closed and every vertex lies on or behind every triangle's plane (a box, a sphere;
-// consistent outward winding). Conservative: false for a mesh too large to check (over 2^22
-// vertex-triangle pairs) and within 1e-5 of the mesh's size of a plane counts as on it.
+// consistent outward winding). Decided edge by edge in time linear in the mesh (convexity.cpp);
+// within 1e-5 of the mesh's size of a plane, or 1e-5 radians of fold at an edge, counts as on it.
 bool is_convex(const Topology& topology, bool closed);
 
 // Whether every triangle's three vertex normals lie along the triangle's own normal (either way
