@@ -2,11 +2,40 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <tuple>
-#include <unordered_map>
+#include <cstdint>
+
+#include <glm/gtc/type_precision.hpp>
 
 namespace penumbra::scene {
+
+namespace {
+
+// For each of n items, the first item with the same key (itself when none came before): open
+// addressing over a power-of-two table with linear probing: two flat arrays, where a std::map's
+// node per key and its tree walks made the teapot's weld the longest step of the pages' main() in
+// wasm (docs/payload.md).
+template <class Hash, class Same>
+std::vector<std::uint32_t> first_alike(size_t n, Hash hash, Same same) {
+    size_t size = 16;
+    while (size < 2 * n) size *= 2;
+    std::vector<std::uint32_t> table(size, UINT32_MAX), first(n);
+    for (size_t i = 0; i < n; ++i) {
+        size_t h = hash(i) & (size - 1);
+        while (table[h] != UINT32_MAX && !same(table[h], i)) h = (h + 1) & (size - 1);
+        if (table[h] == UINT32_MAX) table[h] = static_cast<std::uint32_t>(i);
+        first[i] = table[h];
+    }
+    return first;
+}
+
+// A 64-bit finaliser (splitmix64's): neighbouring keys land far apart in the table.
+size_t mix(std::uint64_t k) {
+    k = (k ^ (k >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    k = (k ^ (k >> 27)) * 0x94d049bb133111ebULL;
+    return static_cast<size_t>(k ^ (k >> 31));
+}
+
+}  // namespace
 
 Topology weld(const Mesh& mesh) {
     Topology t;
@@ -14,15 +43,24 @@ Topology weld(const Mesh& mesh) {
     const float size = glm::length(b.max - b.min);
     if (!(size > 0.0f) || !std::isfinite(size) || mesh.indices.size() % 3 != 0) return t;
     const float cell = 1e-6f * size;
-    // One id per rounded position.
-    std::map<std::tuple<long long, long long, long long>, std::uint32_t> ids;
+    // One id per rounded position, in the order the positions first come.
+    std::vector<glm::i64vec3> keys(mesh.positions.size());
+    for (size_t i = 0; i < keys.size(); ++i) keys[i] = glm::i64vec3(glm::round(mesh.positions[i] / cell));
+    const std::vector<std::uint32_t> first = first_alike(
+        keys.size(),
+        [&](size_t i) {
+            return mix(static_cast<std::uint64_t>(keys[i].x) * 0x9e3779b97f4a7c15ULL ^
+                       static_cast<std::uint64_t>(keys[i].y) * 0xc2b2ae3d27d4eb4fULL ^ static_cast<std::uint64_t>(keys[i].z));
+        },
+        [&](size_t i, size_t j) { return keys[i] == keys[j]; });
     std::vector<std::uint32_t> id(mesh.positions.size());
-    for (size_t i = 0; i < mesh.positions.size(); ++i) {
-        const glm::vec3 q = glm::round(mesh.positions[i] / cell);
-        const auto key = std::make_tuple(static_cast<long long>(q.x), static_cast<long long>(q.y), static_cast<long long>(q.z));
-        const auto [it, added] = ids.emplace(key, static_cast<std::uint32_t>(t.positions.size()));
-        if (added) t.positions.push_back(mesh.positions[i]);
-        id[i] = it->second;
+    for (size_t i = 0; i < id.size(); ++i) {
+        if (first[i] == i) {
+            id[i] = static_cast<std::uint32_t>(t.positions.size());
+            t.positions.push_back(mesh.positions[i]);
+        } else {
+            id[i] = id[first[i]];
+        }
     }
     for (size_t k = 0; k + 2 < mesh.indices.size(); k += 3) {
         std::uint32_t v[3];
@@ -41,18 +79,24 @@ Topology weld(const Mesh& mesh) {
 
 void index_edges(Topology& t) {
     t.edges.clear();
-    t.corner_edges.assign(t.triangles.size() / 3 * 3, 0);
-    std::unordered_map<std::uint64_t, std::uint32_t> ids;
-    ids.reserve(t.triangles.size());
-    for (size_t k = 0; k + 2 < t.triangles.size(); k += 3)
-        for (size_t j = 0; j < 3; ++j) {
-            const std::uint32_t a = t.triangles[k + j], b = t.triangles[k + (j + 1) % 3];
-            const std::uint32_t lo = std::min(a, b), hi = std::max(a, b);
-            const auto [it, added] = ids.emplace((static_cast<std::uint64_t>(lo) << 32) | hi,
-                                                 static_cast<std::uint32_t>(t.edges.size() / 2));
-            if (added) t.edges.insert(t.edges.end(), {lo, hi});
-            t.corner_edges[k + j] = it->second;
+    const size_t corners = t.triangles.size() / 3 * 3;
+    // Each corner's edge as its two vertices, lower first, in one 64-bit key.
+    std::vector<std::uint64_t> keys(corners);
+    for (size_t c = 0; c < corners; ++c) {
+        const std::uint32_t a = t.triangles[c], b = t.triangles[c - c % 3 + (c % 3 + 1) % 3];
+        keys[c] = (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+    }
+    const std::vector<std::uint32_t> first =
+        first_alike(corners, [&](size_t c) { return mix(keys[c]); }, [&](size_t c, size_t d) { return keys[c] == keys[d]; });
+    t.corner_edges.assign(corners, 0);
+    for (size_t c = 0; c < corners; ++c) {
+        if (first[c] == c) {
+            t.corner_edges[c] = static_cast<std::uint32_t>(t.edges.size() / 2);
+            t.edges.insert(t.edges.end(), {static_cast<std::uint32_t>(keys[c] >> 32), static_cast<std::uint32_t>(keys[c])});
+        } else {
+            t.corner_edges[c] = t.corner_edges[first[c]];
         }
+    }
 }
 
 const Topology& with_edge_table(const Topology& topology, Topology& storage) {
