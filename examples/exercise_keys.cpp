@@ -145,7 +145,7 @@ std::string CourseApp::on_key(int key, bool shift) {
         case 'U': return set("bias", "auto") + " (" + format_number(static_cast<double>(bias())) + " + slope)";
         case '=':
         case '-': {  // the light's radius, in steps of 0.05 (from the scene's, 0 for the course scene)
-            const double r = static_cast<double>(settings_.light_radius.value_or(course_.scene.light.radius));
+            const double r = static_cast<double>(settings_.light_radius.value_or(made_course().scene.light.radius));
             return set("light-radius", format_number(std::max(0.0, std::round((r + (key == '=' ? 0.05 : -0.05)) * 100.0) / 100.0)));
         }
         case 'P': {

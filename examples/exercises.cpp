@@ -80,27 +80,37 @@ const render::AreaStats* area_stats(const render::FramePlan& plan) { return rend
 
 // Without its portal: course_scene_for() adds it for the first frame that asks for it.
 CourseApp::CourseApp(std::string_view exercise, bool defer_marble)
-    : exercise_(&exercise_named(exercise)), course_(scene::make_course_scene(10, false, !defer_marble)) {
-    scene_camera_ = course_.scene.camera;
-    // What any exercise's frames add to the course scene (W09P2b's ground), before a GL object is made.
-    for (const Exercise& x : exercise_list())
-        if (x.extend_course) x.extend_course(course_.scene);
+    : exercise_(&exercise_named(exercise)), defer_marble_(defer_marble) {
+    // A page's first frame of an exercise with its own scene does without the course scene.
+    if (!defer_marble || !flies(*exercise_)) made_course();
     own_scene();
     apply_defaults();
 }
 
 CourseApp::~CourseApp() = default;
 
+scene::CourseScene& CourseApp::made_course() const {
+    if (course_) return *course_;
+    course_ = scene::make_course_scene(10, false, !defer_marble_);
+    scene_camera_ = course_->scene.camera;
+    // What any exercise's frames add to the course scene (W09P2b's ground), before a GL object is made.
+    for (const Exercise& x : exercise_list())
+        if (x.extend_course) x.extend_course(course_->scene);
+    return *course_;
+}
+
 bool CourseApp::complete_scene() {
-    if (!scene::complete_marble(course_)) return false;
+    const bool made = !course_;
+    scene::CourseScene& course = made_course();
+    if (!scene::complete_marble(course)) return made;
     // The texture changed in place: uploaded again where the course scene is the renderer's (a
     // scene not loaded is uploaded whole, marble and all, by the first frame that draws it).
-    if (renderer_ && renderer_->has_loaded(course_.scene))
-        renderer_->update_image(static_cast<std::size_t>(course_.marble), course_.scene.images[static_cast<std::size_t>(course_.marble)]);
+    if (renderer_ && renderer_->has_loaded(course.scene))
+        renderer_->update_image(static_cast<std::size_t>(course.marble), course.scene.images[static_cast<std::size_t>(course.marble)]);
     return true;
 }
 
-bool CourseApp::scene_complete() const { return scene::marble_complete(course_); }
+bool CourseApp::scene_complete() const { return course_ && scene::marble_complete(*course_); }
 
 CourseApp::OwnScene* CourseApp::own_scene() {
     const Exercise& x = *exercise_;
@@ -121,7 +131,7 @@ const CourseApp::OwnScene* CourseApp::own_scene() const {
 
 const scene::Scene& CourseApp::scene() const {
     const OwnScene* o = own_scene();
-    return o ? *o->scene : course_.scene;
+    return o ? *o->scene : made_course().scene;
 }
 
 bool CourseApp::fly(double forward, double right, double up, double yaw, double pitch) {
@@ -400,9 +410,10 @@ int CourseApp::gpu_discarded() const { return renderer_ ? renderer_->gpu_timer()
 
 const scene::Scene& CourseApp::course_scene_for(const render::Settings& s) {
     // (A page without the portal's scene refuses the effect: render::unlinked_problem.)
-    if (s.has(render::Effect::Portal) && !course_.scene.portal)
-        if (const auto make = portal_getter()) course_.scene.portal = make();
-    return course_.scene;
+    scene::Scene& course = made_course().scene;
+    if (s.has(render::Effect::Portal) && !course.portal)
+        if (const auto make = portal_getter()) course.portal = make();
+    return course;
 }
 
 void CourseApp::render(const render::Settings& s, const render::FrameInputs& in, const char* label) {
@@ -471,7 +482,7 @@ std::vector<render::SnippetProblem> CourseApp::set_snippets(std::string_view tex
         return problems;
     }
     if (const std::string why = lab_refusal(); !why.empty()) return {{0, why}};
-    scene::animate_course(course_, clock_.light, clock_.jump);
+    scene::animate_course(made_course(), clock_.light, clock_.jump);
     const render::Settings s = frame_settings();
     auto problems = render::set_snippets(*renderer_, course_scene_for(s), s, text);
     if (problems.empty()) snippets_ = std::string(text);
@@ -488,8 +499,8 @@ render::LabVerdict CourseApp::lab_check(std::string_view text, int width, int he
         v.problems = {{0, why}};
         return v;
     }
-    scene::animate_course(course_, t, t);  // the next draw() puts the scene back at the clocks'
-    course_.scene.camera = scene_camera_;
+    scene::animate_course(made_course(), t, t);  // the next draw() puts the scene back at the clocks'
+    course_->scene.camera = scene_camera_;
     const render::Settings s = frame_settings();
     v = render::lab_check(*renderer_, course_scene_for(s), s, text, render::offscreen(width, height));
     if (v.compiles) snippets_ = std::string(text);  // else the renderer kept snippets_ (render::lab_check)
@@ -497,7 +508,7 @@ render::LabVerdict CourseApp::lab_check(std::string_view text, int width, int he
 }
 
 render::FrameInputs CourseApp::light_view(render::Output output, bool ortho, const render::Output& camera) const {
-    const scene::Scene& sc = course_.scene;
+    const scene::Scene& sc = made_course().scene;
     scene::Light light = sc.light;
     if (ortho) {
         // A directional light along the point light's line of sight to the scene.
@@ -520,11 +531,14 @@ void CourseApp::draw(int width, int height) {
     const CourseTrade* trade_code = trade();
     if (trade_code) (this->*trade_code->start)();
     const auto start = std::chrono::steady_clock::now();
-    scene::animate_course(course_, clock_.light, clock_.jump);
-    // The eye: the scene's camera, or (where the light now is) inside the teapot's shadow.
-    course_.scene.camera = scene_camera_;
-    if (eye_in_shadow_)
-        if (const auto place = eye_getter()) place(course_.scene);
+    // The course scene where it is made (a page's first frame of the bulb room has none yet).
+    if (course_) {
+        scene::animate_course(*course_, clock_.light, clock_.jump);
+        // The eye: the scene's camera, or (where the light now is) inside the teapot's shadow.
+        course_->scene.camera = scene_camera_;
+        if (eye_in_shadow_)
+            if (const auto place = eye_getter()) place(course_->scene);
+    }
     width_ = width;
     height_ = height;
     plan_text_.clear();
@@ -546,7 +560,7 @@ void CourseApp::draw(int width, int height) {
     }();
     if (scene_complete()) exercise_->draw(*this, frame_settings(), std::move(in));
     else if (own_scene()) render_own_scene(first, in);
-    else render_plan(course_.scene, first, in, "");
+    else render_plan(made_course().scene, first, in, "");
     timer.end_group();
     timer.set_prefix("");
     // Wait for the frame before the clock stops. glFinish would do on the desktop, but WebGL's

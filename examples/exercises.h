@@ -218,7 +218,7 @@ private:
     int width() const override { return width_; }
     int height() const override { return height_; }
     const gl::Caps& gl_caps() const override { return renderer_->caps(); }
-    const scene::CourseScene& course() const override { return course_; }
+    const scene::CourseScene& course() const override { return made_course(); }
     void render(const render::Settings& s, const render::FrameInputs& in, const char* label = "") override;
     void render_own_scene(const render::Settings& s, const render::FrameInputs& in) override;
     render::FrameInputs light_view(render::Output output, bool ortho, const render::Output& camera) const override;
@@ -245,8 +245,13 @@ private:
     const Exercise* exercise_ = nullptr;
     render::Settings settings_;
     Toggles toggles_;
-    scene::CourseScene course_;
-    scene::Camera scene_camera_;  // the course scene's own camera (eye=scene)
+    // The course scene, made on first use (made_course()): a page whose exercise has a scene of its
+    // own (the bulb room, the terrain) draws that scene's first frame before the teapot is
+    // tessellated and welded, and makes the course with the marble in complete_scene().
+    scene::CourseScene& made_course() const;
+    mutable std::optional<scene::CourseScene> course_;
+    mutable scene::Camera scene_camera_;  // the course scene's own camera (eye=scene)
+    bool defer_marble_ = false;
     std::map<std::string_view, OwnScene> own_;  // by exercise name
     bool eye_in_shadow_ = false;  // eye=in-shadow: scene::place_eye_in_shadow each frame
     std::unique_ptr<render::Renderer> renderer_;

@@ -3,6 +3,8 @@
 // others. (Split from test_exercise_options.cpp: no file over 600 lines.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "exercises.h"
 #include "platform/platform.h"
 #include "scenes/terrain_scene.h"
@@ -170,4 +172,24 @@ TEST(ExerciseBulb, Keys) {
     const std::string help = CourseApp::key_help();
     EXPECT_NE(help.find("bulb: shadow maps cube"), std::string::npos) << help;
     EXPECT_NE(help.find("exercise bulb"), std::string::npos) << help;
+}
+
+// A page (the marble deferred) whose exercise has a scene of its own completes the course scene
+// after its first frame, marble and all: switching to a course exercise then finds it whole.
+TEST(ExerciseBulb, APageCompletesTheCourseSceneAfterTheRoom) {
+    for (const char* own : {"bulb", "cascades"}) {
+        CourseApp page(own, true);
+        EXPECT_FALSE(page.scene_complete()) << own << ": the first frame is the room unshadowed";
+        const size_t objects = page.scene().objects.size();
+        EXPECT_TRUE(page.complete_scene()) << own;
+        EXPECT_TRUE(page.scene_complete()) << own;
+        EXPECT_FALSE(page.complete_scene()) << own << ": nothing left to make";
+        EXPECT_EQ(page.scene().objects.size(), objects) << own << ": still its own scene";
+        page.set_exercise("w09p1");
+        const auto& s = page.scene();
+        const auto table = std::find_if(s.materials.begin(), s.materials.end(), [](const auto& m) { return m.name == "marble"; });
+        ASSERT_NE(table, s.materials.end()) << own;
+        EXPECT_GE(table->base_color_texture, 0) << own << ": the marble made, not the placeholder";
+        EXPECT_EQ(s.images.at(static_cast<size_t>(table->base_color_texture)).width, 512) << own;
+    }
 }
