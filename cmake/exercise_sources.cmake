@@ -10,6 +10,7 @@ set(PENUMBRA_EXERCISE_SOURCES
     ${CMAKE_SOURCE_DIR}/examples/exercises.cpp
     ${CMAKE_SOURCE_DIR}/examples/exercise_budget.cpp
     ${CMAKE_SOURCE_DIR}/examples/exercise_keys.cpp
+    ${CMAKE_SOURCE_DIR}/examples/exercise_scenes.cpp
     ${CMAKE_SOURCE_DIR}/examples/frame_timing.cpp
     ${PENUMBRA_EXERCISE_LIST_SOURCES})
 # The exercises' names in the list's order (X(name) lines): the desktop tests' list.
