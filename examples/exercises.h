@@ -43,9 +43,11 @@ class CourseApp final : private Host {
 public:
     // The exercise of that name (exercise_list()); std::invalid_argument for a name not listed.
     // With `defer_marble` the course scene's table has a placeholder texture until complete_scene()
-    // (the pages: their first frame comes before the marble's noise is made).
+    // (the pages: their first frame comes before the marble's noise is made), and an exercise with
+    // a scene of its own starts without the course scene.
     explicit CourseApp(std::string_view exercise, bool defer_marble = false);
-    // Makes what the constructor deferred (the marble), for the frames from the next one on.
+    // Makes what the constructor deferred (the marble, or the whole course scene), for the frames
+    // from the next one on.
     // Returns true when it made something; false when the scene was already complete.
     bool complete_scene();
     bool scene_complete() const;
