@@ -432,8 +432,9 @@ render::LabVerdict CourseApp::lab_check(std::string_view text, int width, int he
         v.problems = {{0, why}};
         return v;
     }
-    scene::animate_course(made_course(), t, t);  // the next draw() puts the scene back at the clocks'
-    course_->scene.camera = scene_camera_;
+    scene::CourseScene& course = made_course();
+    scene::animate_course(course, t, t);  // the next draw() puts the scene back at the clocks'
+    course.scene.camera = scene_camera_;
     const render::Settings s = frame_settings();
     v = render::lab_check(*renderer_, course_scene_for(s), s, text, render::offscreen(width, height));
     if (v.compiles) snippets_ = std::string(text);  // else the renderer kept snippets_ (render::lab_check)

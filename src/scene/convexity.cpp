@@ -1,9 +1,9 @@
 // is_convex (scene.h) in time linear in the mesh. Checking every vertex against every triangle's
-// plane costs vertices x triangles: a 64x32 sphere is 8 million dot products, and a page's room of
-// spheres spent 60-160 ms of its first frame there in wasm. A closed surface is instead convex
-// when it is convex at every edge and at every vertex (polyhedral Hadamard: a closed, locally
-// convex, immersed surface bounds a convex body); the checks below say that edge by edge and
-// count, once, how many times the surface wraps its Gauss sphere.
+// plane costs vertices x triangles, which grows with the square of a mesh's size (docs/scale.md).
+// A closed surface is instead convex when it is convex at every edge and at every vertex
+// (polyhedral Hadamard: a closed, locally convex, immersed surface bounds a convex body); the
+// checks below say that edge by edge and count, once, how many times the surface wraps its Gauss
+// sphere.
 #include "scene/scene.h"
 
 #include <cmath>
