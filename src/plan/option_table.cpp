@@ -93,8 +93,9 @@ std::vector<Option<Options>> make_table() {
 
     OptionInfo map_size = make_option_info("map-size", P::Technique, T::Integer,
                                            "shadow map width = height in texels; auto = matched to the screen: two texels "
-                                           "a pixel on average over the receivers in view, one over 90% of them, a power "
-                                           "of two (a cube's faces or cascades each matched, all at the size the most asking wants)",
+                                           "a pixel on average over the receivers in view, one over 90% of them, rounded up by "
+                                           "eighths of an octave (a cube's faces or cascades: a power of two, each matched, all at "
+                                           "the size the most asking wants)",
                                            "Shadow map size", {{"auto", "auto: matched to the screen"}});
     map_size.min = 1;
     map_size.max = kMaxMapSize;

@@ -171,7 +171,17 @@ MatchedImage matched_image(int width, int height) {
     return m;
 }
 
-MatchedSize matched_map_size(float pixels, float use, int maps, int smallest, int largest, double dense, bool scaled) {
+int map_size_step(double wanted, int smallest, SizeSteps steps) {
+    int n = smallest;
+    while (n < wanted && n < (1 << 30)) n *= 2;
+    if (steps == SizeSteps::PowersOfTwo || n == smallest) return n;
+    // n is the power of two at or above the want; the want lies in (n / 2, n].
+    const int step = std::max(n / 16, 1);
+    return std::min(n, static_cast<int>(std::ceil(wanted / step)) * step);
+}
+
+MatchedSize matched_map_size(float pixels, float use, int maps, int smallest, int largest, double dense, bool scaled,
+                             SizeSteps steps) {
     MatchedSize m;
     // Powers of two only: `largest` down to one (a cube's atlas bound, 4096 / 3, is 1365).
     int p = smallest;
@@ -189,9 +199,7 @@ MatchedSize matched_map_size(float pixels, float use, int maps, int smallest, in
     const double average = kTexelsPerPixel * std::sqrt(static_cast<double>(pixels) / static_cast<double>(use));
     const double wanted = std::max(average, dense);
     m.wanted = static_cast<int>(std::min(wanted, 1e9));
-    int n = smallest;
-    while (n < largest && n < wanted) n *= 2;
-    m.size = std::min(n, largest);
+    m.size = std::min(map_size_step(std::min(wanted, static_cast<double>(largest)), smallest, steps), largest);
     const char* bound = m.size == largest && wanted > largest ? ", the largest allowed" : m.size == smallest && wanted < smallest ? ", the smallest allowed" : "";
     std::snprintf(b, sizeof b,
                   "auto %d%s: the receivers in view cover %.0f pixels and %.1f%% of %s, part by part; %g texels a pixel want %.0f on "
@@ -201,6 +209,7 @@ MatchedSize matched_map_size(float pixels, float use, int maps, int smallest, in
                   static_cast<double>(kDenseTexelsPerPixel), 100.0 * kDenseShare, dense,
                   scaled ? " (the image counted as 512 pixels a side)" : "");
     m.why = b;
+    if (steps == SizeSteps::Eighths) m.why += "; rounded up by eighths of an octave";
     return m;
 }
 

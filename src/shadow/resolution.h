@@ -67,16 +67,26 @@ struct MatchedImage {
 MatchedImage matched_image(int width, int height);
 
 struct MatchedSize {
-    int size = 0;          // texels a side: a power of two in [smallest, largest]
+    int size = 0;          // texels a side in [smallest, largest]: a power of two, or a step of one (map_size_step)
     int wanted = 0;        // kTexelsPerPixel * sqrt(pixels / use) before rounding and the bounds (0: nothing in view)
     std::string why;       // one line for the plan: the pixels, the use, the size and what bounded it
 };
+
+// How a want is rounded up. Tiles of an atlas (a cube's faces, cascades) share a power of two.
+// One map alone may take any size (GLES 2.0 3.8.2 and WebGL 1 allow a texture that is not a power
+// of two, clamped and without mipmaps, as every map is), and rounding its want up to the next power
+// of two gave it up to twice the texels a side that the screen asks for, each of them drawn: so it
+// is rounded up to an eighth of the want's octave (576, 640, ... 1024; 1152, ... 2048), at most
+// 12.5 % more than the want and never more than the power of two would give.
+enum class SizeSteps { PowersOfTwo, Eighths };
+// The size a want of `wanted` texels a side is given, `smallest` at least (a power of two).
+int map_size_step(double wanted, int smallest, SizeSteps steps);
 
 // One map (or each of `maps` equal tiles: a cube's drawn faces) serving `pixels` of the image at
 // texel use `use` (0..1; for tiles, their summed uses), `largest` texels a side at most (the
 // context's and the memory cap's bound), `smallest` at least.
 // `dense`: receiver_demand's, the one wanted where it is more than the average's.
 MatchedSize matched_map_size(float pixels, float use, int maps, int smallest, int largest, double dense = 0.0,
-                             bool scaled = false);
+                             bool scaled = false, SizeSteps steps = SizeSteps::PowersOfTwo);
 
 }  // namespace penumbra::shadow

@@ -61,6 +61,34 @@ TEST(Resolution, TwoTexelsAPixelRoundedUpToAPowerOfTwoWithinTheBounds) {
     EXPECT_EQ(shadow::matched_map_size(512.0f * 512.0f, 6.0f * 0.25f, 6, 128, 1024).size, 1024);
 }
 
+TEST(Resolution, OneMapAloneStepsByAnEighthOfAnOctave) {
+    using shadow::SizeSteps;
+    // The want 1448 (half the map used at 512 x 512): 1536, not 2048.
+    shadow::MatchedSize m = shadow::matched_map_size(512.0f * 512.0f, 0.5f, 1, 128, 4096, 0.0, false, SizeSteps::Eighths);
+    EXPECT_EQ(m.wanted, 1448);
+    EXPECT_EQ(m.size, 1536);
+    EXPECT_EQ(m.why.rfind("auto 1536: ", 0), 0u) << m.why;
+    // The steps of each octave: sixteenths of its top, so at most 12.5 % over the want.
+    EXPECT_EQ(shadow::map_size_step(513, 128, SizeSteps::Eighths), 576);
+    EXPECT_EQ(shadow::map_size_step(576, 128, SizeSteps::Eighths), 576);
+    EXPECT_EQ(shadow::map_size_step(577, 128, SizeSteps::Eighths), 640);
+    EXPECT_EQ(shadow::map_size_step(657, 128, SizeSteps::Eighths), 704);
+    EXPECT_EQ(shadow::map_size_step(1024, 128, SizeSteps::Eighths), 1024);
+    EXPECT_EQ(shadow::map_size_step(1025, 128, SizeSteps::Eighths), 1152);
+    EXPECT_EQ(shadow::map_size_step(200, 128, SizeSteps::Eighths), 208);
+    for (int w = 129; w <= 4096; ++w) {
+        const int e = shadow::map_size_step(w, 128, SizeSteps::Eighths);
+        ASSERT_GE(e, w);
+        ASSERT_LE(e, 1.125 * w) << w;
+        ASSERT_LE(e, shadow::map_size_step(w, 128, SizeSteps::PowersOfTwo)) << w;
+    }
+    // At or under the smallest: the smallest, as with powers of two; the bounds hold.
+    EXPECT_EQ(shadow::map_size_step(90, 128, SizeSteps::Eighths), 128);
+    EXPECT_EQ(shadow::matched_map_size(4096.0f * 4096.0f, 1.0f, 1, 128, 2048, 0.0, false, SizeSteps::Eighths).size, 2048);
+    // The control: the same want as a power of two.
+    EXPECT_EQ(shadow::map_size_step(657, 128, SizeSteps::PowersOfTwo), 1024);
+}
+
 // A ground square [-1, 1]^2 (y up) and a map straight above it (orthographic, so a texel covers
 // the same ground everywhere).
 const scene::Bounds kGround = scene::Bounds::around({-1.0f, -0.01f, -1.0f}, {1.0f, 0.0f, 1.0f});
@@ -225,29 +253,30 @@ TEST(ResolutionPlan, AFrameWithTheSameInputsTakesThePreviousPlansMatch) {
 }
 
 TEST(ResolutionPlan, TheSizeGoesUpAtOnceAndDownOnlyOnceTheWantIsWellUnderTheSmallerSize) {
-    // The course at t = 0.6 wants about 712 texels at 512x512, in proportion to the image's side.
+    // The course at t = 0.6 wants about 712 texels at 512x512, in proportion to the image's side;
+    // one map's sizes step by an eighth of an octave: 1280, 1408, 1536 between 1024 and 2048.
     const render::FramePlan large = course_plan(1024, 1024, "auto");
-    ASSERT_EQ(map_width(large), 2048);
-    // A want just under 1024 after a frame of 2048: the size stays.
-    const render::FramePlan near = course_plan(719, 719, "auto", &large);
+    ASSERT_EQ(map_width(large), 1536);
+    // A want just under the step below (1408) after a frame of 1536: the size stays.
+    const render::FramePlan near = course_plan(960, 960, "auto", &large);
     const render::MapSizeReport* m = near.find<render::MapSizeReport>();
     ASSERT_NE(m, nullptr);
-    ASSERT_GT(m->wanted, 0.9 * 1024);
-    ASSERT_LE(m->wanted, 1024);
-    EXPECT_EQ(map_width(near), 2048) << m->why;
-    EXPECT_EQ(m->size, 2048);
-    EXPECT_EQ(m->why.rfind("auto 2048: ", 0), 0u) << m->why;
-    EXPECT_NE(m->why.find("kept at 2048 from the last frame: the want is within 10% under 1024"), std::string::npos) << m->why;
-    // The controls: with no frame before it the same want is 1024, and a want well under 1024
+    ASSERT_GT(m->wanted, 0.9 * 1408);
+    ASSERT_LE(m->wanted, 1408);
+    EXPECT_EQ(map_width(near), 1536) << m->why;
+    EXPECT_EQ(m->size, 1536);
+    EXPECT_EQ(m->why.rfind("auto 1536: ", 0), 0u) << m->why;
+    EXPECT_NE(m->why.find("kept at 1536 from the last frame: the want is within 10% under 1408"), std::string::npos) << m->why;
+    // The controls: with no frame before it the same want is 1408, and a want well under 1408
     // goes down.
-    EXPECT_EQ(map_width(course_plan(719, 719, "auto")), 1024);
-    const render::FramePlan far = course_plan(633, 633, "auto", &large);
-    ASSERT_LT(far.find<render::MapSizeReport>()->wanted, 0.9 * 1024);
-    EXPECT_EQ(map_width(far), 1024);
-    // Up at once: after a frame of 1024, a want just over it takes 2048.
-    const render::FramePlan up = course_plan(740, 740, "auto", &far);
-    ASSERT_GT(up.find<render::MapSizeReport>()->wanted, 1024);
-    EXPECT_EQ(map_width(up), 2048);
+    EXPECT_EQ(map_width(course_plan(960, 960, "auto")), 1408);
+    const render::FramePlan far = course_plan(880, 880, "auto", &large);
+    ASSERT_LT(far.find<render::MapSizeReport>()->wanted, 0.9 * 1408);
+    EXPECT_EQ(map_width(far), 1280);
+    // Up at once: after a frame of 1280, a want just over it takes the next step.
+    const render::FramePlan up = course_plan(930, 930, "auto", &far);
+    ASSERT_GT(up.find<render::MapSizeReport>()->wanted, 1280);
+    EXPECT_EQ(map_width(up), 1408);
 }
 
 TEST(ResolutionPlan, ACubesFacesAreMatchedToo) {

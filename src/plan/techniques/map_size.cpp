@@ -59,15 +59,17 @@ const MapSizeReport* same_inputs_before(const PlanContext& c, const std::string&
     return r && r->inputs == inputs ? r : nullptr;
 }
 
-// A want just under a power of two would flip the size back and forth as the light or the camera
-// moves (the course at 1280x720: 1032, then 1020 down to 928 and back to 1032 within 0.4 s), each
-// flip a texture made again and the shadow's edges jumping. So the size goes up as soon as the want
-// passes it, and down by one step only once the want is under kDownShare of the smaller size.
+// A want just under a step would flip the size back and forth as the light or the camera moves
+// (the course at 1280x720: 1032, then 1020 down to 928 and back to 1032 within 0.4 s), each flip a
+// texture made again and the shadow's edges jumping. So the size goes up as soon as the want passes
+// it, and down by one step only once the want is under kDownShare of the smaller size.
 constexpr double kDownShare = 0.9;
 
-void settle(const PlanContext& c, shadow::MatchedSize& m, int largest) {
+void settle(const PlanContext& c, shadow::MatchedSize& m, int largest, shadow::SizeSteps steps) {
     const MapSizeReport* r = c.previous ? c.previous->find<MapSizeReport>() : nullptr;
-    if (!r || r->size != 2 * m.size || r->size > largest || m.wanted < kDownShare * m.size) return;
+    if (!r || r->size > largest || r->size != shadow::map_size_step(m.size + 1, 1, steps) ||
+        m.wanted < kDownShare * m.size)
+        return;
     const std::string was = "auto " + std::to_string(m.size);
     if (m.why.rfind(was, 0) == 0) m.why.replace(0, was.size(), "auto " + std::to_string(r->size));
     m.why += "; kept at " + std::to_string(r->size) + " from the last frame: the want is within " +
@@ -106,7 +108,7 @@ int most_asking(PlanContext& c, const ShadowBounds& b, int largest, const std::v
     }
     if (!windows.empty())
         best.why += " (" + windows[most].name + ", the most of the " + std::to_string(windows.size()) + kind + ")";
-    settle(c, best, largest);
+    settle(c, best, largest, shadow::SizeSteps::PowersOfTwo);
     c.plan.put(MapSizeReport{best.size, best.wanted, best.why, inputs});
     return best.size;
 }
@@ -123,9 +125,10 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrus
     if (const MapSizeReport* same = same_inputs_before(c, inputs)) return c.plan.put(*same).size;
     const shadow::Demand d =
         shadow::receiver_demand(c.light, b.receivers, c.plan.camera.view_proj, image.width, image.height, f.view_proj());
+    // One map alone, not a tile of an atlas: its size need not be a power of two.
     shadow::MatchedSize m = shadow::matched_map_size(static_cast<float>(d.pixels), static_cast<float>(d.share), 1,
-                                                     kAutoSmallest, largest, d.dense, image.scaled);
-    settle(c, m, largest);
+                                                     kAutoSmallest, largest, d.dense, image.scaled, shadow::SizeSteps::Eighths);
+    settle(c, m, largest, shadow::SizeSteps::Eighths);
     c.plan.put(MapSizeReport{m.size, m.wanted, m.why, inputs});
     return m.size;
 }
