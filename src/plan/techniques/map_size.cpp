@@ -52,34 +52,38 @@ ContentKey match_inputs(const PlanContext& c, const ShadowBounds& b, const shado
     return key;
 }
 
+// The previous plan's match of this context's map: the portal's scene (a prefix of its own) has a
+// map of its own, and the plan keeps only the outer scene's match.
+const MapSizeReport* previous_match(const PlanContext& c) {
+    const MapSizeReport* r = c.previous ? c.previous->find<MapSizeReport>() : nullptr;
+    return r && r->scope == c.prefix ? r : nullptr;
+}
+
 // The previous plan's match where its inputs were these (a still frame): the same function of the
 // same inputs, so the same size and reasons, without the clipping.
 const MapSizeReport* same_inputs_before(const PlanContext& c, const std::string& inputs) {
-    const MapSizeReport* r = c.previous ? c.previous->find<MapSizeReport>() : nullptr;
+    const MapSizeReport* r = previous_match(c);
     return r && r->inputs == inputs ? r : nullptr;
 }
 
 // A want just under a step would flip the size back and forth as the light or the camera moves
 // (the course at 1280x720: 1032, then 1020 down to 928 and back to 1032 within 0.4 s), each flip a
 // texture made again and the shadow's edges jumping. So the size goes up as soon as the want passes
-// it, and down only as far as a size kDownShare of which is still over the want: the want must then
-// rise by more than a tenth before the size goes up again. (Going down to the want's own step left
-// no such margin: with eighths of an octave the course at 512x512 went 896, 768, 832 within 30 ms.)
+// it, and down by one step only once the want is under kDownShare of the smaller size. A margin
+// reaching further back (down only to a size a tenth over the want) would make a frame's size depend
+// on frames long past, so that the same frame drawn again on a restored context differs.
 constexpr double kDownShare = 0.9;
 
 void settle(const PlanContext& c, shadow::MatchedSize& m, int largest, shadow::SizeSteps steps) {
-    const MapSizeReport* r = c.previous ? c.previous->find<MapSizeReport>() : nullptr;
-    if (!r || r->size > largest || r->size <= m.size) return;
-    const int roomy = std::min(r->size, shadow::map_size_step(m.wanted / kDownShare, 1, steps));
-    if (roomy <= m.size) return;
+    const MapSizeReport* r = previous_match(c);
+    if (!r || r->size > largest || r->size != shadow::map_size_step(m.size + 1, 1, steps) ||
+        m.wanted < kDownShare * m.size)
+        return;
     const std::string was = "auto " + std::to_string(m.size);
-    if (m.why.rfind(was, 0) == 0) m.why.replace(0, was.size(), "auto " + std::to_string(roomy));
-    const std::string tenth = std::to_string(static_cast<int>(std::lround(100.0 * (1.0 - kDownShare)))) + "%";
-    m.why += roomy == r->size ? "; kept at " + std::to_string(roomy) + " from the last frame: the want is within " + tenth +
-                                    " under " + std::to_string(m.size)
-                              : "; " + std::to_string(roomy) + ", down from the last frame's " + std::to_string(r->size) +
-                                    " to a size " + tenth + " over the want";
-    m.size = roomy;
+    if (m.why.rfind(was, 0) == 0) m.why.replace(0, was.size(), "auto " + std::to_string(r->size));
+    m.why += "; kept at " + std::to_string(r->size) + " from the last frame: the want is within " +
+             std::to_string(static_cast<int>(std::lround(100.0 * (1.0 - kDownShare)))) + "% under " + std::to_string(m.size);
+    m.size = r->size;
 }
 
 // One of the maps that share a size (a cube's drawn face, a cascade): the camera as it sees
@@ -114,7 +118,7 @@ int most_asking(PlanContext& c, const ShadowBounds& b, int largest, const std::v
     if (!windows.empty())
         best.why += " (" + windows[most].name + ", the most of the " + std::to_string(windows.size()) + kind + ")";
     settle(c, best, largest, shadow::SizeSteps::PowersOfTwo);
-    c.plan.put(MapSizeReport{best.size, best.wanted, best.why, inputs});
+    c.plan.put(MapSizeReport{best.size, best.wanted, best.why, inputs, c.prefix});
     return best.size;
 }
 
@@ -134,7 +138,7 @@ int auto_map_size(PlanContext& c, const ShadowBounds& b, const shadow::LightFrus
     shadow::MatchedSize m = shadow::matched_map_size(static_cast<float>(d.pixels), static_cast<float>(d.share), 1,
                                                      kAutoSmallest, largest, d.dense, image.scaled, shadow::SizeSteps::Eighths);
     settle(c, m, largest, shadow::SizeSteps::Eighths);
-    c.plan.put(MapSizeReport{m.size, m.wanted, m.why, inputs});
+    c.plan.put(MapSizeReport{m.size, m.wanted, m.why, inputs, c.prefix});
     return m.size;
 }
 

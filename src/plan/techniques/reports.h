@@ -45,6 +45,7 @@ struct MapSizeReport {
     std::string why;
     // The match's inputs (map_size.cpp): a later plan with the same key takes this match.
     std::string inputs;
+    std::string scope;  // the context's prefix (PlanContext::prefix): whose map it is
     static std::string text(const MapSizeReport& r);
     static std::string json(const MapSizeReport& r);
 };
