@@ -3,8 +3,8 @@
 
 usage: embed_shaders.py SHADER_DIR OUT.cpp
 Includes are looked up in SHADER_DIR/include. The output is rewritten only when it changes.
-The embedded text has no comments and no indentation (half of the sources' bytes, 20 KB of each
-browser page's gzipped download): every line stays where it was, so a compiler's line numbers
+The embedded text has no comments, no indentation and no blank that separates no tokens (half of
+the sources' bytes, 20 KB of each browser page's gzipped download): every line stays where it was, so a compiler's line numbers
 still name the file's lines, and the `// @snippets` marker (the shader lab's) is kept.
 """
 import pathlib
@@ -55,6 +55,31 @@ def strip(text: str) -> str:
     return "\n".join(line.strip() for line in "".join(out).split("\n"))
 
 
+# Characters of an identifier or a number, and of an operator: a blank between two of the first
+# (float x, 1.0 e) or two of the second (a - -b, x = +1.0) separates tokens; any other blank does not.
+WORD = re.compile(r"[A-Za-z0-9_.]")
+OPERATOR = set("+-*/<>=!&|^%")
+
+
+def squeeze(text: str) -> str:
+    """The blanks inside each line that separate no tokens dropped (8 % of the text, 400 B gzipped
+    over all shaders); preprocessor lines and the snippets marker's line are kept as written."""
+    out = []
+    for line in text.split("\n"):
+        if line.startswith("#") or MARKER in line:
+            out.append(line)
+            continue
+        parts = re.split(r" +", line)
+        kept = parts[0]
+        for part in parts[1:]:
+            a, b = kept[-1:], part[:1]
+            if a and b and (WORD.match(a) and WORD.match(b) or a in OPERATOR and b in OPERATOR):
+                kept += " "
+            kept += part
+        out.append(kept)
+    return "\n".join(out)
+
+
 def main() -> None:
     shader_dir, out = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
     sources = sorted(list(shader_dir.glob("*.vert")) + list(shader_dir.glob("*.frag")))
@@ -67,7 +92,7 @@ def main() -> None:
         stripped = strip(text)
         if stripped.count("\n") != text.count("\n") or stripped.count(MARKER) != text.count(MARKER):
             sys.exit(f"{src}: stripping its comments moved a line or lost the snippets marker")
-        text = stripped
+        text = squeeze(stripped)
         if ')glsl"' in text:
             sys.exit(f"{src}: contains the raw-string delimiter")
         body.append(f'        {{"{src.name}", R"glsl({text})glsl"}},')
