@@ -146,6 +146,29 @@ uniform vec4 u_clip_plane;  // world (n, d): kept where n.p + d >= 0 (the mirror
 uniform float u_reflectivity;
 #endif
 
+#ifdef PCSS_QUAD
+// PCSS's filter over pixels as well as taps: a pixel's visibility averaged with its neighbours'
+// across the 2x2 quad, read through dFdx and dFdy (OES_standard_derivatives), so three pixels'
+// interleaved taps (shadow.glsl) count at the cost of one's. Called where control flow is uniform
+// (GLSL ES 1.00 8.8: derivatives are undefined elsewhere). A neighbour's value is v + dFdx(v) from
+// the quad's left column, v - dFdx(v) from its right, but only where dFdx was taken in this pixel's
+// own row of a quad aligned to even coordinates: the spec lets a context approximate (coarse
+// derivatives take one row for the whole quad, as softpipe does), so the probe p.x (1 + p.y), whose
+// difference across the pair is 1 + p.y exactly there, tells; elsewhere that neighbour is left
+// out. The same for dFdy. Averaging moves a pixel's filter a third of a pixel towards its
+// neighbours, which costs more than the noise it removes where the penumbra is narrow on screen,
+// so the share fades in as the filter's radius grows from 2 to 10 pixels (docs/soft.md).
+float pcssQuadShare(float v) {
+    vec2 p = mod(floor(gl_FragCoord.xy), 2.0);
+    vec4 dx = dFdx(vec4(v, p.x + p.x * p.y, g_pcss_c));
+    vec4 dy = dFdy(vec4(v, p.y + p.x * p.y, g_pcss_c));
+    float share = clamp((g_pcss_r / max(max(length(dx.zw), length(dy.zw)), 1e-6) - 2.0) / 8.0, 0.0, 1.0);
+    float wx = abs(dx.y - 1.0 - p.y) < 0.5 ? share : 0.0;
+    float wy = abs(dy.y - 1.0 - p.x) < 0.5 ? share : 0.0;
+    return (v + wx * (v + (1.0 - 2.0 * p.x) * dx.x) + wy * (v + (1.0 - 2.0 * p.y) * dy.x)) / (1.0 + wx + wy);
+}
+#endif
+
 void main() {
 #ifdef GBUFFER_READ
     vec2 gUv = (gl_FragCoord.xy - u_screen.xy) * u_screen.zw;
@@ -239,6 +262,9 @@ void main() {
             visibility = GOOCH_SUM(goochTap) / float(GOOCH_TAPS);
         }
     }
+#endif
+#ifdef PCSS_QUAD
+    visibility = pcssQuadShare(visibility);
 #endif
 
 #ifdef LIGHT_HORIZON

@@ -287,12 +287,34 @@ vec2 receiverSlope(vec3 normal, vec3 c) {
 const vec2 kGolden = vec2(-0.7373688, 0.6754903);
 vec2 turnGolden(vec2 d) { return vec2(d.x * kGolden.x - d.y * kGolden.y, d.x * kGolden.y + d.y * kGolden.x); }
 
+#ifdef PCSS_QUAD
+// What lit.frag's pcssQuadShare needs from the lookup: the shadow coordinate in texels and the
+// filter's radius in texels (0 where no filter ran: outside the map, no blocker, lit).
+vec2 g_pcss_c = vec2(0.0);
+float g_pcss_r = 0.0;
+#endif
 float shadowVisibility(vec4 shadowCoord, vec3 normal) {
     if (shadowCoord.w <= 0.0) return 1.0;
     vec3 c = MP(shadowCoord.xyz / shadowCoord.w);
+#ifdef PCSS_QUAD
+    g_pcss_c = c.xy / u_texmapscale;
+#endif
     if (c.x < 0.0 || c.x > 1.0 || c.y < 0.0 || c.y > 1.0 || c.z < 0.0 || c.z > 1.0) return 1.0;
     float zr = lightEyeDepth(c.z);
-    float angle = 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+#ifdef PCSS_QUAD
+    // The four pixels of a 2x2 quad (lit.frag's pcssQuadShare) take one angle, turned a quarter
+    // turn each, and a quarter of the radial step apart: the filter taps of the three a pixel
+    // averages interleave into one disc of 48 rather than three overlapping discs of 16.
+    vec2 parity = mod(floor(gl_FragCoord.xy), 2.0);
+    float quadClass = parity.x + 2.0 * parity.y;
+    vec2 cell = floor(gl_FragCoord.xy * 0.5);
+    float radial = (quadClass + 0.5) * 0.25;
+#else
+    float quadClass = 0.0;
+    vec2 cell = gl_FragCoord.xy;
+    float radial = 0.5;
+#endif
+    float angle = 6.2831853 * fract(52.9829189 * fract(dot(cell, vec2(0.06711056, 0.00583715)))) + 1.5707963 * quadClass;
     vec2 start = vec2(cos(angle), sin(angle));
 
     // (1) Blockers: taps nearer the light than the receiver (by the bias of a small kernel).
@@ -369,11 +391,14 @@ float shadowVisibility(vec4 shadowCoord, vec3 normal) {
 
     // (2) The penumbra's half-width from the blockers' mean depth; (3) the filter over it.
     vec2 width = coneTexels(zr, lightEyeDepth(sum / blockers));
+#ifdef PCSS_QUAD
+    g_pcss_r = max(width.x, width.y);
+#endif
     float filterBias = shadowBiasReach(normal, c, max(width.x, width.y) + 1.0);
     float lit = 0.0;
     dir = start;
     for (int i = 0; i < PCSS_FILTER_TAPS; ++i) {
-        vec2 o = sqrt((float(i) + 0.5) / float(PCSS_FILTER_TAPS)) * dir;
+        vec2 o = sqrt((float(i) + radial) / float(PCSS_FILTER_TAPS)) * dir;
         lit += litAt(c.xy + o * width * u_texmapscale, c.z, filterBias);
         dir = turnGolden(dir);
     }

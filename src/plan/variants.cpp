@@ -89,6 +89,8 @@ Variant lit_variant(const LitFeatures& f) {
             v.defines.push_back("PCSS_SEARCH_TAPS " + std::to_string(f.pcss_search));
             v.defines.push_back("PCSS_FILTER_TAPS " + std::to_string(f.pcss_taps));
             if (f.pcss_layered) v.defines.emplace_back("PCSS_LAYERED");
+            // A light with a size (a filter to share) and dFdx/dFdy to share it through.
+            if (f.horizon && f.derivatives) v.defines.emplace_back("PCSS_QUAD");
         }
         if (f.bias_auto) v.defines.emplace_back("BIAS_AUTO");
         // The slope term per vertex (lit.vert), exact where it is constant over each triangle: a

@@ -62,7 +62,8 @@ struct LitFeatures {
     // The context has dFdx/dFdy (Caps::standard_derivatives): the horizon is then the triangle's
     // own plane, as the area-light truth takes it, rather than the interpolated normal's, which
     // leans past it on a smooth mesh's terminator (GEOMETRIC_HORIZON; not where the surface is
-    // read back from the G-buffer, whose 2x2 quads can straddle two triangles).
+    // read back from the G-buffer, whose 2x2 quads can straddle two triangles). With PCSS, the
+    // filtered visibility is averaged over the pixel quad too (PCSS_QUAD, shadow.glsl).
     bool derivatives = false;
     // Gooch: which terms the pass writes (planes: the ground ambient-only first, then the direct
     // light scaled by u_light_weight added once per plane that lights it) and, with gooch_taps > 0,

@@ -34,10 +34,12 @@ std::string variant_source(const std::string& file, const std::vector<std::strin
         for (const auto& d : defines) lines += "#define " + d + (d.find(' ') == std::string::npos ? " 1\n" : "\n");
         // gl_FragData[i > 0] needs the extension, declared before anything else but #version.
         // dFdx and dFdy likewise (OES_standard_derivatives; core in GLSL ES 3.00, not in 1.00).
+        bool derivatives = false;
         for (const auto& d : defines) {
             if (d == "GBUFFER_MRT") lines = "#extension GL_EXT_draw_buffers : require\n" + lines;
-            if (d == "GEOMETRIC_HORIZON") lines = "#extension GL_OES_standard_derivatives : require\n" + lines;
+            derivatives = derivatives || d == "GEOMETRIC_HORIZON" || d == "PCSS_QUAD";
         }
+        if (derivatives) lines = "#extension GL_OES_standard_derivatives : require\n" + lines;
         text.insert(version.size(), lines);
         const bool lab = std::find(defines.begin(), defines.end(), "LAB") != defines.end();
         const std::string marker = "// @snippets\n";

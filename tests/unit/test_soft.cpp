@@ -289,8 +289,14 @@ TEST(LightHorizon, FromTheTrianglesOwnNormalWhereTheContextHasDerivatives) {
         EXPECT_EQ(count(without, "LIGHT_HORIZON"), count(with, "LIGHT_HORIZON")) << args;
         EXPECT_EQ(count(without, "GEOMETRIC_HORIZON"), 0) << args;
     }
+    // PCSS shares its filtered visibility over the pixel quad through the same derivatives; a
+    // Heckbert-Herf sample has no filter to share.
+    EXPECT_EQ(count(lit_defines("filter", "pcss", true), "PCSS_QUAD"), count(lit_defines("filter", "pcss", true), "LIGHT_HORIZON"));
+    EXPECT_EQ(count(lit_defines("filter", "pcss", false), "PCSS_QUAD"), 0);
+    EXPECT_EQ(count(lit_defines("area-samples", "4", true), "PCSS_QUAD"), 0);
     // No horizon (a point light): nothing asks for derivatives.
     EXPECT_EQ(count(lit_defines("filter", "pcss", true, "0"), "GEOMETRIC_HORIZON"), 0);
+    EXPECT_EQ(count(lit_defines("filter", "pcss", true, "0"), "PCSS_QUAD"), 0);
     // The lighting pass of deferred shading reads the surface back: its quads may straddle two
     // triangles, so it keeps the interpolated normal.
     render::LitFeatures f;

@@ -450,7 +450,8 @@ public:
         if (pcss)
             kernel = " (" + std::to_string(s.pcss_search) + " search + " + std::to_string(s.pcss_taps) + " filter taps, " +
                      (s.pcss_layered ? "layered" : "mean") + " blockers, light radius " +
-                     number(static_cast<double>(c.light.radius)) + ")";
+                     number(static_cast<double>(c.light.radius)) +
+                     (horizon && c.caps.standard_derivatives ? ", shared over the pixel quad" : "") + ")";
         if (cube)
             cam.detail += std::string(", a cube") + (cube->cube_map ? " map" : "") + " of " +
                           std::to_string(cube->drawn()) + " face(s) drawn of 6";
